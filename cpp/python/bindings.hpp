@@ -1,0 +1,11 @@
+#pragma once
+/// \file bindings.hpp
+/// One binding file per C++ area; each fills one submodule of kresling._core.
+
+#include <pybind11/pybind11.h>
+
+namespace kresling::python {
+
+void bind_geometry(pybind11::module_& m);
+
+}  // namespace kresling::python

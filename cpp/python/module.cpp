@@ -1,0 +1,10 @@
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "kresling's C++ core (geometry, bar-and-hinge solver, kinematics). "
+            "Use the Python API in the kresling package; this module is internal.";
+  auto geometry = m.def_submodule("geometry", "Generalized Kresling cell geometry");
+  kresling::python::bind_geometry(geometry);
+}
