@@ -1,0 +1,26 @@
+"""kresling: stiffness-switching generalized Kresling origami, from crease pattern to manipulator.
+
+The package reproduces, as software, the thesis *Bistable generalized Kresling origami as a
+stiffness-switching joint for a tendon-driven soft manipulator*. Data flows one way::
+
+    geometry -> model -> elements -> assembly -> solvers -> analyses
+
+with kinematics, experimental fits and fabrication beside that line. Units are mm, N and
+rad throughout unless a name says otherwise (bending stiffness is reported in N*m/rad).
+
+Examples
+--------
+>>> import kresling
+>>> d = kresling.Design(n=10, lam=0.9, Lc=15.0, R=30.0)
+>>> round(d.Le, 10)
+55.8194667799
+"""
+
+import logging
+
+from kresling.geometry import Design, design_quantities
+
+__version__ = "0.1.0"
+__all__ = ["Design", "design_quantities", "__version__"]
+
+logging.getLogger(__name__).addHandler(logging.NullHandler())
