@@ -1,0 +1,50 @@
+"""Output helpers shared by the subcommands: JSON that never contains NaN, and aligned
+text tables."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+
+
+def _plain(value):
+    if isinstance(value, dict):
+        return {str(k): _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return _plain(value.tolist())
+    if isinstance(value, (np.bool_, bool)):
+        return bool(value)
+    if isinstance(value, np.integer):
+        return int(value)
+    if isinstance(value, (np.floating, float)):
+        value = float(value)
+        if not math.isfinite(value):
+            # JSON has no NaN; a non-finite number here is a bug upstream, so say so.
+            raise ValueError(f"non-finite number {value} cannot be written as JSON")
+        return value
+    return value
+
+
+def print_json(obj) -> None:
+    """Print ``obj`` as one JSON object (numpy scalars and arrays converted)."""
+    print(json.dumps(_plain(obj), indent=2, allow_nan=False))
+
+
+def print_table(rows, headers) -> None:
+    """Print ``rows`` (sequences of cells) under ``headers``, columns aligned."""
+    cells = [[_format(c) for c in row] for row in rows]
+    widths = [max(len(h), *(len(r[i]) for r in cells)) for i, h in enumerate(headers)]
+    print("  ".join(h.ljust(w) for h, w in zip(headers, widths)).rstrip())
+    print("  ".join("-" * w for w in widths))
+    for row in cells:
+        print("  ".join(c.ljust(w) for c, w in zip(row, widths)).rstrip())
+
+
+def _format(cell) -> str:
+    if isinstance(cell, (float, np.floating)):
+        return f"{float(cell):.10g}"
+    return str(cell)
