@@ -1,0 +1,36 @@
+#pragma once
+/// \file bar.hpp
+/// Bar element kernels: pure functions of the two end positions.
+///
+///     x1 o-----------o x2        rest length L, area A, law S(E)
+///
+/// Vectors of 6 are ordered (x1, x2). The strain is Green-Lagrange,
+/// E = (|x2 - x1|^2 - L^2) / (2 L^2), so dE/dx is linear in x and d2E/dx2 is constant.
+
+#include "kresling/core/types.hpp"
+#include "kresling/elements/bar_laws.hpp"
+
+namespace kresling::elements {
+
+/// Green-Lagrange strain of the bar.
+double bar_strain(const Vector3& x1, const Vector3& x2, double rest_length);
+
+/// dE/dx, ordered (x1, x2).
+Vector6 bar_strain_gradient(const Vector3& x1, const Vector3& x2, double rest_length);
+
+/// d2E/dx2 = [[I, -I], [-I, I]] / L^2 (independent of the positions).
+Matrix6 bar_strain_hessian(double rest_length);
+
+/// Energy, internal force and tangent stiffness of one bar.
+struct BarResponse {
+  double strain = 0.0;  ///< E
+  double energy = 0.0;  ///< A L W(E)
+  Vector6 force;        ///< A L S dE/dx
+  Matrix6 stiffness;    ///< A L (dS/dE dE/dx dE/dx^T + S d2E/dx2)
+};
+
+/// Evaluate a bar. `with_stiffness = false` skips the 6 x 6 tangent (left unset).
+BarResponse bar_response(const Vector3& x1, const Vector3& x2, double area, double rest_length,
+                         const BarLaw& law, bool with_stiffness = true);
+
+}  // namespace kresling::elements

@@ -1,0 +1,24 @@
+#include "kresling/elements/hinge.hpp"
+
+#include "kresling/elements/dihedral.hpp"
+
+namespace kresling::elements {
+
+HingeResponse hinge_response(const Vector3& a, const Vector3& b, const Vector3& c,
+                             const Vector3& d, double kp, double rest_angle, double length,
+                             const SpringLaw& law, bool with_stiffness) {
+  const DihedralDerivatives theta = dihedral_angle_derivatives(a, b, c, d, with_stiffness);
+  const SpringResponse s = law.evaluate(theta.angle, rest_angle, kp);
+  HingeResponse r;
+  r.angle = theta.angle;
+  r.moment = length * s.moment;
+  r.energy = length * s.energy;
+  r.force = r.moment * theta.gradient;
+  if (with_stiffness) {
+    r.stiffness.noalias() = (length * s.stiffness) * (theta.gradient * theta.gradient.transpose());
+    r.stiffness.noalias() += r.moment * theta.hessian;
+  }
+  return r;
+}
+
+}  // namespace kresling::elements

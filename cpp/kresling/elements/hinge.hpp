@@ -1,0 +1,26 @@
+#pragma once
+/// \file hinge.hpp
+/// Rotational-spring hinge element: a spring law acting on the dihedral angle of four nodes
+/// (see dihedral.hpp for the node order a, b (axis), c, d (wings)).
+
+#include "kresling/core/types.hpp"
+#include "kresling/elements/spring_laws.hpp"
+
+namespace kresling::elements {
+
+/// Energy, internal force and tangent stiffness of one hinge.
+struct HingeResponse {
+  double angle = 0.0;   ///< dihedral angle theta in [0, 2 pi)
+  double moment = 0.0;  ///< L0 M(theta)
+  double energy = 0.0;  ///< L0 E(theta)
+  Vector12 force;       ///< L0 M dtheta/dx
+  Matrix12 stiffness;   ///< L0 (k g g^T + M d2theta/dx2)
+};
+
+/// Evaluate a hinge of length L0 with stiffness kp per unit length and rest angle theta0.
+/// `with_stiffness = false` skips the 12 x 12 tangent (left unset).
+HingeResponse hinge_response(const Vector3& a, const Vector3& b, const Vector3& c,
+                             const Vector3& d, double kp, double rest_angle, double length,
+                             const SpringLaw& law, bool with_stiffness = true);
+
+}  // namespace kresling::elements

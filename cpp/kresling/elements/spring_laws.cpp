@@ -1,0 +1,57 @@
+#include "kresling/elements/spring_laws.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kresling::elements {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+SpringResponse linear_spring(double theta, double theta0, double kp) {
+  const double d = theta - theta0;
+  return {kp * d, kp, 0.5 * kp * d * d};
+}
+
+SpringResponse enhanced_linear_spring(double theta, double theta0, double kp, double theta1,
+                                      double theta2) {
+  if (theta >= theta1 && theta <= theta2) return linear_spring(theta, theta0, kp);
+  // Beyond a limit t: M = kp (t - theta0) + kp tan(q x) / q with q = p/2, x = theta - t;
+  // energy = the linear energy at t + kp (t - theta0) x - kp ln(cos(q x)) / q^2.
+  const bool below = theta < theta1;
+  const double t = below ? theta1 : theta2;
+  const double q = 0.5 * (below ? kPi / theta1 : kPi / (2.0 * kPi - theta2));
+  const double x = theta - t;
+  const double c = std::cos(q * x);
+  SpringResponse r;
+  r.moment = kp * (t - theta0) + kp * std::tan(q * x) / q;
+  r.stiffness = kp / (c * c);
+  r.energy = 0.5 * kp * (t - theta0) * (t - theta0) + kp * (t - theta0) * x -
+             kp * std::log(c) / (q * q);
+  return r;
+}
+
+SpringResponse super_linear_bend_spring(double theta, double theta0, double kp) {
+  const double d = theta - theta0;
+  const double a = std::abs(d);
+  SpringResponse r;
+  r.moment = (d < 0 ? -1.0 : 1.0) * kp * std::pow(a, 4.0 / 3.0);
+  r.stiffness = std::max(4.0 / 3.0 * kp * std::cbrt(a), 1e-3 * kp);
+  r.energy = 3.0 / 7.0 * kp * std::pow(a, 7.0 / 3.0);
+  return r;
+}
+
+SpringResponse SpringLaw::evaluate(double theta, double theta0, double kp) const {
+  switch (kind) {
+    case SpringLawKind::Linear:
+      return linear_spring(theta, theta0, kp);
+    case SpringLawKind::SuperLinearBend:
+      return super_linear_bend_spring(theta, theta0, kp);
+    case SpringLawKind::EnhancedLinear:
+    default:
+      return enhanced_linear_spring(theta, theta0, kp, theta1, theta2);
+  }
+}
+
+}  // namespace kresling::elements

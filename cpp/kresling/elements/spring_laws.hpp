@@ -1,0 +1,46 @@
+#pragma once
+/// \file spring_laws.hpp
+/// Rotational spring laws of hinges, per unit hinge length: the moment M(theta), its
+/// derivative k = dM/dtheta and the stored energy, for stiffness kp [moment/rad per length]
+/// and rest angle theta0. A hinge of length L0 multiplies all three by L0.
+
+namespace kresling::elements {
+
+/// Value of a spring law at one angle (per unit hinge length).
+struct SpringResponse {
+  double moment = 0.0;     ///< M
+  double stiffness = 0.0;  ///< dM/dtheta (see SuperLinearBend for its one exception)
+  double energy = 0.0;     ///< integral of M from theta0
+};
+
+enum class SpringLawKind : int {
+  Linear = 0,          ///< M = kp (theta - theta0)
+  EnhancedLinear = 1,  ///< linear between two limits, stiffening like tan() beyond them
+  SuperLinearBend = 2, ///< M = kp sign(d) |d|^(4/3), d = theta - theta0 (panel bending)
+};
+
+/// A spring law with its parameters; limits in radians (EnhancedLinear only).
+struct SpringLaw {
+  SpringLawKind kind = SpringLawKind::EnhancedLinear;
+  double theta1 = 0.0;  ///< lower limit of the linear range, 0 < theta1 < theta0
+  double theta2 = 0.0;  ///< upper limit of the linear range, theta0 < theta2 < 2 pi
+
+  SpringResponse evaluate(double theta, double theta0, double kp) const;
+};
+
+/// Linear law.
+SpringResponse linear_spring(double theta, double theta0, double kp);
+
+/// MERLIN2's "enhanced linear" law: linear for theta1 <= theta <= theta2; below theta1,
+/// M = kp (theta1 - theta0) + kp tan(p/2 (theta - theta1)) / (p/2) with p = pi / theta1, so
+/// the moment grows without bound as the hinge closes flat (theta -> 0); above theta2 the
+/// mirror image with p = pi / (2 pi - theta2). M and dM/dtheta are continuous at the limits.
+SpringResponse enhanced_linear_spring(double theta, double theta0, double kp, double theta1,
+                                      double theta2);
+
+/// MERLIN2's "super-linear" bending law, M = kp sign(d) |d|^(4/3), energy 3/7 kp |d|^(7/3).
+/// Its reported stiffness is max(4/3 kp |d|^(1/3), 1e-3 kp): floored so that the tangent of
+/// an unbent panel is not singular (it is not the exact derivative for |d| < ~5e-11).
+SpringResponse super_linear_bend_spring(double theta, double theta0, double kp);
+
+}  // namespace kresling::elements
