@@ -7,5 +7,8 @@
 namespace kresling::python {
 
 void bind_geometry(pybind11::module_& m);
+void bind_elements(pybind11::module_& m);
+void bind_model(pybind11::module_& m);
+void bind_solvers(pybind11::module_& m);
 
 }  // namespace kresling::python

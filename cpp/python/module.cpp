@@ -7,4 +7,10 @@ PYBIND11_MODULE(_core, m) {
             "Use the Python API in the kresling package; this module is internal.";
   auto geometry = m.def_submodule("geometry", "Generalized Kresling cell geometry");
   kresling::python::bind_geometry(geometry);
+  auto elements = m.def_submodule("elements", "Element kernels: bars, dihedral angles, springs");
+  kresling::python::bind_elements(elements);
+  auto model = m.def_submodule("model", "Bar-and-hinge models and the panel topology");
+  kresling::python::bind_model(model);
+  auto solvers = m.def_submodule("solvers", "Assembly and nonlinear solvers");
+  kresling::python::bind_solvers(solvers);
 }

@@ -1,5 +1,6 @@
 #include "kresling/elements/dihedral.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Geometry>
@@ -10,17 +11,25 @@ namespace {
 
 constexpr double kTwoPi = 6.28318530717958647692;
 
-double signed_angle(const Vector3& m, const Vector3& n, const Vector3& e) {
-  // (m x n) is parallel to e with sign(n . r_ac): atan2 gives the signed angle in (-pi, pi].
-  const double theta = std::atan2(m.cross(n).dot(e.normalized()), m.dot(n));
-  return theta < 0.0 ? theta + kTwoPi : theta;
+// MODEL.md's (MERLIN2's) formula, kept exactly so that forces match the reference runs
+// to rounding: theta = sgn acos(m.n / |m||n|), sgn = sign(n . r_ac), taken as +1 when
+// |n . r_ac| <= 1e-8, then mapped to [0, 2 pi). (m x n is parallel to the axis with the
+// same sign as n . r_ac.) Near 0 and pi the arccosine is ill-conditioned: the angle carries
+// an absolute rounding error up to ~1e-8 rad there; atan2 would be exact, but would differ
+// from MERLIN2's internal forces by that much at nearly flat hinges (the polygon spokes).
+double merlin_angle(const Vector3& m, const Vector3& n, const Vector3& r_ac) {
+  const double cosine = std::clamp(m.dot(n) / (m.norm() * n.norm()), -1.0, 1.0);
+  const double theta = std::acos(cosine);
+  const double side = n.dot(r_ac);
+  return (side < -1e-8) ? kTwoPi - theta : theta;
 }
 
 }  // namespace
 
 double dihedral_angle(const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d) {
   const Vector3 e = b - a;
-  return signed_angle((c - a).cross(e), e.cross(b - d), e);
+  const Vector3 r_ac = c - a;
+  return merlin_angle(r_ac.cross(e), e.cross(b - d), r_ac);
 }
 
 Vector12 dihedral_angle_gradient(const Vector3& a, const Vector3& b, const Vector3& c,
@@ -46,7 +55,7 @@ DihedralDerivatives dihedral_angle_derivatives(const Vector3& a, const Vector3& 
   const double L = std::sqrt(L2);
   const double m2 = m.squaredNorm();
   const double n2 = n.squaredNorm();
-  out.angle = signed_angle(m, n, e);
+  out.angle = merlin_angle(m, n, r_ac);
 
   // Wing derivatives: each wing moves the angle along its triangle's normal, inversely
   // to its distance from the axis (|m| / L); the axis nodes take the rest so that the

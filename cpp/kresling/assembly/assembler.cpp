@@ -1,0 +1,181 @@
+#include "kresling/assembly/assembler.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "kresling/elements/bar.hpp"
+#include "kresling/elements/dihedral.hpp"
+#include "kresling/elements/hinge.hpp"
+
+namespace kresling::assembly {
+
+namespace {
+
+// The 3 k DOFs of an element's nodes, in element order.
+template <std::size_t N>
+std::array<Index, 3 * N> element_dofs(const std::array<Index, N>& nodes) {
+  std::array<Index, 3 * N> dofs{};
+  for (std::size_t i = 0; i < N; ++i) {
+    for (int k = 0; k < 3; ++k) dofs[3 * i + k] = 3 * nodes[i] + k;
+  }
+  return dofs;
+}
+
+int find_slot(const SparseMatrix& m, Index row, Index col) {
+  const int* begin = m.innerIndexPtr() + m.outerIndexPtr()[col];
+  const int* end = m.innerIndexPtr() + m.outerIndexPtr()[col + 1];
+  const int* it = std::lower_bound(begin, end, static_cast<int>(row));
+  return static_cast<int>(it - m.innerIndexPtr());
+}
+
+template <std::size_t D>
+void add_pattern(const std::array<Index, D>& dofs, const std::vector<Index>& rows,
+                 std::vector<Eigen::Triplet<double, int>>& entries) {
+  for (Index a : dofs) {
+    for (Index b : dofs) {
+      if (rows[a] >= 0 && rows[b] >= 0) entries.emplace_back(rows[a], rows[b], 0.0);
+    }
+  }
+}
+
+template <std::size_t D>
+void add_slots(const std::array<Index, D>& dofs, const std::vector<Index>& rows,
+               const SparseMatrix& m, std::vector<int>& slots) {
+  // Column-major within the element, matching Eigen's default storage of the local matrix.
+  for (Index b : dofs) {
+    for (Index a : dofs) {
+      slots.push_back(rows[a] >= 0 && rows[b] >= 0 ? find_slot(m, rows[a], rows[b]) : -1);
+    }
+  }
+}
+
+template <int D>
+void scatter(const Eigen::Matrix<double, D, D>& local, const int* slots, double* values) {
+  // Symmetrise on the way in: 0.5 (K + K^T), entry by entry.
+  for (int b = 0; b < D; ++b) {
+    for (int a = 0; a < D; ++a) {
+      const int slot = slots[b * D + a];
+      if (slot >= 0) values[slot] += 0.5 * (local(a, b) + local(b, a));
+    }
+  }
+}
+
+template <int D>
+void add_force(const Eigen::Matrix<double, D, 1>& local, const std::array<Index, D>& dofs,
+               VectorX& force) {
+  for (int a = 0; a < D; ++a) force[dofs[a]] += local[a];
+}
+
+}  // namespace
+
+std::vector<Index> all_dofs(Index num_dofs) {
+  std::vector<Index> rows(num_dofs);
+  for (Index i = 0; i < num_dofs; ++i) rows[i] = i;
+  return rows;
+}
+
+std::vector<Index> unmasked_dofs(const std::vector<std::uint8_t>& mask) {
+  std::vector<Index> rows(mask.size(), -1);
+  Index next = 0;
+  for (std::size_t i = 0; i < mask.size(); ++i) {
+    if (!mask[i]) rows[i] = next++;
+  }
+  return rows;
+}
+
+Assembler::Assembler(const model::Model& model, std::vector<Index> rows, double shift)
+    : model_(model), rows_(std::move(rows)), shift_(shift) {
+  if (static_cast<Index>(rows_.size()) != model_.num_dofs()) {
+    throw std::invalid_argument("rows: has " + std::to_string(rows_.size()) +
+                                " entries, must have one per DOF (" +
+                                std::to_string(model_.num_dofs()) + ")");
+  }
+  for (Index r : rows_) size_ = std::max(size_, r + 1);
+
+  std::vector<Eigen::Triplet<double, int>> entries;
+  entries.reserve(36 * model_.bars().size() + 144 * model_.hinges().size() + size_);
+  for (const auto& bar : model_.bars()) add_pattern(element_dofs(bar.nodes), rows_, entries);
+  for (const auto& h : model_.hinges()) add_pattern(element_dofs(h.nodes), rows_, entries);
+  for (Index i = 0; i < size_; ++i) entries.emplace_back(i, i, 0.0);
+  matrix_.resize(size_, size_);
+  matrix_.setFromTriplets(entries.begin(), entries.end());
+  matrix_.makeCompressed();
+
+  bar_slots_.reserve(36 * model_.bars().size());
+  for (const auto& bar : model_.bars()) add_slots(element_dofs(bar.nodes), rows_, matrix_, bar_slots_);
+  hinge_slots_.reserve(144 * model_.hinges().size());
+  for (const auto& h : model_.hinges()) add_slots(element_dofs(h.nodes), rows_, matrix_, hinge_slots_);
+  for (Index i = 0; i < size_; ++i) diagonal_slots_.push_back(find_slot(matrix_, i, i));
+}
+
+Energies Assembler::assemble(const VectorX& u, VectorX& force, bool with_matrix) {
+  if (u.size() != model_.num_dofs()) {
+    throw std::invalid_argument("u: has " + std::to_string(u.size()) + " entries, must have " +
+                                std::to_string(model_.num_dofs()));
+  }
+  const NodeMatrix& X = model_.nodes();
+  auto position = [&](Index node) -> Vector3 {
+    return X.row(node).transpose() + u.segment<3>(3 * node);
+  };
+  force.setZero(model_.num_dofs());
+  double* values = matrix_.valuePtr();
+  if (with_matrix) std::fill(values, values + matrix_.nonZeros(), 0.0);
+
+  Energies energies;
+  const auto& bars = model_.bars();
+  for (std::size_t e = 0; e < bars.size(); ++e) {
+    const auto& bar = bars[e];
+    const auto r = elements::bar_response(position(bar.nodes[0]), position(bar.nodes[1]),
+                                          bar.area, bar.rest_length, bar.law, with_matrix);
+    energies.bars += r.energy;
+    add_force<6>(r.force, element_dofs(bar.nodes), force);
+    if (with_matrix) scatter<6>(r.stiffness, &bar_slots_[36 * e], values);
+  }
+  const auto& hinges = model_.hinges();
+  for (std::size_t e = 0; e < hinges.size(); ++e) {
+    const auto& h = hinges[e];
+    const auto r = elements::hinge_response(position(h.nodes[0]), position(h.nodes[1]),
+                                            position(h.nodes[2]), position(h.nodes[3]),
+                                            h.stiffness, h.rest_angle, h.length, h.law,
+                                            with_matrix);
+    energies.hinges += r.energy;
+    add_force<12>(r.force, element_dofs(h.nodes), force);
+    if (with_matrix) scatter<12>(r.stiffness, &hinge_slots_[144 * e], values);
+  }
+  if (with_matrix) {
+    for (int slot : diagonal_slots_) values[slot] += shift_;
+  }
+  return energies;
+}
+
+ElementState element_state(const model::Model& model, const VectorX& u) {
+  const NodeMatrix x = model.deformed(u);
+  ElementState s;
+  const auto& bars = model.bars();
+  s.bar_strain.resize(static_cast<Index>(bars.size()));
+  s.bar_force.resize(static_cast<Index>(bars.size()));
+  for (std::size_t e = 0; e < bars.size(); ++e) {
+    const Vector3 x1 = x.row(bars[e].nodes[0]), x2 = x.row(bars[e].nodes[1]);
+    const double L = bars[e].rest_length;
+    const double strain = elements::bar_strain(x1, x2, L);
+    const double stretch = (x2 - x1).norm() / L;
+    s.bar_strain[e] = strain;
+    // Axial (Cauchy-like) force: S is per reference area along the deformed direction.
+    s.bar_force[e] = bars[e].area * bars[e].law.evaluate(strain, stretch).stress * stretch;
+  }
+  const auto& hinges = model.hinges();
+  s.hinge_angle.resize(static_cast<Index>(hinges.size()));
+  s.hinge_moment.resize(static_cast<Index>(hinges.size()));
+  for (std::size_t e = 0; e < hinges.size(); ++e) {
+    const auto& h = hinges[e];
+    const double theta = elements::dihedral_angle(x.row(h.nodes[0]), x.row(h.nodes[1]),
+                                                  x.row(h.nodes[2]), x.row(h.nodes[3]));
+    s.hinge_angle[e] = theta;
+    s.hinge_moment[e] = h.length * h.law.evaluate(theta, h.rest_angle, h.stiffness).moment;
+  }
+  return s;
+}
+
+}  // namespace kresling::assembly

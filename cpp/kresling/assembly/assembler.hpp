@@ -1,0 +1,70 @@
+#pragma once
+/// \file assembler.hpp
+/// Global internal force, tangent stiffness and energy of a model.
+///
+/// The sparsity pattern and a slot map (for every element entry, its position in the
+/// matrix's value array) are built once per model and row numbering; each call then only
+/// refills values. Rows are chosen by a DOF numbering: `rows[dof]` is the row of that DOF in
+/// the assembled matrix, or -1 to leave it out (a fixed or imposed DOF). The tangent is
+/// symmetrised element by element and shifted by `shift` on the diagonal, as MERLIN2 does.
+
+#include <vector>
+
+#include <Eigen/SparseCore>
+
+#include "kresling/core/types.hpp"
+#include "kresling/model/model.hpp"
+
+namespace kresling::assembly {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+/// Stored energy by element family.
+struct Energies {
+  double bars = 0.0;
+  double hinges = 0.0;
+  double total() const { return bars + hinges; }
+};
+
+/// The numbering that assembles every DOF (rows[i] = i).
+std::vector<Index> all_dofs(Index num_dofs);
+
+/// The numbering of the DOFs whose mask entry is 0, consecutively; the others get -1.
+std::vector<Index> unmasked_dofs(const std::vector<std::uint8_t>& mask);
+
+class Assembler {
+ public:
+  /// `model` must outlive the assembler.
+  Assembler(const model::Model& model, std::vector<Index> rows, double shift = 1e-8);
+
+  Index size() const { return size_; }
+  const std::vector<Index>& rows() const { return rows_; }
+
+  /// Evaluate at displacement u (length num_dofs): `force` gets the internal force of every
+  /// DOF (resized to num_dofs); if `with_matrix`, the tangent's values are refilled.
+  Energies assemble(const VectorX& u, VectorX& force, bool with_matrix);
+
+  /// The tangent from the last assemble(..., true) call: size() x size(), full symmetric.
+  const SparseMatrix& matrix() const { return matrix_; }
+
+ private:
+  const model::Model& model_;
+  std::vector<Index> rows_;
+  Index size_ = 0;
+  double shift_ = 0.0;
+  SparseMatrix matrix_;
+  std::vector<int> bar_slots_;    // 36 per bar, -1 where a row or column is left out
+  std::vector<int> hinge_slots_;  // 144 per hinge
+  std::vector<int> diagonal_slots_;
+};
+
+/// Per-element state at displacement u: bar strains and hinge angles (for post-processing).
+struct ElementState {
+  VectorX bar_strain;     ///< Green-Lagrange strain per bar
+  VectorX bar_force;      ///< axial force per bar, A S(E) l / L (tension positive)
+  VectorX hinge_angle;    ///< dihedral angle per hinge [rad]
+  VectorX hinge_moment;   ///< L0 M(theta) per hinge
+};
+ElementState element_state(const model::Model& model, const VectorX& u);
+
+}  // namespace kresling::assembly

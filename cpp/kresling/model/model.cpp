@@ -1,0 +1,121 @@
+#include "kresling/model/model.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "kresling/core/check.hpp"
+
+namespace kresling::model {
+
+namespace {
+
+constexpr double kTwoPi = 6.28318530717958647692;
+
+std::string element_name(const char* kind, std::size_t index, const Index* nodes, int count) {
+  std::string s = std::string(kind) + " " + std::to_string(index) + " (nodes";
+  for (int k = 0; k < count; ++k) s += (k ? ", " : " ") + std::to_string(nodes[k]);
+  return s + ")";
+}
+
+void check_nodes(const char* kind, std::size_t index, const Index* nodes, int count,
+                 Index num_nodes) {
+  for (int k = 0; k < count; ++k) {
+    if (nodes[k] < 0 || nodes[k] >= num_nodes) {
+      throw std::invalid_argument(element_name(kind, index, nodes, count) + ": node " +
+                                  std::to_string(nodes[k]) + " is out of range [0, " +
+                                  std::to_string(num_nodes) + ")");
+    }
+    for (int j = 0; j < k; ++j) {
+      if (nodes[j] == nodes[k]) {
+        throw std::invalid_argument(element_name(kind, index, nodes, count) +
+                                    ": a node appears twice");
+      }
+    }
+  }
+}
+
+void check_bar(const Bar& bar, std::size_t i, const NodeMatrix& X, double scale) {
+  const std::string name = element_name("bar", i, bar.nodes.data(), 2);
+  check_nodes("bar", i, bar.nodes.data(), 2, X.rows());
+  require_positive(name + ": area", bar.area);
+  require_positive(name + ": rest length", bar.rest_length);
+  require_positive(name + ": modulus", bar.law.modulus);
+  const double l = (X.row(bar.nodes[1]) - X.row(bar.nodes[0])).norm();
+  if (!(l > 1e-12 * scale)) {
+    throw std::invalid_argument(name + ": zero length (its two nodes coincide)");
+  }
+}
+
+void check_hinge(const Hinge& h, std::size_t i, const NodeMatrix& X, double scale) {
+  const std::string name = element_name("hinge", i, h.nodes.data(), 4);
+  check_nodes("hinge", i, h.nodes.data(), 4, X.rows());
+  require_positive(name + ": stiffness", h.stiffness, /*allow_zero=*/true);
+  require_positive(name + ": length", h.length);
+  require_finite(name + ": rest angle", h.rest_angle);
+  if (h.rest_angle < 0.0 || h.rest_angle >= kTwoPi) {
+    throw_invalid(name + ": rest angle", h.rest_angle, "in [0, 2 pi)");
+  }
+  const Vector3 a = X.row(h.nodes[0]), b = X.row(h.nodes[1]);
+  const Vector3 axis = b - a;
+  if (!(axis.norm() > 1e-12 * scale)) {
+    throw std::invalid_argument(name + ": zero-length axis");
+  }
+  for (int w = 2; w < 4; ++w) {
+    const Vector3 x = X.row(h.nodes[w]);
+    const double distance = (x - a).cross(axis).norm() / axis.norm();
+    if (!(distance > 1e-9 * scale)) {
+      throw std::invalid_argument(name + ": wing node " + std::to_string(h.nodes[w]) +
+                                  " lies on the axis line (collinear hinge triangle)");
+    }
+  }
+  if (h.law.kind == elements::SpringLawKind::EnhancedLinear) {
+    if (!(h.law.theta1 > 0.0 && h.law.theta1 < h.law.theta2 && h.law.theta2 < kTwoPi)) {
+      throw std::invalid_argument(name + ": spring limits (" + format_number(h.law.theta1) +
+                                  ", " + format_number(h.law.theta2) +
+                                  ") are invalid: must satisfy 0 < theta1 < theta2 < 2 pi");
+    }
+  }
+}
+
+}  // namespace
+
+Model::Model(NodeMatrix nodes, std::vector<Bar> bars, std::vector<Hinge> hinges,
+             std::vector<std::uint8_t> fixed)
+    : nodes_(std::move(nodes)),
+      bars_(std::move(bars)),
+      hinges_(std::move(hinges)),
+      fixed_(std::move(fixed)) {
+  if (nodes_.rows() == 0) throw std::invalid_argument("nodes: the model has no nodes");
+  for (Index i = 0; i < nodes_.rows(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      if (!std::isfinite(nodes_(i, k))) {
+        throw std::invalid_argument("node " + std::to_string(i) + ": coordinate " +
+                                    std::to_string(k) + " = " + format_number(nodes_(i, k)) +
+                                    " is not finite");
+      }
+    }
+  }
+  if (static_cast<Index>(fixed_.size()) != num_dofs()) {
+    throw std::invalid_argument("fixed: has " + std::to_string(fixed_.size()) +
+                                " entries, must have one per DOF (" +
+                                std::to_string(num_dofs()) + ")");
+  }
+  // Length scale for the degeneracy checks: the model's extent.
+  const double scale =
+      std::max((nodes_.colwise().maxCoeff() - nodes_.colwise().minCoeff()).norm(), 1e-300);
+  for (std::size_t i = 0; i < bars_.size(); ++i) check_bar(bars_[i], i, nodes_, scale);
+  for (std::size_t i = 0; i < hinges_.size(); ++i) check_hinge(hinges_[i], i, nodes_, scale);
+}
+
+NodeMatrix Model::deformed(const VectorX& u) const {
+  if (u.size() != num_dofs()) {
+    throw std::invalid_argument("u: has " + std::to_string(u.size()) + " entries, must have " +
+                                std::to_string(num_dofs()));
+  }
+  return nodes_ + Eigen::Map<const NodeMatrix>(u.data(), nodes_.rows(), 3);
+}
+
+}  // namespace kresling::model

@@ -1,0 +1,59 @@
+#pragma once
+/// \file model.hpp
+/// A bar-and-hinge model: nodes, bars, rotational-spring hinges and supports. Immutable once
+/// built; the constructor validates everything and names the offending element.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "kresling/core/types.hpp"
+#include "kresling/elements/bar_laws.hpp"
+#include "kresling/elements/spring_laws.hpp"
+
+namespace kresling::model {
+
+/// An axial bar between two nodes.
+struct Bar {
+  std::array<Index, 2> nodes{};
+  double area = 1.0;         ///< cross-section A
+  double rest_length = 0.0;  ///< L
+  elements::BarLaw law;      ///< law and modulus C0 (axial stiffness EA = C0 A)
+};
+
+/// A rotational spring about the axis nodes[0] -> nodes[1] with wings nodes[2], nodes[3].
+struct Hinge {
+  std::array<Index, 4> nodes{};
+  double stiffness = 0.0;   ///< kp, moment per radian per unit length
+  double rest_angle = 0.0;  ///< theta0 in [0, 2 pi)
+  double length = 0.0;      ///< L0, multiplies the law (the rest length of the axis)
+  elements::SpringLaw law;
+};
+
+class Model {
+ public:
+  /// `fixed` has one entry per DOF (3 per node, x y z): nonzero = supported (u = 0).
+  /// Throws std::invalid_argument naming the element and the problem for: non-finite or
+  /// out-of-range data, repeated nodes in an element, zero-length bars, hinges whose wing
+  /// lies on the axis line, negative or non-finite stiffness, bad spring limits.
+  Model(NodeMatrix nodes, std::vector<Bar> bars, std::vector<Hinge> hinges,
+        std::vector<std::uint8_t> fixed);
+
+  Index num_nodes() const { return nodes_.rows(); }
+  Index num_dofs() const { return 3 * nodes_.rows(); }
+  const NodeMatrix& nodes() const { return nodes_; }
+  const std::vector<Bar>& bars() const { return bars_; }
+  const std::vector<Hinge>& hinges() const { return hinges_; }
+  const std::vector<std::uint8_t>& fixed() const { return fixed_; }
+
+  /// Node coordinates X + u, with u ordered like the DOFs.
+  NodeMatrix deformed(const VectorX& u) const;
+
+ private:
+  NodeMatrix nodes_;
+  std::vector<Bar> bars_;
+  std::vector<Hinge> hinges_;
+  std::vector<std::uint8_t> fixed_;
+};
+
+}  // namespace kresling::model

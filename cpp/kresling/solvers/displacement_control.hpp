@@ -1,0 +1,30 @@
+#pragma once
+/// \file displacement_control.hpp
+/// Displacement control as MERLIN2 runs it (the thesis's mode, MODEL.md).
+///
+/// The prescribed displacement vector is reached in `steps` equal increments; only its
+/// non-zero components are imposed (zero components stay free). Each increment moves the
+/// imposed DOFs, then Newton runs on the free DOFs until ||du_free||_2 <= tolerance. An
+/// increment that needs `reject_iterations` or more iterations (or fails) is rejected and
+/// retried as two halves, recursively, down to `max_bisections` levels.
+
+#include "kresling/model/model.hpp"
+#include "kresling/solvers/path.hpp"
+
+namespace kresling::solvers {
+
+struct DisplacementControlOptions {
+  NewtonOptions newton;
+  int reject_iterations = 25;  ///< MERLIN2 rejects an increment needing >= 25 iterations
+  int max_bisections = 10;     ///< an increment may be cut to 1/2^10 of its size
+  double shift = 1e-8;         ///< diagonal shift of the tangent (MERLIN2's)
+};
+
+/// Trace the path. `prescribed` has one entry per DOF; `initial` (empty = zero) is the
+/// starting displacement. Throws std::invalid_argument for bad input (sizes, a prescribed
+/// DOF that is also fixed, nothing prescribed, steps < 1).
+PathResult solve_displacement_control(const model::Model& model, const VectorX& prescribed,
+                                      int steps, const DisplacementControlOptions& options = {},
+                                      const VectorX& initial = VectorX());
+
+}  // namespace kresling::solvers

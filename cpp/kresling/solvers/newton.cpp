@@ -1,0 +1,77 @@
+#include "kresling/solvers/newton.hpp"
+
+#include <cmath>
+
+namespace kresling::solvers {
+
+VectorX gather_rows(const assembly::Assembler& assembler, const VectorX& full) {
+  VectorX out(assembler.size());
+  const auto& rows = assembler.rows();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i] >= 0) out[rows[i]] = full[static_cast<Index>(i)];
+  }
+  return out;
+}
+
+void scatter_add_rows(const assembly::Assembler& assembler, const VectorX& reduced, VectorX& full) {
+  const auto& rows = assembler.rows();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i] >= 0) full[static_cast<Index>(i)] += reduced[rows[i]];
+  }
+}
+
+NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& solver,
+                                 VectorX& u, const VectorX& external,
+                                 const NewtonOptions& options, int max_iterations) {
+  NewtonOutcome out;
+  const int limit = max_iterations > 0 ? max_iterations : options.max_iterations;
+  VectorX force;
+  while (out.iterations < limit) {
+    ++out.iterations;
+    assembler.assemble(u, force, /*with_matrix=*/true);
+    const VectorX residual = gather_rows(assembler, external - force);
+    if (!residual.allFinite()) {
+      out.failure = "the internal force is not finite (an element inverted or degenerated)";
+      return out;
+    }
+    const FactorizeInfo info = solver.factorize(assembler.matrix());
+    if (!info.ok) {
+      out.failure = "the tangent stiffness is singular (an unconstrained mechanism)";
+      return out;
+    }
+    out.negative_eigenvalues = info.negative_eigenvalues;
+    const VectorX du = solver.solve(residual);
+    if (!du.allFinite()) {
+      out.failure = "the Newton correction is not finite";
+      return out;
+    }
+    scatter_add_rows(assembler, du, u);
+    if (du.norm() <= options.tolerance) {
+      out.converged = true;
+      return out;
+    }
+  }
+  out.failure = "Newton did not converge in " + std::to_string(limit) + " iterations";
+  return out;
+}
+
+PathStep record_step(assembly::Assembler& assembler, const VectorX& u, double load_factor,
+                     const NewtonOutcome& outcome, const std::vector<Index>& constraint_dofs,
+                     double sign) {
+  PathStep step;
+  VectorX force;
+  const auto energies = assembler.assemble(u, force, /*with_matrix=*/false);
+  step.load_factor = load_factor;
+  step.displacement = u;
+  step.constraint_force.resize(static_cast<Index>(constraint_dofs.size()));
+  for (std::size_t k = 0; k < constraint_dofs.size(); ++k) {
+    step.constraint_force[static_cast<Index>(k)] = sign * force[constraint_dofs[k]];
+  }
+  step.energy_bars = energies.bars;
+  step.energy_hinges = energies.hinges;
+  step.iterations = outcome.iterations;
+  step.negative_eigenvalues = outcome.negative_eigenvalues;
+  return step;
+}
+
+}  // namespace kresling::solvers

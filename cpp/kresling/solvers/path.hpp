@@ -1,0 +1,48 @@
+#pragma once
+/// \file path.hpp
+/// What every nonlinear solver returns: the equilibrium path, step by step, and how it
+/// ended. Numerical outcomes (a Newton failure, an exhausted step budget, a singular
+/// tangent) end the path with a reason; they are never thrown.
+
+#include <string>
+#include <vector>
+
+#include "kresling/core/types.hpp"
+
+namespace kresling::solvers {
+
+/// Newton iteration controls (MODEL.md: ||du_free||_2 <= 1e-6, at most 50 iterations).
+struct NewtonOptions {
+  double tolerance = 1e-6;   ///< on the 2-norm of the free-DOF correction [mm]
+  int max_iterations = 50;
+};
+
+/// One converged equilibrium point of a path.
+struct PathStep {
+  double load_factor = 0.0;   ///< lambda (force control) or fraction of the prescribed motion
+  VectorX displacement;       ///< all DOFs
+  VectorX constraint_force;   ///< internal force at the constrained DOFs (see PathResult)
+  double energy_bars = 0.0;
+  double energy_hinges = 0.0;
+  int iterations = 0;
+  /// Negative eigenvalues of the free tangent factorised in the step's last iteration:
+  /// 0 = stable equilibrium; -1 = unknown (the tangent needed an LU factorisation).
+  int negative_eigenvalues = -1;
+};
+
+struct PathResult {
+  std::vector<PathStep> steps;
+  /// DOFs whose forces `constraint_force` lists: the imposed DOFs under displacement
+  /// control (the force the structure exerts on the actuator, -f_int, MODEL.md's reported
+  /// force), the supported DOFs under force control (the support reactions, f_int).
+  std::vector<Index> constraint_dofs;
+  bool completed = false;
+  /// Why the path ended early (empty when completed).
+  std::string message;
+  /// 1-based number of the increment that failed, 0 if none.
+  int failed_increment = 0;
+  /// Increments tried, accepted or not.
+  int attempted_increments = 0;
+};
+
+}  // namespace kresling::solvers

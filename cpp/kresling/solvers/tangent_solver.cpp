@@ -1,0 +1,91 @@
+#include "kresling/solvers/tangent_solver.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/SparseCholesky>
+#include <Eigen/UmfPackSupport>
+
+namespace kresling::solvers {
+
+struct TangentSolver::Impl {
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholesky;
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
+  Eigen::UmfPackLU<SparseMatrix> lu;
+  bool cholesky_analysed = false, ldlt_analysed = false, lu_analysed = false;
+  Factorization current = Factorization::None;
+  const SparseMatrix* matrix = nullptr;  // for the LDL^T residual check
+};
+
+TangentSolver::TangentSolver() : impl_(std::make_unique<Impl>()) {
+  // An indefinite tangent is an expected outcome here, not something to print about.
+  impl_->cholesky.cholmod().print = 0;
+}
+TangentSolver::~TangentSolver() = default;
+
+FactorizeInfo TangentSolver::factorize(const SparseMatrix& K) {
+  Impl& s = *impl_;
+  FactorizeInfo info;
+  s.current = Factorization::None;
+  if (K.rows() == 0) {  // nothing free: trivially "positive definite"
+    s.current = Factorization::Cholesky;
+    return {true, Factorization::Cholesky, 0};
+  }
+  if (!s.cholesky_analysed) {
+    s.cholesky.analyzePattern(K);
+    s.cholesky_analysed = true;
+  }
+  s.cholesky.factorize(K);
+  if (s.cholesky.info() == Eigen::Success) {
+    s.current = Factorization::Cholesky;
+    return {true, Factorization::Cholesky, 0};
+  }
+  // Indefinite (or singular): LDL^T for the inertia.
+  if (!s.ldlt_analysed) {
+    s.ldlt.analyzePattern(K);
+    s.ldlt_analysed = true;
+  }
+  s.ldlt.factorize(K);
+  if (s.ldlt.info() == Eigen::Success) {
+    const VectorX d = s.ldlt.vectorD();
+    const double largest = d.cwiseAbs().maxCoeff();
+    const bool usable = d.allFinite() && d.cwiseAbs().minCoeff() > 1e-13 * largest;
+    if (usable) {
+      s.current = Factorization::LDLT;
+      info = {true, Factorization::LDLT, static_cast<int>((d.array() < 0.0).count())};
+      return info;
+    }
+  }
+  if (!s.lu_analysed) {
+    s.lu.analyzePattern(K);
+    s.lu_analysed = true;
+  }
+  s.lu.factorize(K);
+  if (s.lu.info() == Eigen::Success) {
+    s.current = Factorization::LU;
+    return {true, Factorization::LU, -1};
+  }
+  return info;  // singular: ok = false
+}
+
+VectorX TangentSolver::solve(const VectorX& b) const {
+  switch (impl_->current) {
+    case Factorization::Cholesky:
+      return b.size() ? VectorX(impl_->cholesky.solve(b)) : VectorX(b);
+    case Factorization::LDLT:
+      return impl_->ldlt.solve(b);
+    case Factorization::LU:
+      return impl_->lu.solve(b);
+    default:
+      throw std::logic_error("TangentSolver::solve called without a factorisation");
+  }
+}
+
+Eigen::MatrixXd TangentSolver::solve(const Eigen::MatrixXd& B) const {
+  Eigen::MatrixXd X(B.rows(), B.cols());
+  for (Index j = 0; j < B.cols(); ++j) X.col(j) = solve(VectorX(B.col(j)));
+  return X;
+}
+
+}  // namespace kresling::solvers

@@ -1,0 +1,78 @@
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+#include "kresling/elements/bar.hpp"
+#include "kresling/elements/dihedral.hpp"
+#include "kresling/elements/hinge.hpp"
+#include "kresling/elements/spring_laws.hpp"
+
+namespace py = pybind11;
+using namespace kresling::elements;
+
+namespace kresling::python {
+
+void bind_elements(py::module_& m) {
+  m.def("dihedral_angle", &dihedral_angle, py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"));
+  m.def(
+      "dihedral_angle_derivatives",
+      [](const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d) {
+        const auto r = dihedral_angle_derivatives(a, b, c, d, true);
+        return py::make_tuple(r.angle, r.gradient, r.hessian);
+      },
+      py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"));
+  m.def(
+      "dihedral_angles",
+      [](const Eigen::Ref<const NodeMatrix>& x,
+         py::array_t<Index, py::array::c_style | py::array::forcecast> hinges) {
+        if (hinges.ndim() != 2 || hinges.shape(1) != 4) {
+          throw std::invalid_argument("hinges: expected shape (n, 4)");
+        }
+        auto h = hinges.unchecked<2>();
+        VectorX out(h.shape(0));
+        for (py::ssize_t i = 0; i < h.shape(0); ++i) {
+          for (int k = 0; k < 4; ++k) {
+            if (h(i, k) < 0 || h(i, k) >= x.rows()) {
+              throw std::invalid_argument("hinge " + std::to_string(i) + ": node " +
+                                          std::to_string(h(i, k)) + " is out of range");
+            }
+          }
+          out[i] = dihedral_angle(x.row(h(i, 0)), x.row(h(i, 1)), x.row(h(i, 2)), x.row(h(i, 3)));
+        }
+        return out;
+      },
+      py::arg("nodes"), py::arg("hinges"));
+  m.def(
+      "bar_response",
+      [](const Vector3& x1, const Vector3& x2, double area, double rest_length, int law,
+         double modulus) {
+        const auto r = bar_response(x1, x2, area, rest_length,
+                                    BarLaw{static_cast<BarLawKind>(law), modulus}, true);
+        return py::make_tuple(r.energy, r.force, r.stiffness);
+      },
+      py::arg("x1"), py::arg("x2"), py::arg("area"), py::arg("rest_length"), py::arg("law"),
+      py::arg("modulus"));
+  m.def(
+      "hinge_response",
+      [](const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d, double kp,
+         double rest_angle, double length, int law, double theta1, double theta2) {
+        const auto r = hinge_response(a, b, c, d, kp, rest_angle, length,
+                                      SpringLaw{static_cast<SpringLawKind>(law), theta1, theta2});
+        return py::make_tuple(r.energy, r.force, r.stiffness, r.angle, r.moment);
+      },
+      py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("stiffness"),
+      py::arg("rest_angle"), py::arg("length"), py::arg("law"), py::arg("theta1"),
+      py::arg("theta2"));
+  m.def(
+      "spring_law",
+      [](int law, double theta, double rest_angle, double stiffness, double theta1, double theta2) {
+        const auto r = SpringLaw{static_cast<SpringLawKind>(law), theta1, theta2}.evaluate(
+            theta, rest_angle, stiffness);
+        return py::make_tuple(r.moment, r.stiffness, r.energy);
+      },
+      py::arg("law"), py::arg("theta"), py::arg("rest_angle"), py::arg("stiffness"),
+      py::arg("theta1"), py::arg("theta2"));
+}
+
+}  // namespace kresling::python

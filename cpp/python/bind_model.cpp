@@ -1,0 +1,117 @@
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "kresling/model/model.hpp"
+#include "kresling/model/topology.hpp"
+
+namespace py = pybind11;
+
+namespace kresling::python {
+
+namespace {
+
+using IndexArray = py::array_t<Index, py::array::c_style | py::array::forcecast>;
+using RealArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+void require_shape(const char* name, const py::array& a, py::ssize_t rows, py::ssize_t cols) {
+  const bool ok = cols < 0 ? (a.ndim() == 1 && a.shape(0) == rows)
+                           : (a.ndim() == 2 && a.shape(0) == rows && a.shape(1) == cols);
+  if (!ok) {
+    throw std::invalid_argument(std::string(name) + ": expected shape (" + std::to_string(rows) +
+                                (cols < 0 ? "," : ", " + std::to_string(cols)) + ")");
+  }
+}
+
+model::Model make_model(const Eigen::Ref<const NodeMatrix>& nodes, IndexArray bar_nodes,
+                        RealArray bar_area, RealArray bar_rest_length, IndexArray bar_law,
+                        RealArray bar_modulus, IndexArray hinge_nodes, RealArray hinge_stiffness,
+                        RealArray hinge_rest_angle, RealArray hinge_length, IndexArray hinge_law,
+                        RealArray hinge_theta1, RealArray hinge_theta2,
+                        py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> fixed) {
+  const py::ssize_t nb = bar_nodes.ndim() == 2 ? bar_nodes.shape(0) : 0;
+  const py::ssize_t nh = hinge_nodes.ndim() == 2 ? hinge_nodes.shape(0) : 0;
+  require_shape("bar_nodes", bar_nodes, nb, 2);
+  require_shape("hinge_nodes", hinge_nodes, nh, 4);
+  require_shape("bar_area", bar_area, nb, -1);
+  require_shape("bar_rest_length", bar_rest_length, nb, -1);
+  require_shape("bar_law", bar_law, nb, -1);
+  require_shape("bar_modulus", bar_modulus, nb, -1);
+  for (const auto& [name, a] : {std::pair<const char*, py::array>{"hinge_stiffness", hinge_stiffness},
+                                {"hinge_rest_angle", hinge_rest_angle}, {"hinge_length", hinge_length},
+                                {"hinge_law", hinge_law}, {"hinge_theta1", hinge_theta1},
+                                {"hinge_theta2", hinge_theta2}}) {
+    require_shape(name, a, nh, -1);
+  }
+  require_shape("fixed", fixed, 3 * nodes.rows(), -1);
+  std::vector<model::Bar> bars(static_cast<std::size_t>(nb));
+  auto bn = bar_nodes.unchecked<2>();
+  for (py::ssize_t i = 0; i < nb; ++i) {
+    const Index law = bar_law.at(i);
+    if (law != 0 && law != 1) throw std::invalid_argument("bar_law: unknown law code");
+    bars[i].nodes = {bn(i, 0), bn(i, 1)};
+    bars[i].area = bar_area.at(i);
+    bars[i].rest_length = bar_rest_length.at(i);
+    bars[i].law = {static_cast<elements::BarLawKind>(law), bar_modulus.at(i)};
+  }
+  std::vector<model::Hinge> hinges(static_cast<std::size_t>(nh));
+  auto hn = hinge_nodes.unchecked<2>();
+  for (py::ssize_t i = 0; i < nh; ++i) {
+    const Index law = hinge_law.at(i);
+    if (law < 0 || law > 2) throw std::invalid_argument("hinge_law: unknown law code");
+    hinges[i].nodes = {hn(i, 0), hn(i, 1), hn(i, 2), hn(i, 3)};
+    hinges[i].stiffness = hinge_stiffness.at(i);
+    hinges[i].rest_angle = hinge_rest_angle.at(i);
+    hinges[i].length = hinge_length.at(i);
+    hinges[i].law = {static_cast<elements::SpringLawKind>(law), hinge_theta1.at(i),
+                     hinge_theta2.at(i)};
+  }
+  std::vector<std::uint8_t> mask(fixed.data(), fixed.data() + fixed.size());
+  return model::Model(NodeMatrix(nodes), std::move(bars), std::move(hinges), std::move(mask));
+}
+
+}  // namespace
+
+void bind_model(py::module_& m) {
+  py::class_<model::Model>(m, "Model")
+      .def(py::init(&make_model), py::arg("nodes"), py::arg("bar_nodes"), py::arg("bar_area"),
+           py::arg("bar_rest_length"), py::arg("bar_law"), py::arg("bar_modulus"),
+           py::arg("hinge_nodes"), py::arg("hinge_stiffness"), py::arg("hinge_rest_angle"),
+           py::arg("hinge_length"), py::arg("hinge_law"), py::arg("hinge_theta1"),
+           py::arg("hinge_theta2"), py::arg("fixed"))
+      .def_property_readonly("num_nodes", &model::Model::num_nodes)
+      .def_property_readonly("num_dofs", &model::Model::num_dofs)
+      .def_property_readonly("num_bars", [](const model::Model& m) { return m.bars().size(); })
+      .def_property_readonly("num_hinges", [](const model::Model& m) { return m.hinges().size(); });
+
+  m.def(
+      "build_topology",
+      [](const Eigen::Ref<const NodeMatrix>& nodes, const std::vector<std::vector<Index>>& panels,
+         int split, bool duplicate) {
+        if (split != 0 && split != 1) throw std::invalid_argument("split: unknown code");
+        const model::Topology t = model::build_topology(
+            NodeMatrix(nodes), panels, static_cast<model::PanelSplit>(split), duplicate);
+        auto rows = [](const auto& v, py::ssize_t width) {
+          py::array_t<Index> a({static_cast<py::ssize_t>(v.size()), width});
+          auto w = a.template mutable_unchecked<2>();
+          for (std::size_t i = 0; i < v.size(); ++i) {
+            for (py::ssize_t k = 0; k < width; ++k) w(i, k) = v[i][k];
+          }
+          return a;
+        };
+        py::dict out;
+        out["nodes"] = t.nodes;
+        out["triangles"] = rows(t.triangles, 3);
+        out["triangle_panel"] = py::array_t<Index>(t.triangle_panel.size(), t.triangle_panel.data());
+        out["bars"] = rows(t.bars, 2);
+        out["hinges"] = rows(t.hinges, 4);
+        out["hinge_is_bend"] = py::array_t<bool>(
+            t.hinge_is_bend.size(), reinterpret_cast<const bool*>(t.hinge_is_bend.data()));
+        return out;
+      },
+      py::arg("nodes"), py::arg("panels"), py::arg("split"), py::arg("duplicate_shared_edges"));
+}
+
+}  // namespace kresling::python

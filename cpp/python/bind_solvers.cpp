@@ -1,0 +1,175 @@
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "kresling/assembly/assembler.hpp"
+#include "kresling/solvers/displacement_control.hpp"
+#include "kresling/solvers/force_control.hpp"
+#include "kresling/solvers/linear_stiffness.hpp"
+
+namespace py = pybind11;
+using kresling::model::Model;
+using namespace kresling::solvers;
+
+namespace kresling::python {
+
+namespace {
+
+py::tuple csc(const assembly::SparseMatrix& K) {
+  // Copies: the Python side owns its arrays.
+  py::array_t<int> indptr(K.outerSize() + 1, K.outerIndexPtr());
+  py::array_t<int> indices(K.nonZeros(), K.innerIndexPtr());
+  py::array_t<double> data(K.nonZeros(), K.valuePtr());
+  return py::make_tuple(data, indices, indptr, py::make_tuple(K.rows(), K.cols()));
+}
+
+py::dict path_to_dict(const PathResult& r, Index num_dofs) {
+  const auto s = static_cast<Index>(r.steps.size());
+  const auto nc = static_cast<Index>(r.constraint_dofs.size());
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> u(s, num_dofs), f(s, nc);
+  VectorX lam(s), eb(s), eh(s);
+  Eigen::VectorXi iters(s), neg(s);
+  for (Index k = 0; k < s; ++k) {
+    const PathStep& p = r.steps[k];
+    u.row(k) = p.displacement.transpose();
+    f.row(k) = p.constraint_force.transpose();
+    lam[k] = p.load_factor;
+    eb[k] = p.energy_bars;
+    eh[k] = p.energy_hinges;
+    iters[k] = p.iterations;
+    neg[k] = p.negative_eigenvalues;
+  }
+  py::dict out;
+  out["load_factor"] = lam;
+  out["displacement"] = u;
+  out["constraint_force"] = f;
+  out["constraint_dofs"] = r.constraint_dofs;
+  out["energy_bars"] = eb;
+  out["energy_hinges"] = eh;
+  out["iterations"] = iters;
+  out["negative_eigenvalues"] = neg;
+  out["completed"] = r.completed;
+  out["message"] = r.message;
+  out["failed_increment"] = r.failed_increment;
+  out["attempted_increments"] = r.attempted_increments;
+  return out;
+}
+
+NewtonOptions newton(double tolerance, int max_iterations) {
+  if (!(tolerance > 0)) throw std::invalid_argument("tolerance must be > 0");
+  if (max_iterations < 1) throw std::invalid_argument("max_iterations must be >= 1");
+  return {tolerance, max_iterations};
+}
+
+}  // namespace
+
+void bind_solvers(py::module_& m) {
+  m.def(
+      "assemble",
+      [](const Model& model, const VectorX& u, double shift, bool with_matrix) {
+        assembly::Assembler assembler(model, assembly::all_dofs(model.num_dofs()), shift);
+        VectorX force;
+        assembly::Energies e;
+        {
+          py::gil_scoped_release release;
+          e = assembler.assemble(u, force, with_matrix);
+        }
+        py::object K = with_matrix ? py::object(csc(assembler.matrix())) : py::none();
+        return py::make_tuple(e.bars, e.hinges, force, K);
+      },
+      py::arg("model"), py::arg("u"), py::arg("shift"), py::arg("with_matrix"));
+
+  m.def(
+      "element_state",
+      [](const Model& model, const VectorX& u) {
+        const auto s = assembly::element_state(model, u);
+        py::dict out;
+        out["bar_strain"] = s.bar_strain;
+        out["bar_force"] = s.bar_force;
+        out["hinge_angle"] = s.hinge_angle;
+        out["hinge_moment"] = s.hinge_moment;
+        return out;
+      },
+      py::arg("model"), py::arg("u"));
+
+  m.def(
+      "displacement_control",
+      [](const Model& model, const VectorX& prescribed, int steps, double tolerance,
+         int max_iterations, int reject_iterations, int max_bisections, double shift,
+         const VectorX& initial) {
+        DisplacementControlOptions o;
+        o.newton = newton(tolerance, max_iterations);
+        o.reject_iterations = reject_iterations;
+        o.max_bisections = max_bisections;
+        o.shift = shift;
+        PathResult r;
+        {
+          py::gil_scoped_release release;
+          r = solve_displacement_control(model, prescribed, steps, o, initial);
+        }
+        return path_to_dict(r, model.num_dofs());
+      },
+      py::arg("model"), py::arg("prescribed"), py::arg("steps"), py::arg("tolerance"),
+      py::arg("max_iterations"), py::arg("reject_iterations"), py::arg("max_bisections"),
+      py::arg("shift"), py::arg("initial"));
+
+  m.def(
+      "force_control",
+      [](const Model& model, const VectorX& forces, int steps, double tolerance,
+         int max_iterations, int max_bisections, double shift, const VectorX& initial) {
+        ForceControlOptions o;
+        o.newton = newton(tolerance, max_iterations);
+        o.max_bisections = max_bisections;
+        o.shift = shift;
+        PathResult r;
+        {
+          py::gil_scoped_release release;
+          r = solve_force_control(model, forces, steps, o, initial);
+        }
+        return path_to_dict(r, model.num_dofs());
+      },
+      py::arg("model"), py::arg("forces"), py::arg("steps"), py::arg("tolerance"),
+      py::arg("max_iterations"), py::arg("max_bisections"), py::arg("shift"), py::arg("initial"));
+
+  m.def(
+      "mgdcm",
+      [](const Model& model, const VectorX& forces, double initial_load_factor, int max_increments,
+         double max_load_factor, Index monitor_dof, double max_displacement, double tolerance,
+         int max_iterations, double shift, const VectorX& initial) {
+        MgdcmOptions o;
+        o.newton = newton(tolerance, max_iterations);
+        o.initial_load_factor = initial_load_factor;
+        o.max_increments = max_increments;
+        o.max_load_factor = max_load_factor;
+        o.monitor_dof = monitor_dof;
+        o.max_displacement = max_displacement;
+        o.shift = shift;
+        PathResult r;
+        {
+          py::gil_scoped_release release;
+          r = solve_mgdcm(model, forces, o, initial);
+        }
+        return path_to_dict(r, model.num_dofs());
+      },
+      py::arg("model"), py::arg("forces"), py::arg("initial_load_factor"),
+      py::arg("max_increments"), py::arg("max_load_factor"), py::arg("monitor_dof"),
+      py::arg("max_displacement"), py::arg("tolerance"), py::arg("max_iterations"),
+      py::arg("shift"), py::arg("initial"));
+
+  m.def(
+      "condensed_stiffness",
+      [](const Model& model, const VectorX& u, const std::vector<Index>& dofs) {
+        bool singular = false;
+        Eigen::MatrixXd S;
+        {
+          py::gil_scoped_release release;
+          S = condensed_stiffness(model, u, dofs, &singular);
+        }
+        return py::make_tuple(S, singular);
+      },
+      py::arg("model"), py::arg("u"), py::arg("dofs"));
+}
+
+}  // namespace kresling::python
