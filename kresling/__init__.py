@@ -19,8 +19,9 @@ Examples
 import logging
 
 from kresling.geometry import Design, design_quantities
+from kresling.model import Model
 
 __version__ = "0.1.0"
-__all__ = ["Design", "design_quantities", "__version__"]
+__all__ = ["Design", "Model", "design_quantities", "__version__"]
 
 logging.getLogger(__name__).addHandler(logging.NullHandler())

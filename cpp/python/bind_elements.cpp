@@ -7,6 +7,7 @@
 #include "kresling/elements/dihedral.hpp"
 #include "kresling/elements/hinge.hpp"
 #include "kresling/elements/spring_laws.hpp"
+#include "kresling/model/model.hpp"
 
 namespace py = pybind11;
 using namespace kresling::elements;
@@ -31,13 +32,10 @@ void bind_elements(py::module_& m) {
         }
         auto h = hinges.unchecked<2>();
         VectorX out(h.shape(0));
+        const NodeMatrix X(x);
         for (py::ssize_t i = 0; i < h.shape(0); ++i) {
-          for (int k = 0; k < 4; ++k) {
-            if (h(i, k) < 0 || h(i, k) >= x.rows()) {
-              throw std::invalid_argument("hinge " + std::to_string(i) + ": node " +
-                                          std::to_string(h(i, k)) + " is out of range");
-            }
-          }
+          model::check_hinge_geometry(X, {h(i, 0), h(i, 1), h(i, 2), h(i, 3)},
+                                      static_cast<std::size_t>(i));
           out[i] = dihedral_angle(x.row(h(i, 0)), x.row(h(i, 1)), x.row(h(i, 2)), x.row(h(i, 3)));
         }
         return out;

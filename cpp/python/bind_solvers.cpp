@@ -136,8 +136,9 @@ void bind_solvers(py::module_& m) {
   m.def(
       "mgdcm",
       [](const Model& model, const VectorX& forces, double initial_load_factor, int max_increments,
-         double max_load_factor, Index monitor_dof, double max_displacement, double tolerance,
-         int max_iterations, double shift, const VectorX& initial) {
+         double max_load_factor, Index monitor_dof, double max_displacement,
+         double max_step_factor, double tolerance, int max_iterations, double shift,
+         const VectorX& initial) {
         MgdcmOptions o;
         o.newton = newton(tolerance, max_iterations);
         o.initial_load_factor = initial_load_factor;
@@ -145,6 +146,7 @@ void bind_solvers(py::module_& m) {
         o.max_load_factor = max_load_factor;
         o.monitor_dof = monitor_dof;
         o.max_displacement = max_displacement;
+        o.max_step_factor = max_step_factor;
         o.shift = shift;
         PathResult r;
         {
@@ -155,8 +157,8 @@ void bind_solvers(py::module_& m) {
       },
       py::arg("model"), py::arg("forces"), py::arg("initial_load_factor"),
       py::arg("max_increments"), py::arg("max_load_factor"), py::arg("monitor_dof"),
-      py::arg("max_displacement"), py::arg("tolerance"), py::arg("max_iterations"),
-      py::arg("shift"), py::arg("initial"));
+      py::arg("max_displacement"), py::arg("max_step_factor"), py::arg("tolerance"),
+      py::arg("max_iterations"), py::arg("shift"), py::arg("initial"));
 
   m.def(
       "condensed_stiffness",

@@ -38,6 +38,7 @@ class Assembler {
   Assembler(const model::Model& model, std::vector<Index> rows, double shift = 1e-8);
 
   Index size() const { return size_; }
+  const model::Model& model() const { return model_; }
   const std::vector<Index>& rows() const { return rows_; }
 
   /// Evaluate at displacement u (length num_dofs): `force` gets the internal force of every

@@ -49,27 +49,18 @@ void check_bar(const Bar& bar, std::size_t i, const NodeMatrix& X, double scale)
   }
 }
 
-void check_hinge(const Hinge& h, std::size_t i, const NodeMatrix& X, double scale) {
+double extent(const NodeMatrix& X) {
+  return std::max((X.colwise().maxCoeff() - X.colwise().minCoeff()).norm(), 1e-300);
+}
+
+void check_hinge(const Hinge& h, std::size_t i, const NodeMatrix& X) {
   const std::string name = element_name("hinge", i, h.nodes.data(), 4);
-  check_nodes("hinge", i, h.nodes.data(), 4, X.rows());
+  check_hinge_geometry(X, h.nodes, i);
   require_positive(name + ": stiffness", h.stiffness, /*allow_zero=*/true);
   require_positive(name + ": length", h.length);
   require_finite(name + ": rest angle", h.rest_angle);
   if (h.rest_angle < 0.0 || h.rest_angle >= kTwoPi) {
     throw_invalid(name + ": rest angle", h.rest_angle, "in [0, 2 pi)");
-  }
-  const Vector3 a = X.row(h.nodes[0]), b = X.row(h.nodes[1]);
-  const Vector3 axis = b - a;
-  if (!(axis.norm() > 1e-12 * scale)) {
-    throw std::invalid_argument(name + ": zero-length axis");
-  }
-  for (int w = 2; w < 4; ++w) {
-    const Vector3 x = X.row(h.nodes[w]);
-    const double distance = (x - a).cross(axis).norm() / axis.norm();
-    if (!(distance > 1e-9 * scale)) {
-      throw std::invalid_argument(name + ": wing node " + std::to_string(h.nodes[w]) +
-                                  " lies on the axis line (collinear hinge triangle)");
-    }
   }
   if (h.law.kind == elements::SpringLawKind::EnhancedLinear) {
     if (!(h.law.theta1 > 0.0 && h.law.theta1 < h.law.theta2 && h.law.theta2 < kTwoPi)) {
@@ -81,6 +72,26 @@ void check_hinge(const Hinge& h, std::size_t i, const NodeMatrix& X, double scal
 }
 
 }  // namespace
+
+void check_hinge_geometry(const NodeMatrix& X, const std::array<Index, 4>& nodes,
+                          std::size_t index) {
+  const std::string name = element_name("hinge", index, nodes.data(), 4);
+  check_nodes("hinge", index, nodes.data(), 4, X.rows());
+  const double scale = extent(X);
+  const Vector3 a = X.row(nodes[0]), b = X.row(nodes[1]);
+  const Vector3 axis = b - a;
+  if (!(axis.norm() > 1e-12 * scale)) {
+    throw std::invalid_argument(name + ": zero-length axis");
+  }
+  for (int w = 2; w < 4; ++w) {
+    const Vector3 x = X.row(nodes[w]);
+    const double distance = (x - a).cross(axis).norm() / axis.norm();
+    if (!(distance > 1e-9 * scale)) {
+      throw std::invalid_argument(name + ": wing node " + std::to_string(nodes[w]) +
+                                  " lies on the axis line (collinear hinge triangle)");
+    }
+  }
+}
 
 Model::Model(NodeMatrix nodes, std::vector<Bar> bars, std::vector<Hinge> hinges,
              std::vector<std::uint8_t> fixed)
@@ -104,10 +115,9 @@ Model::Model(NodeMatrix nodes, std::vector<Bar> bars, std::vector<Hinge> hinges,
                                 std::to_string(num_dofs()) + ")");
   }
   // Length scale for the degeneracy checks: the model's extent.
-  const double scale =
-      std::max((nodes_.colwise().maxCoeff() - nodes_.colwise().minCoeff()).norm(), 1e-300);
+  const double scale = extent(nodes_);
   for (std::size_t i = 0; i < bars_.size(); ++i) check_bar(bars_[i], i, nodes_, scale);
-  for (std::size_t i = 0; i < hinges_.size(); ++i) check_hinge(hinges_[i], i, nodes_, scale);
+  for (std::size_t i = 0; i < hinges_.size(); ++i) check_hinge(hinges_[i], i, nodes_);
 }
 
 NodeMatrix Model::deformed(const VectorX& u) const {

@@ -30,6 +30,13 @@ struct Hinge {
   elements::SpringLaw law;
 };
 
+/// Throw std::invalid_argument (naming hinge `index`) when its nodes are out of range or
+/// repeated, its axis has zero length, or a wing lies on the axis line: the dihedral angle
+/// is undefined there. Model validates every hinge with it; callers that compute angles
+/// before a Model exists (default rest angles) use it too.
+void check_hinge_geometry(const NodeMatrix& X, const std::array<Index, 4>& nodes,
+                          std::size_t index);
+
 class Model {
  public:
   /// `fixed` has one entry per DOF (3 per node, x y z): nonzero = supported (u = 0).

@@ -6,6 +6,7 @@
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/core/check.hpp"
 #include "kresling/solvers/newton.hpp"
+#include "kresling/solvers/rigid_body.hpp"
 
 namespace kresling::solvers {
 
@@ -36,6 +37,7 @@ PathResult solve_displacement_control(const model::Model& model, const VectorX& 
     held[i] = 1;
   }
   if (imposed.empty()) throw std::invalid_argument("prescribed: every entry is zero");
+  require_rigid_body_constrained(model, held);
 
   assembly::Assembler assembler(model, assembly::unmasked_dofs(held), options.shift);
   TangentSolver solver;
@@ -51,6 +53,7 @@ PathResult solve_displacement_control(const model::Model& model, const VectorX& 
   for (int k = 1; k <= steps; ++k) {
     const double target = (k == steps) ? 1.0 : k * nominal;
     double dt = target - t;
+    std::string first_failure;  // why the whole increment failed, the most telling reason
     while (t < target) {
       ++result.attempted_increments;
       VectorX trial = u;
@@ -65,15 +68,18 @@ PathResult solve_displacement_control(const model::Model& model, const VectorX& 
         dt = target - t;  // back to the rest of the nominal increment
         continue;
       }
+      if (first_failure.empty()) {
+        first_failure = outcome.failure.empty()
+                            ? "Newton needed " + std::to_string(outcome.iterations) + " iterations"
+                            : outcome.failure;
+      }
       dt *= 0.5;
       if (dt < smallest) {
         result.failed_increment = result.attempted_increments;
         result.message = "increment " + std::to_string(k) + " (of " + std::to_string(steps) +
                          ", at " + format_number(t) + " of the prescribed motion) failed after " +
-                         std::to_string(options.max_bisections) + " bisections: " +
-                         (outcome.failure.empty()
-                              ? "Newton needed " + std::to_string(outcome.iterations) + " iterations"
-                              : outcome.failure);
+                         std::to_string(options.max_bisections) + " bisections; at full size: " +
+                         first_failure;
         return result;
       }
     }

@@ -7,6 +7,7 @@
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/core/check.hpp"
 #include "kresling/solvers/newton.hpp"
+#include "kresling/solvers/rigid_body.hpp"
 
 namespace kresling::solvers {
 
@@ -33,6 +34,7 @@ void check_inputs(const model::Model& model, const VectorX& forces, const Vector
   if (initial.size() != 0 && (initial.size() != n || !initial.allFinite())) {
     throw std::invalid_argument("initial: must be empty or one finite entry per DOF");
   }
+  require_rigid_body_constrained(model, model.fixed());
 }
 
 }  // namespace
@@ -52,6 +54,7 @@ PathResult solve_force_control(const model::Model& model, const VectorX& forces,
   for (int k = 1; k <= steps; ++k) {
     const double target = (k == steps) ? 1.0 : k * nominal;
     double dl = target - lambda;
+    std::string first_failure;  // why the whole load step failed, the most telling reason
     while (lambda < target) {
       ++result.attempted_increments;
       const double l_new = (dl >= target - lambda) ? target : lambda + dl;
@@ -65,12 +68,14 @@ PathResult solve_force_control(const model::Model& model, const VectorX& forces,
         dl = target - lambda;
         continue;
       }
+      if (first_failure.empty()) first_failure = outcome.failure;
       dl *= 0.5;
       if (dl < smallest) {
         result.failed_increment = result.attempted_increments;
-        result.message = "no equilibrium beyond load factor " + format_number(lambda) +
+        result.message = "no equilibrium found beyond load factor " + format_number(lambda) +
                          " (load step " + std::to_string(k) + " of " + std::to_string(steps) +
-                         "; a limit point? use MGDCM): " + outcome.failure;
+                         ", " + std::to_string(options.max_bisections) +
+                         " bisections; a limit point? use MGDCM); at full size: " + first_failure;
         return result;
       }
     }
@@ -87,6 +92,9 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
     throw_invalid("initial_load_factor", 0.0, "non-zero (its sign sets the loading direction)");
   }
   if (options.max_increments < 1) throw_invalid("max_increments", options.max_increments, ">= 1");
+  if (!(options.max_step_factor >= std::abs(options.initial_load_factor))) {
+    throw_invalid("max_step_factor", options.max_step_factor, ">= |initial_load_factor|");
+  }
   if (options.monitor_dof >= model.num_dofs()) {
     throw_invalid("monitor_dof", static_cast<double>(options.monitor_dof), "a DOF of the model");
   }
@@ -162,7 +170,10 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
       direction = trial_direction;
       previous_predictor = predictor;
       result.steps.push_back(record_step(assembler, u, lambda, outcome, result.constraint_dofs, 1.0));
-      if (outcome.iterations < options.grow_below_iterations) step_factor *= 1.5;
+      if (outcome.iterations < options.grow_below_iterations) {
+        step_factor = std::copysign(std::min(std::abs(step_factor) * 1.5, options.max_step_factor),
+                                    step_factor);
+      }
       const bool load_reached = std::abs(lambda) > options.max_load_factor;
       const bool motion_reached = options.monitor_dof >= 0 &&
                                   std::abs(u[options.monitor_dof]) > options.max_displacement;

@@ -35,6 +35,8 @@ struct MgdcmOptions {
   int shrink_above_iterations = 15;  ///< more iterations: reject, halve the step factor
   int grow_below_iterations = 3;     ///< fewer iterations: step factor times 1.5
   double min_load_factor = 1e-14;    ///< give up when the step factor falls below this
+  /// Cap on the step factor's growth (|b_lambda| <= this), for a finely resolved path.
+  double max_step_factor = std::numeric_limits<double>::infinity();
   double shift = 1e-8;
 };
 

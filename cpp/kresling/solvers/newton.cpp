@@ -20,6 +20,16 @@ void scatter_add_rows(const assembly::Assembler& assembler, const VectorX& reduc
   }
 }
 
+namespace {
+
+// The model's extent [mm] (at least 1): corrections beyond 1e6 times it mean a mechanism.
+double mechanism_scale(const assembly::Assembler& assembler) {
+  const NodeMatrix& X = assembler.model().nodes();
+  return std::max((X.colwise().maxCoeff() - X.colwise().minCoeff()).norm(), 1.0);
+}
+
+}  // namespace
+
 NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& solver,
                                  VectorX& u, const VectorX& external,
                                  const NewtonOptions& options, int max_iterations) {
@@ -43,6 +53,13 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
     const VectorX du = solver.solve(residual);
     if (!du.allFinite()) {
       out.failure = "the Newton correction is not finite";
+      return out;
+    }
+    // The 1e-8 diagonal shift keeps a zero-stiffness mode factorisable; it shows up as a
+    // correction far larger than the structure.
+    if (du.norm() > 1e6 * mechanism_scale(assembler)) {
+      out.failure = "the Newton correction is unbounded (" + std::to_string(du.norm()) +
+                    " mm): the free DOFs form a mechanism with no stiffness";
       return out;
     }
     scatter_add_rows(assembler, du, u);

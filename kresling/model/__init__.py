@@ -1,0 +1,11 @@
+"""Bar-and-hinge models: nodes, bars, rotational-spring hinges and supports.
+
+:class:`Model` is immutable and validated on construction (bad input raises a ``ValueError``
+that names the element). :func:`panel_topology` turns panels into triangles, bars and hinges
+by MERLIN2's rules.
+"""
+
+from kresling.model.model import BAR_LAWS, SPRING_LAWS, Model
+from kresling.model.topology import Topology, panel_topology
+
+__all__ = ["Model", "Topology", "panel_topology", "BAR_LAWS", "SPRING_LAWS"]

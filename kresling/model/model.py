@@ -1,0 +1,220 @@
+"""The immutable bar-and-hinge :class:`Model`."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from kresling import _core
+
+#: Bar laws by name (MODEL.md): "ogden" is MERLIN2's Ogden law with exponents (5, 1).
+BAR_LAWS = {"linear": 0, "ogden": 1}
+#: Spring laws by name: "enhanced_linear" (MERLIN2's, with limits), "linear",
+#: "super_linear_bend" (M ~ |dtheta|^(4/3)).
+SPRING_LAWS = {"linear": 0, "enhanced_linear": 1, "super_linear_bend": 2}
+
+#: MERLIN2's default limits of the enhanced linear law for fold hinges [rad] (5 and 355 deg).
+FOLD_LIMITS = (np.radians(5.0), np.radians(355.0))
+
+
+def _per_element(name, value, count, dtype=float):
+    array = np.asarray(value, dtype=dtype)
+    if array.ndim == 0:
+        array = np.full(count, array, dtype=dtype)
+    if array.shape != (count,):
+        raise ValueError(f"{name} has shape {array.shape}: must be a scalar or ({count},)")
+    return np.ascontiguousarray(array)
+
+
+def _law_codes(name, value, table, count):
+    values = [value] * count if isinstance(value, str) else list(value)
+    if len(values) != count:
+        raise ValueError(f"{name} has {len(values)} entries: must be a name or {count} names")
+    unknown = sorted({v for v in values if v not in table})
+    if unknown:
+        raise ValueError(f"{name} = {unknown[0]!r} is invalid: must be one of {sorted(table)}")
+    return np.array([table[v] for v in values], dtype=np.int64)
+
+
+class Model:
+    """A bar-and-hinge model (immutable).
+
+    Parameters
+    ----------
+    nodes : array_like, shape (N, 3)
+        Node coordinates of the reference state [mm].
+    bars : array_like of int, shape (B, 2)
+        End nodes of every bar (0-based).
+    hinges : array_like of int, shape (H, 4)
+        ``(a, b, c, d)``: axis nodes ``a -> b`` and wing nodes ``c``, ``d``.
+    bar_modulus : float or array_like, shape (B,)
+        Modulus C0 [N/mm^2]; the axial stiffness is ``C0 * bar_area``.
+    hinge_stiffness : float or array_like, shape (H,)
+        Rotational stiffness per unit length kp [N*mm/rad/mm = N/rad]; 0 for a free hinge.
+    bar_area : float or array_like, shape (B,), default 1
+        Cross-section A [mm^2].
+    bar_rest_length : array_like, shape (B,), optional
+        Rest lengths [mm]; default: the lengths in ``nodes`` (stress-free reference).
+    bar_law : str or sequence of str, default "ogden"
+        One of :data:`BAR_LAWS`.
+    hinge_rest_angle : array_like, shape (H,), optional
+        Rest angles in [0, 2 pi) [rad]; default: the angles in ``nodes``.
+    hinge_length : array_like, shape (H,), optional
+        Length multiplying each spring law [mm]; default: the axis length in ``nodes``.
+    hinge_law : str or sequence of str, default "enhanced_linear"
+        One of :data:`SPRING_LAWS`.
+    hinge_limits : (float, float) or array_like, shape (H, 2), default (5 deg, 355 deg)
+        Limits of the enhanced linear law's linear range [rad].
+    fixed : array_like of bool, shape (N, 3), optional
+        Supported DOFs (u = 0). Default: none.
+
+    Raises
+    ------
+    ValueError
+        For inconsistent shapes, indices out of range, degenerate elements (zero-length bars,
+        a wing on its hinge's axis line), negative stiffness or non-finite values; the
+        message names the element.
+
+    Notes
+    -----
+    DOF ``3 i + k`` is coordinate ``k`` (x, y, z) of node ``i``.
+    """
+
+    def __init__(self, nodes, bars, hinges, *, bar_modulus, hinge_stiffness, bar_area=1.0,
+                 bar_rest_length=None, bar_law="ogden", hinge_rest_angle=None, hinge_length=None,
+                 hinge_law="enhanced_linear", hinge_limits=FOLD_LIMITS, fixed=None):
+        nodes = np.ascontiguousarray(nodes, dtype=float)
+        if nodes.ndim != 2 or nodes.shape[1] != 3:
+            raise ValueError(f"nodes has shape {nodes.shape}: must be (N, 3)")
+        bars = np.ascontiguousarray(np.asarray(bars, dtype=np.int64).reshape(-1, 2))
+        hinges = np.ascontiguousarray(np.asarray(hinges, dtype=np.int64).reshape(-1, 4))
+        nb, nh = len(bars), len(hinges)
+        for name, idx in (("bars", bars), ("hinges", hinges)):
+            if idx.size and (idx.min() < 0 or idx.max() >= len(nodes)):
+                row = int(np.argwhere((idx < 0) | (idx >= len(nodes)))[0, 0])
+                raise ValueError(f"{name}[{row}] = {idx[row].tolist()}: node index out of range "
+                                 f"[0, {len(nodes)})")
+        if bar_rest_length is None:
+            bar_rest_length = np.linalg.norm(nodes[bars[:, 1]] - nodes[bars[:, 0]], axis=1)
+        if hinge_rest_angle is None:
+            hinge_rest_angle = _core.elements.dihedral_angles(nodes, hinges)
+        if hinge_length is None:
+            hinge_length = np.linalg.norm(nodes[hinges[:, 1]] - nodes[hinges[:, 0]], axis=1)
+        limits = np.asarray(hinge_limits, dtype=float)
+        limits = np.broadcast_to(limits, (nh, 2)) if limits.shape == (2,) else limits
+        if limits.shape != (nh, 2):
+            raise ValueError(f"hinge_limits has shape {limits.shape}: must be (2,) or ({nh}, 2)")
+        if fixed is None:
+            fixed = np.zeros((len(nodes), 3), dtype=bool)
+        fixed = np.asarray(fixed, dtype=bool)
+        if fixed.shape != nodes.shape:
+            raise ValueError(f"fixed has shape {fixed.shape}: must be {nodes.shape}")
+
+        self._arrays = {
+            "nodes": nodes,
+            "bars": bars,
+            "bar_area": _per_element("bar_area", bar_area, nb),
+            "bar_rest_length": _per_element("bar_rest_length", bar_rest_length, nb),
+            "bar_law": _law_codes("bar_law", bar_law, BAR_LAWS, nb),
+            "bar_modulus": _per_element("bar_modulus", bar_modulus, nb),
+            "hinges": hinges,
+            "hinge_stiffness": _per_element("hinge_stiffness", hinge_stiffness, nh),
+            "hinge_rest_angle": _per_element("hinge_rest_angle", hinge_rest_angle, nh),
+            "hinge_length": _per_element("hinge_length", hinge_length, nh),
+            "hinge_law": _law_codes("hinge_law", hinge_law, SPRING_LAWS, nh),
+            "hinge_limits": np.ascontiguousarray(limits),
+            "fixed": fixed,
+        }
+        for array in self._arrays.values():
+            array.flags.writeable = False
+        a = self._arrays
+        self._core = _core.model.Model(
+            a["nodes"], a["bars"], a["bar_area"], a["bar_rest_length"], a["bar_law"],
+            a["bar_modulus"], a["hinges"], a["hinge_stiffness"], a["hinge_rest_angle"],
+            a["hinge_length"], a["hinge_law"], a["hinge_limits"][:, 0].copy(),
+            a["hinge_limits"][:, 1].copy(), a["fixed"].astype(np.uint8).ravel())
+
+    @classmethod
+    def from_panels(cls, nodes, panels, *, split="N4B5", duplicate_shared_edges=True,
+                    **properties):
+        """Build a model from panels (see :func:`kresling.model.panel_topology`).
+
+        ``properties`` are the keyword arguments of :class:`Model` (scalars apply to every
+        element; arrays follow the topology's element order, which
+        ``Model.from_panels(...).bars`` / ``.hinges`` show).
+        """
+        from kresling.model.topology import panel_topology
+
+        topo = panel_topology(nodes, panels, split=split,
+                              duplicate_shared_edges=duplicate_shared_edges)
+        return cls(topo.nodes, topo.bars, topo.hinges, **properties)
+
+    def replace(self, **changes) -> "Model":
+        """A copy with some arrays or properties changed, e.g. ``model.replace(fixed=mask)``."""
+        a = dict(self._arrays)
+        kwargs = {
+            "bar_modulus": a["bar_modulus"], "hinge_stiffness": a["hinge_stiffness"],
+            "bar_area": a["bar_area"], "bar_rest_length": a["bar_rest_length"],
+            "bar_law": [_name(BAR_LAWS, c) for c in a["bar_law"]],
+            "hinge_rest_angle": a["hinge_rest_angle"], "hinge_length": a["hinge_length"],
+            "hinge_law": [_name(SPRING_LAWS, c) for c in a["hinge_law"]],
+            "hinge_limits": a["hinge_limits"], "fixed": a["fixed"],
+        }
+        positional = {"nodes": a["nodes"], "bars": a["bars"], "hinges": a["hinges"]}
+        for key, value in changes.items():
+            if key in positional:
+                positional[key] = value
+            elif key in kwargs:
+                kwargs[key] = value
+            else:
+                raise ValueError(f"replace: unknown field {key!r}")
+        return Model(positional["nodes"], positional["bars"], positional["hinges"], **kwargs)
+
+    # -- read-only views -------------------------------------------------------------
+    def __getattr__(self, name):
+        arrays = self.__dict__.get("_arrays", {})
+        if name in arrays:
+            return arrays[name]
+        raise AttributeError(name)
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | set(self._arrays))
+
+    @property
+    def num_nodes(self) -> int:
+        return len(self._arrays["nodes"])
+
+    @property
+    def num_dofs(self) -> int:
+        return 3 * self.num_nodes
+
+    @property
+    def free_dofs(self) -> np.ndarray:
+        """Indices of the DOFs without a support."""
+        return np.flatnonzero(~self._arrays["fixed"].ravel())
+
+    def dof(self, node: int, axis) -> int:
+        """The DOF index of ``node``'s coordinate ``axis`` (0/1/2 or "x"/"y"/"z")."""
+        k = {"x": 0, "y": 1, "z": 2}.get(axis, axis)
+        if k not in (0, 1, 2) or not 0 <= node < self.num_nodes:
+            raise ValueError(f"dof({node!r}, {axis!r}): no such node or axis")
+        return 3 * int(node) + int(k)
+
+    def element_state(self, u=None) -> dict:
+        """Bar strains and axial forces, hinge angles and moments at displacement ``u``.
+
+        Returns
+        -------
+        dict
+            ``bar_strain`` (B,), ``bar_force`` (B,) [N], ``hinge_angle`` (H,) [rad],
+            ``hinge_moment`` (H,) [N*mm].
+        """
+        u = np.zeros(self.num_dofs) if u is None else np.asarray(u, dtype=float).ravel()
+        return {k: np.asarray(v) for k, v in _core.solvers.element_state(self._core, u).items()}
+
+    def __repr__(self):
+        return (f"Model({self.num_nodes} nodes, {len(self.bars)} bars, {len(self.hinges)} hinges, "
+                f"{int(self.fixed.sum())} supported DOFs)")
+
+
+def _name(table, code):
+    return next(k for k, v in table.items() if v == code)

@@ -1,0 +1,11 @@
+"""Nonlinear solvers: displacement control (the thesis's mode), Newton and MGDCM path
+following under force control, and the linearised stiffness. Each path solver returns a
+:class:`PathResult`; a solver that stops early says so (``completed``, ``message``)."""
+
+from kresling.solvers.displacement_control import solve_displacement_control
+from kresling.solvers.force_control import solve_force_control, solve_mgdcm
+from kresling.solvers.linear import condensed_stiffness
+from kresling.solvers.path import PathResult
+
+__all__ = ["PathResult", "solve_displacement_control", "solve_force_control", "solve_mgdcm",
+           "condensed_stiffness"]

@@ -1,0 +1,53 @@
+"""Displacement control as MERLIN2 runs it: the thesis's loading mode."""
+
+from __future__ import annotations
+
+from kresling import _core
+from kresling.solvers._inputs import dof_vector, positive_float, positive_int
+from kresling.solvers.path import PathResult
+
+
+def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_iterations=50,
+                               reject_iterations=25, max_bisections=10, shift=1e-8,
+                               initial=None) -> PathResult:
+    """Impose a displacement in equal increments and follow the equilibrium path.
+
+    Only the non-zero entries of ``prescribed`` are imposed (zero entries stay free, as in
+    MERLIN2). Each increment moves the imposed DOFs, then Newton runs on the free DOFs until
+    the correction's 2-norm is at most ``tolerance``. An increment needing
+    ``reject_iterations`` or more iterations is retried as two halves, recursively, up to
+    ``max_bisections`` times; past that the path ends with ``completed = False``.
+
+    Parameters
+    ----------
+    model : kresling.model.Model
+    prescribed : array_like, shape (3N,) or (N, 3)
+        Total displacement of the imposed DOFs [mm].
+    steps : int
+        Number of equal increments.
+    tolerance : float
+        Newton tolerance on ||du_free||_2 [mm] (MERLIN2: 1e-6).
+    max_iterations, reject_iterations, max_bisections : int
+    shift : float
+        Added to the tangent's diagonal (MERLIN2: 1e-8).
+    initial : array_like, optional
+        Starting displacement (default zero).
+
+    Returns
+    -------
+    PathResult
+        ``constraint_force`` holds, per step, the force at each imposed DOF (``-f_int``).
+
+    Raises
+    ------
+    ValueError
+        For bad input: shapes, NaN, nothing prescribed, a prescribed DOF that is also
+        supported, steps < 1.
+    """
+    d = _core.solvers.displacement_control(
+        model._core, dof_vector(model, "prescribed", prescribed), positive_int("steps", steps),
+        positive_float("tolerance", tolerance), positive_int("max_iterations", max_iterations),
+        positive_int("reject_iterations", reject_iterations),
+        positive_int("max_bisections", max_bisections, minimum=0), float(shift),
+        dof_vector(model, "initial", initial, allow_none=True))
+    return PathResult._from_core(d)

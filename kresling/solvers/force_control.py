@@ -1,0 +1,84 @@
+"""Path following under force control: load-stepped Newton and MGDCM."""
+
+from __future__ import annotations
+
+import math
+
+from kresling import _core
+from kresling.solvers._inputs import dof_vector, positive_float, positive_int
+from kresling.solvers.path import PathResult
+
+
+def solve_force_control(model, forces, steps, *, tolerance=1e-6, max_iterations=50,
+                        max_bisections=10, shift=1e-8, initial=None) -> PathResult:
+    """Newton equilibrium under ``lambda * forces`` for lambda = 1/steps, ..., 1.
+
+    A failed load step is halved up to ``max_bisections`` times. Past a limit point there is
+    no nearby equilibrium: Newton either fails (the path stops, ``completed = False``) or
+    converges to a distant one (a snap-through, visible as a jump in ``displacement``). To
+    follow the path through limit points use :func:`solve_mgdcm`.
+
+    Parameters
+    ----------
+    forces : array_like, shape (3N,) or (N, 3)
+        Reference load [N].
+
+    Returns
+    -------
+    PathResult
+        ``constraint_force``: the support reactions at the supported DOFs.
+    """
+    d = _core.solvers.force_control(
+        model._core, dof_vector(model, "forces", forces), positive_int("steps", steps),
+        positive_float("tolerance", tolerance), positive_int("max_iterations", max_iterations),
+        positive_int("max_bisections", max_bisections, minimum=0), float(shift),
+        dof_vector(model, "initial", initial, allow_none=True))
+    return PathResult._from_core(d)
+
+
+def solve_mgdcm(model, forces, *, initial_load_factor=0.01, max_increments=100,
+                max_load_factor=math.inf, monitor_dof=None, max_displacement=math.inf,
+                max_step_factor=math.inf, tolerance=1e-6, max_iterations=50, shift=1e-8,
+                initial=None) -> PathResult:
+    """Modified generalized displacement control (Leon, Paulino et al. 2011).
+
+    Follows the equilibrium path of ``lambda * forces`` through limit points and
+    snap-backs: the load factor is an unknown, the first iteration of each increment is
+    scaled by the generalized stiffness parameter (its sign flips where the path turns),
+    later iterations stay orthogonal to the first predictor. The step grows by 1.5 after an
+    increment of fewer than 3 iterations and is halved (the increment retried) after one
+    of more than 15.
+
+    Parameters
+    ----------
+    forces : array_like, shape (3N,) or (N, 3)
+        Reference load [N].
+    initial_load_factor : float
+        First load-factor increment (MERLIN2's ``b_lambda``); its sign sets the direction.
+    max_increments : int
+        Accepted increments at most.
+    max_load_factor : float
+        Stop once ``|lambda|`` exceeds it.
+    monitor_dof : int, optional
+        With ``max_displacement``: stop once ``|u[monitor_dof]|`` exceeds it [mm].
+    max_step_factor : float
+        Cap on the step factor's growth, for a finely resolved path (MERLIN2 has none).
+
+    Returns
+    -------
+    PathResult
+        ``completed`` is True when a stopping criterion was met (or, without one, when all
+        increments ran); otherwise ``message`` says why the path ended.
+    """
+    if monitor_dof is None:
+        monitor_dof = -1
+    elif not 0 <= int(monitor_dof) < model.num_dofs:
+        raise ValueError(f"monitor_dof = {monitor_dof!r} is invalid: must be a DOF index in "
+                         f"[0, {model.num_dofs})")
+    d = _core.solvers.mgdcm(
+        model._core, dof_vector(model, "forces", forces), float(initial_load_factor),
+        positive_int("max_increments", max_increments), float(max_load_factor), int(monitor_dof),
+        float(max_displacement), float(max_step_factor), positive_float("tolerance", tolerance),
+        positive_int("max_iterations", max_iterations), float(shift),
+        dof_vector(model, "initial", initial, allow_none=True))
+    return PathResult._from_core(d)

@@ -1,0 +1,82 @@
+"""The result every path solver returns."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class PathResult:
+    """An equilibrium path, one row per accepted increment.
+
+    Attributes
+    ----------
+    load_factor : ndarray, shape (S,)
+        Load factor lambda (force control) or fraction of the prescribed motion.
+    displacement : ndarray, shape (S, 3N)
+        Displacement of every DOF [mm].
+    constraint_dofs : ndarray of int, shape (C,)
+        Displacement control: the imposed DOFs. Force control: the supported DOFs.
+    constraint_force : ndarray, shape (S, C)
+        Displacement control: the force the structure exerts on the actuator at each
+        imposed DOF, ``-f_int`` (MERLIN2's reported force) [N]. Force control: the support
+        reactions ``f_int`` [N].
+    energy_bars, energy_hinges : ndarray, shape (S,)
+        Stored energy by element family [N*mm].
+    iterations : ndarray of int, shape (S,)
+        Newton iterations of each increment.
+    negative_eigenvalues : ndarray of int, shape (S,)
+        Negative eigenvalues of the free tangent (0: stable equilibrium; -1: not known).
+    completed : bool
+        The path reached its end (or its stopping criterion).
+    message : str
+        Why it stopped early ("" when completed).
+    failed_increment : int
+        1-based number of the attempt that failed (0 if none).
+    attempted_increments : int
+        Increments tried, including rejected ones.
+    """
+
+    load_factor: np.ndarray
+    displacement: np.ndarray
+    constraint_dofs: np.ndarray
+    constraint_force: np.ndarray
+    energy_bars: np.ndarray
+    energy_hinges: np.ndarray
+    iterations: np.ndarray
+    negative_eigenvalues: np.ndarray
+    completed: bool
+    message: str
+    failed_increment: int
+    attempted_increments: int
+
+    @classmethod
+    def _from_core(cls, d: dict) -> "PathResult":
+        values = {k: (np.asarray(v) if isinstance(v, (list, np.ndarray)) or hasattr(v, "shape")
+                      else v) for k, v in d.items()}
+        values["constraint_dofs"] = np.asarray(d["constraint_dofs"], dtype=np.int64)
+        for name in ("load_factor", "displacement", "constraint_force", "energy_bars",
+                     "energy_hinges", "iterations", "negative_eigenvalues"):
+            values[name].flags.writeable = False
+        return cls(**values)
+
+    @property
+    def num_steps(self) -> int:
+        return len(self.load_factor)
+
+    @property
+    def energy(self) -> np.ndarray:
+        """Total stored energy per step [N*mm]."""
+        return self.energy_bars + self.energy_hinges
+
+    @property
+    def stable(self) -> np.ndarray:
+        """True where the equilibrium's free tangent is positive definite."""
+        return self.negative_eigenvalues == 0
+
+    def __repr__(self):
+        state = "completed" if self.completed else f"stopped: {self.message}"
+        return (f"PathResult({self.num_steps} steps, {int(self.iterations.sum())} Newton "
+                f"iterations, {state})")
