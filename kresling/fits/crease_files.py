@@ -123,8 +123,8 @@ def fit_crease_file(path, *, confidence: float = 0.95, **options) -> CreaseStiff
     if any(split_header(cell, (names.get("record", "record"), "file")) for cell in header):
         runs, skipped = read_crease_runs(path, **options)
         return fit_crease_runs(runs, confidence=confidence, skipped=skipped, source=str(path))
-    if any(split_header(cell, (names.get("stiffness", "stiffness"), "k", "kf"))
-           for cell in header):
+    if "stiffness" in names or any(split_header(cell, ("stiffness", "k", "kf"))
+                                   for cell in header):
         return read_stiffness_table(path, confidence=confidence, **options)
     raise RecordError(path, line, None, f"not a crease file: expected a 'stiffness' column "
                       f"(table of per-run stiffnesses) or a 'record' column (list of runs); "

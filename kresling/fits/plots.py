@@ -30,7 +30,7 @@ def _new_axes(ax, size):
 
 def _model_curve(model, angle_max: float):
     """(angle, moment) arrays of a model given as a curve or as one K_B."""
-    if np.ndim(model) == 0:
+    if np.isscalar(model):
         angle = np.array([0.0, angle_max])
         return angle, float(model) * angle
     angle, moment = (np.asarray(a, dtype=float) for a in model)

@@ -200,7 +200,8 @@ def read_table(path, fields, *, names=None, units=None, on_invalid: str = "raise
                               else np.array(values, dtype=float) * factors[key])
     table.lines = np.array(lines, dtype=int)
     if len(table) < min_rows:
-        first = next(k for k, (_, s, _) in layout.items() if s.dimension != "text")
+        numeric = [k for k, (_, s, _) in layout.items() if s.dimension != "text"]
+        first = next((k for k in numeric if layout[k][1].required), numeric[0])
         row = len(table) - 1 if len(table) else None
         raise table.error(row, first, f"{len(table)} data row(s); at least {min_rows} needed")
     if table.skipped:

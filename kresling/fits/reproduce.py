@@ -15,13 +15,13 @@ from pathlib import Path
 
 import numpy as np
 
-from kresling.fits.bending import fit_bending, model_stiffness
+from kresling.fits.bending import fit_bending
 from kresling.fits.plots import plot_bending_test, plot_crease_runs
 from kresling.fits.recovery import bending_recovery, crease_recovery
 from kresling.fits.synthetic import synthetic_bending_trials
 from kresling.fits.thesis_tables import (TABLE1_HALF_UNIT, TABLE3_HALF_UNIT,
-                                         largest_sd_under_rounding, merlin2_model_curves,
-                                         table1, table3)
+                                         experiment_vs_model, largest_sd_under_rounding,
+                                         merlin2_model_curves, table1, table3)
 from kresling.geometry import Design
 from kresling.report.section import Check, Section
 
@@ -126,7 +126,8 @@ def _table3_part(section: Section, out_dir: Path, model_curves) -> str:
                   f"(they allow {low:.2f}-{high:.2f}); comparisons here use the recomputed "
                   f"{ratio:.2f}")))
     path = out_dir / "table3_experiment_vs_model.csv"
-    _write_csv(path, _TABLE3_HEADER, [_table3_line(row, model_curves) for row in rows])
+    lines = experiment_vs_model(model_curves)
+    _write_csv(path, lines[0], [line.values() for line in lines])
     section.add_table(path, "Table 3, experiment vs model (N*m/rad): the experimental ratio "
                             "as printed and recomputed from the means (with first-order SD "
                             "and SE), the thesis's model and K_B through the origin of the "
@@ -134,24 +135,6 @@ def _table3_part(section: Section, out_dir: Path, model_curves) -> str:
     odd = [row.label for row in rows if not row.listed_ratio_consistent]
     return (f"Table 3: the experimental ratios printed for {'; '.join(odd)} do not follow "
             f"from the printed means; the comparisons use the ratios of the means.")
-
-
-_TABLE3_HEADER = ("n", "Lc_mm", "lambda", "material", "K1_exp", "K1_exp_sd", "K0_exp",
-                  "K0_exp_sd", "ratio_exp_listed", "ratio_exp_of_means", "ratio_exp_sd",
-                  "ratio_exp_se", "listed_ratio_consistent", "K1_model_thesis",
-                  "K0_model_thesis", "ratio_model_thesis", "K1_model_curve",
-                  "K0_model_curve", "ratio_model_curve")
-
-
-def _table3_line(row, model_curves) -> tuple:
-    curve = model_curves.get((row.n, row.Lc, row.lam)) if row.material == "paper" else None
-    K1, K0 = ((model_stiffness(*curve["extended"]), model_stiffness(*curve["contracted"]))
-              if curve else (math.nan, math.nan))
-    ratio = row.ratio_of_means
-    return (row.n, row.Lc, row.lam, row.material, row.extended.mean, row.extended.sd,
-            row.contracted.mean, row.contracted.sd, row.ratio_listed, ratio.value, ratio.sd,
-            ratio.se, row.listed_ratio_consistent, row.model["extended"],
-            row.model["contracted"], row.model["ratio"], K1, K0, K1 / K0)
 
 
 def _recovery_part(section: Section, out_dir: Path, repetitions: int) -> str:

@@ -16,11 +16,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling import data
+from kresling.fits.bending import model_stiffness
 from kresling.fits.crease import CreaseStiffness
 from kresling.fits.crease_files import read_stiffness_table
 from kresling.fits.statistics import Ratio, Summary, ratio_of_means
 
-__all__ = ["table1", "largest_sd_under_rounding", "Table3Row", "table3", "merlin2_model_curves"]
+__all__ = ["table1", "largest_sd_under_rounding", "Table3Row", "table3", "experiment_vs_model",
+           "merlin2_model_curves"]
 
 #: Half a unit of the last digit Tables 1 and 3 print (three and two decimals).
 TABLE1_HALF_UNIT = 0.0005
@@ -134,6 +136,41 @@ def table3() -> list:
                                   raw["material"], extended, contracted, value["ratio_exp"],
                                   ratio_of_means(extended, contracted), rounding, model))
     return rows
+
+
+def experiment_vs_model(model_curves=None) -> list:
+    """Table 3's experiment beside the model, one dict per row (K_B in N*m/rad).
+
+    Keys: the design; the experimental means and SDs; ``ratio_exp_listed`` (printed) and
+    ``ratio_exp_of_means`` (recomputed, with first-order ``_sd`` and ``_se``), and whether the
+    printed one follows from the means; the thesis's model values; and K_B through the
+    origin of ``model_curves`` (NaN for designs it lacks).
+
+    Parameters
+    ----------
+    model_curves : dict, optional
+        ``(n, Lc, lam)`` to ``{"extended": (angle, moment), "contracted": ...}`` (rad, N*m),
+        paper specimens only. Default: :func:`merlin2_model_curves`.
+    """
+    model_curves = merlin2_model_curves() if model_curves is None else model_curves
+    lines = []
+    for row in table3():
+        curve = model_curves.get((row.n, row.Lc, row.lam)) if row.material == "paper" else None
+        K1, K0 = ((model_stiffness(*curve["extended"]), model_stiffness(*curve["contracted"]))
+                  if curve else (float("nan"), float("nan")))
+        ratio = row.ratio_of_means
+        lines.append({
+            "n": row.n, "Lc_mm": row.Lc, "lambda": row.lam, "material": row.material,
+            "K1_exp": row.extended.mean, "K1_exp_sd": row.extended.sd,
+            "K0_exp": row.contracted.mean, "K0_exp_sd": row.contracted.sd,
+            "ratio_exp_listed": row.ratio_listed, "ratio_exp_of_means": ratio.value,
+            "ratio_exp_sd": ratio.sd, "ratio_exp_se": ratio.se,
+            "listed_ratio_consistent": row.listed_ratio_consistent,
+            "K1_model_thesis": row.model["extended"], "K0_model_thesis": row.model["contracted"],
+            "ratio_model_thesis": row.model["ratio"], "K1_model_curve": K1,
+            "K0_model_curve": K0, "ratio_model_curve": K1 / K0,
+        })
+    return lines
 
 
 def merlin2_model_curves() -> dict:
