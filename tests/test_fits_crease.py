@@ -189,3 +189,13 @@ def test_a_file_of_neither_shape(tmp_path):
     with pytest.raises(RecordError, match="not a crease file") as error:
         fit_crease_file(path)
     assert error.value.line == 1
+
+
+def test_a_falling_force_is_kept_but_warned_about(caplog):
+    # Compression recorded as negative turns k negative: not silently "fixed", but said.
+    run = exact_run()
+    flipped = CreaseRun(**{**run.__dict__, "force": -run.force})
+    with caplog.at_level("WARNING", logger="kresling.fits.crease"):
+        fit = fit_crease_run(flipped)
+    assert fit.k == pytest.approx(-0.047, rel=1e-3)
+    assert "check the sign" in caplog.text

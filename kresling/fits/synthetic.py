@@ -38,40 +38,44 @@ import numpy as np
 from kresling.fits.bending import BendingTrial, state_name
 from kresling.fits.crease import CreaseRun
 
-__all__ = ["CreaseRig", "crease_force", "synthetic_crease_runs", "BendingRig",
+__all__ = ["MachineRig", "CreaseRig", "crease_force", "synthetic_crease_runs", "BendingRig",
            "bending_moment", "synthetic_bending_trials"]
 
 
-def _sample_times(travel, speed, sample_rate) -> np.ndarray:
-    """Times (s) at which the machine samples a run of ``travel`` mm at ``speed`` mm/s."""
-    count = int(round(travel / speed * sample_rate)) + 1
-    return np.arange(count) / sample_rate
+@dataclass(frozen=True)
+class MachineRig:
+    """A displacement-controlled test: ``travel`` mm at ``speed`` mm/s sampled at
+    ``sample_rate`` Hz (the thesis: 5 mm at 0.1 mm/s), with the force (N) and displacement
+    (mm) noise of the testing machine, one SD per sample."""
+
+    travel: float = 5.0
+    speed: float = 0.1
+    sample_rate: float = 10.0
+    force_sd: float = 0.005
+    displacement_sd: float = 0.001
+
+    def times(self) -> np.ndarray:
+        """Sample times of one record, s, shape (m,)."""
+        count = int(round(self.travel / self.speed * self.sample_rate)) + 1
+        return np.arange(count) / self.sample_rate
 
 
 @dataclass(frozen=True)
-class CreaseRig:
+class CreaseRig(MachineRig):
     """The crease test set-up of section 3.2 and its noise (lengths mm, forces N, angles
-    rad, time s). Defaults: the thesis's samples (two 152.4 mm x 44.5 mm facets, crease
-    along the long side), Table 1's range of Lp, 5 mm at 0.1 mm/s."""
+    rad). Defaults: the thesis's samples (two 152.4 mm x 44.5 mm facets, crease along the
+    long side), Table 1's range of Lp, and the noise model of the module docstring."""
 
     W: float = 152.4
     facet_depth: float = 44.5
     Lp_range: tuple = (29.8, 35.8)
     beta1_range: tuple = (math.radians(30.0), math.radians(40.0))
     preload_range: tuple = (0.005, 0.02)
-    travel: float = 5.0
-    speed: float = 0.1
-    sample_rate: float = 10.0
     px_per_mm: float = 15.0
     marker_distance: float = 40.0
     force_sd: float = 0.002
-    displacement_sd: float = 0.001
     marker_sd: float = 1.0
     Lp_sd: float = 0.25
-
-    def times(self) -> np.ndarray:
-        """Sample times of one record, s, shape (m,)."""
-        return _sample_times(self.travel, self.speed, self.sample_rate)
 
 
 def crease_force(y, kf, W, d, beta1, preload=0.0):
@@ -144,21 +148,12 @@ def synthetic_crease_runs(kf: float, rng: np.random.Generator, *, samples: int =
 
 
 @dataclass(frozen=True)
-class BendingRig:
-    """The bending test of section 3.3 (5 mm at 0.1 mm/s) and its noise, with the
-    residual-stress rise of the contracted state (see the module docstring)."""
+class BendingRig(MachineRig):
+    """The bending test of section 3.3 and its noise, with the residual-stress rise of the
+    contracted state (see the module docstring): ``rise_angle`` and ``rise_scale`` in rad."""
 
-    travel: float = 5.0
-    speed: float = 0.1
-    sample_rate: float = 10.0
-    force_sd: float = 0.005
-    displacement_sd: float = 0.001
     rise_angle: float = 0.02
     rise_scale: float = 0.005
-
-    def times(self) -> np.ndarray:
-        """Sample times of one record, s, shape (m,)."""
-        return _sample_times(self.travel, self.speed, self.sample_rate)
 
 
 def bending_moment(angle, K, residual_moment=0.0, rise_scale=0.005):
