@@ -76,6 +76,7 @@ def test_configurable_column_names_and_units(tmp_path, capsys):
     (["crease", "MISSING.csv"], "No such file"),
     (["crease", TABLE1, "--column", "stiffness=K_x"], "no column named 'K_x'"),
     (["bending", BENDING[0], "--module-length", "-5"], "must be > 0"),
+    (["crease", TABLE1, "--negate", "force"], "negate apply to the records"),
 ])
 def test_errors_are_one_line_with_status_2(capsys, args, message):
     assert main(["fit", *args, "--json"]) == 2

@@ -125,6 +125,11 @@ def fit_crease_file(path, *, confidence: float = 0.95, **options) -> CreaseStiff
         return fit_crease_runs(runs, confidence=confidence, skipped=skipped, source=str(path))
     if "stiffness" in names or any(split_header(cell, ("stiffness", "k", "kf"))
                                    for cell in header):
+        for_records = sorted(k for k in ("record_names", "record_units", "negate")
+                             if options.pop(k, None))
+        if for_records:
+            raise ValueError(f"{path}: {', '.join(for_records)} apply to the records of a "
+                             "list of runs, and this is a table of stiffnesses")
         return read_stiffness_table(path, confidence=confidence, **options)
     raise RecordError(path, line, None, f"not a crease file: expected a 'stiffness' column "
                       f"(table of per-run stiffnesses) or a 'record' column (list of runs); "

@@ -184,10 +184,7 @@ def read_table(path, fields, *, names=None, units=None, on_invalid: str = "raise
     if on_invalid not in ("raise", "skip"):
         raise ValueError(f"on_invalid = {on_invalid!r} is invalid: must be 'raise' or 'skip'")
     path = Path(path)
-    text_lines = path.read_text(encoding="utf-8-sig").splitlines()
-    header_index, metadata = _preamble(text_lines, path)
-    delimiter = _delimiter(text_lines[header_index])
-    header = next(csv.reader([text_lines[header_index]], delimiter=delimiter))
+    text_lines, header_index, metadata, delimiter, header = _load(path)
     layout = _match_columns(header, fields, names or {}, path, header_index + 1)
     factors = _unit_factors(layout, units or {}, negate, header, path, header_index + 1)
     table = Table(str(path), {}, {k: header[i] for k, (i, _, _) in layout.items()},
@@ -211,11 +208,19 @@ def read_table(path, fields, *, names=None, units=None, on_invalid: str = "raise
 
 
 def read_header(path) -> tuple[int, list]:
-    """Line number (1-based) and cells of a CSV file's header, without reading its rows."""
-    path = Path(path)
+    """Line number (1-based) and cells of a CSV file's header, without parsing its rows."""
+    _, index, _, _, header = _load(Path(path))
+    return index + 1, header
+
+
+def _load(path: Path):
+    """The file's lines, the header's index, the metadata above it, the delimiter and the
+    header's cells. A byte-order mark (Excel's UTF-8 export) is dropped."""
     text_lines = path.read_text(encoding="utf-8-sig").splitlines()
-    index, _ = _preamble(text_lines, path)
-    return index + 1, next(csv.reader([text_lines[index]], delimiter=_delimiter(text_lines[index])))
+    index, metadata = _preamble(text_lines, path)
+    delimiter = _delimiter(text_lines[index])
+    return text_lines, index, metadata, delimiter, next(csv.reader([text_lines[index]],
+                                                                   delimiter=delimiter))
 
 
 def _preamble(text_lines, path):
