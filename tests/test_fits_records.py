@@ -128,3 +128,10 @@ def test_metadata_without_unit_is_an_error(tmp_path):
 def test_normalize_unit_keeps_case():
     assert normalize_unit(" N_per_rad ") == "N/rad"
     assert normalize_unit("mN") != normalize_unit("MN")
+
+
+def test_latin1_exports_with_micro_sign(tmp_path):
+    path = tmp_path / "latin1.csv"
+    path.write_bytes("Disp (µm),Load (N)\n0,0.1\n500,0.2\n".encode("latin-1"))
+    table = read_machine_record(path)
+    np.testing.assert_allclose(table.columns["displacement"], [0.0, 0.5])

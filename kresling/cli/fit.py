@@ -118,9 +118,11 @@ def run_bending(args) -> int:
     print()
     for state, summary in result.summaries.items():
         _print_summary(f"K_B {state} [N*m/rad]", summary)
-    if result.ratio:
+    if result.ratio and result.summaries["contracted"].n > 1 < result.summaries["extended"].n:
         print(f"K_B ratio: {result.ratio.value:.4g} ± {result.ratio.sd:.2g} (SD), "
               f"± {result.ratio.se:.2g} (SE); first-order propagation")
+    elif result.ratio:
+        print(f"K_B ratio: {result.ratio.value:.4g} (one trial in a state: no uncertainty)")
     _print_skipped(report["skipped"])
     return 0
 

@@ -215,8 +215,14 @@ def read_header(path) -> tuple[int, list]:
 
 def _load(path: Path):
     """The file's lines, the header's index, the metadata above it, the delimiter and the
-    header's cells. A byte-order mark (Excel's UTF-8 export) is dropped."""
-    text_lines = path.read_text(encoding="utf-8-sig").splitlines()
+    header's cells. A byte-order mark (Excel's UTF-8 export) is dropped; a file that is not
+    UTF-8 is read as Latin-1, as older Windows machine software writes "µm" or "°"."""
+    try:
+        text = path.read_text(encoding="utf-8-sig")
+    except UnicodeDecodeError:
+        logger.info("%s is not UTF-8; reading it as Latin-1", path)
+        text = path.read_text(encoding="latin-1")
+    text_lines = text.splitlines()
     index, metadata = _preamble(text_lines, path)
     delimiter = _delimiter(text_lines[index])
     return text_lines, index, metadata, delimiter, next(csv.reader([text_lines[index]],
