@@ -1,0 +1,140 @@
+"""``kresling fit``: crease stiffness (``fit crease``) and bending stiffness (``fit bending``)
+from laboratory records (thesis sections 3.2-3.3)."""
+
+from __future__ import annotations
+
+import argparse
+
+from kresling.cli._output import print_json, print_table
+
+
+def _pair(text: str) -> tuple:
+    key, found, value = text.partition("=")
+    if not (found and key.strip() and value.strip()):
+        raise argparse.ArgumentTypeError(f"{text!r} is not KEY=VALUE")
+    return key.strip(), value.strip()
+
+
+def _add_reader_options(parser, what: str) -> None:
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.add_argument("--column", type=_pair, action="append", default=[],
+                        metavar="KEY=HEADER",
+                        help=f"header name of a column of the {what}, e.g. force=Load")
+    parser.add_argument("--unit", type=_pair, action="append", default=[], metavar="KEY=UNIT",
+                        help=f"unit of a column of the {what} whose header has none, "
+                             "e.g. force=lbf")
+    parser.add_argument("--negate", action="append", default=[], metavar="KEY",
+                        help="flip the sign of a record column (compression recorded as "
+                             "negative), e.g. --negate force --negate displacement")
+    parser.add_argument("--skip-invalid", action="store_true",
+                        help="skip (and report) rows with bad cells instead of stopping")
+    parser.add_argument("--confidence", type=float, default=0.95,
+                        help="level of the confidence intervals (default 0.95)")
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "fit", help="crease and bending stiffness from laboratory records",
+        description="Fit the thesis's experimental quantities to laboratory records.")
+    commands = parser.add_subparsers(dest="what", metavar="WHAT")
+    commands.required = True
+    crease = commands.add_parser(
+        "crease", help="crease torsional stiffness per unit length (eqns 17-19), N/rad",
+        description="Summarize a table of per-run crease stiffnesses shaped like the thesis's "
+                    "Table 1 (columns sample, run, stiffness_N_per_rad), or fit a list of "
+                    "runs (columns sample, run, record, Lp_mm, W_mm and the marker pixels "
+                    "vertex_x1_px ... lower_y2_px) whose records are testing-machine exports.")
+    crease.add_argument("table", metavar="TABLE.csv")
+    _add_reader_options(crease, "table")
+    crease.add_argument("--record-column", type=_pair, action="append", default=[],
+                        metavar="KEY=HEADER", help="header name of a machine-record column")
+    crease.add_argument("--record-unit", type=_pair, action="append", default=[],
+                        metavar="KEY=UNIT", help="unit of a machine-record column")
+    crease.set_defaults(func=run_crease)
+    bending = commands.add_parser(
+        "bending", help="bending stiffness K_B per state and the K_B ratio (eqns 20-23)",
+        description="Fit K_B (N*m/rad) to bending-test records, one per trial, each a "
+                    "testing-machine export with '# state:' and '# module_length:' lines "
+                    "(or --state / --module-length).")
+    bending.add_argument("records", nargs="+", metavar="RECORD.csv")
+    _add_reader_options(bending, "records")
+    bending.add_argument("--state", choices=("extended", "contracted", "1", "0"),
+                         help="state of every record (overrides the files)")
+    bending.add_argument("--module-length", type=float, metavar="MM",
+                         help="module length Lm of every record, mm (overrides the files)")
+    bending.add_argument("--method", choices=("intercept", "origin"), default="intercept",
+                         help="least-squares line with intercept (default, as a lab fit) or "
+                              "through the origin (as the thesis's model code)")
+    bending.add_argument("--offset", type=float, default=0.03, metavar="RAD",
+                         help="contracted-state fits use angles >= this (default 0.03)")
+    bending.set_defaults(func=run_bending)
+
+
+def _reader_options(args) -> dict:
+    return {"names": dict(args.column), "units": dict(args.unit),
+            "on_invalid": "skip" if args.skip_invalid else "raise"}
+
+
+def run_crease(args) -> int:
+    from kresling.fits.crease_files import fit_crease_file
+
+    options = _reader_options(args)
+    if args.record_column or args.record_unit or args.negate:
+        options.update(record_names=dict(args.record_column),
+                       record_units=dict(args.record_unit), negate=tuple(args.negate))
+    result = fit_crease_file(args.table, confidence=args.confidence, **options)
+    report = result.as_dict()
+    if args.json:
+        print_json(report)
+        return 0
+    keys = [k for k in ("sample", "run", "k", "F1", "F2", "beta1", "beta2", "d")
+            if k in report["runs"][0]]
+    print_table([[run[k] for k in keys] for run in report["runs"]], keys)
+    print()
+    _print_summary("k [N/rad], all runs", result.overall)
+    if result.between_samples:
+        _print_summary("k [N/rad], sample means", result.between_samples)
+    flagged = ", ".join(f"sample {o['sample']} run {o['run']}" for o in report["outliers"])
+    print(f"outliers, {report['outlier_rule']}: {flagged or 'none'}")
+    _print_skipped(report["skipped"])
+    return 0
+
+
+def run_bending(args) -> int:
+    from kresling.fits.bending_files import fit_bending_files
+
+    result = fit_bending_files(args.records, state=args.state,
+                               module_length=args.module_length, negate=tuple(args.negate),
+                               method=args.method, contracted_offset=args.offset,
+                               confidence=args.confidence, **_reader_options(args))
+    report = result.as_dict()
+    if args.json:
+        print_json(report)
+        return 0
+    print_table([[f.source, f.state, f.K, f.intercept, f.offset, f.points]
+                 for fits in result.fits.values() for f in fits],
+                ("record", "state", "K_B [N*m/rad]", "intercept [N*m]", "offset [rad]",
+                 "points"))
+    print()
+    for state, summary in result.summaries.items():
+        _print_summary(f"K_B {state} [N*m/rad]", summary)
+    if result.ratio and result.summaries["contracted"].n > 1 < result.summaries["extended"].n:
+        print(f"K_B ratio: {result.ratio.value:.4g} ± {result.ratio.sd:.2g} (SD), "
+              f"± {result.ratio.se:.2g} (SE); first-order propagation")
+    elif result.ratio:
+        print(f"K_B ratio: {result.ratio.value:.4g} (one trial in a state: no uncertainty)")
+    _print_skipped(report["skipped"])
+    return 0
+
+
+def _print_summary(name: str, summary) -> None:
+    spread = "" if summary.n < 2 else (
+        f" ± {summary.sd:.4g} (SD), {summary.confidence:.0%} CI "
+        f"[{summary.ci[0]:.4g}, {summary.ci[1]:.4g}] (Student t)")
+    print(f"{name}: {summary.mean:.4g}{spread}, n = {summary.n}")
+
+
+def _print_skipped(skipped: dict) -> None:
+    print(f"skipped lines: {skipped['count']}")
+    for row in skipped["rows"]:
+        print(f"  {row}")
