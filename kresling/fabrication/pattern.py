@@ -146,7 +146,7 @@ class CreasePattern:
 
 
 def crease_pattern(design: Design, *, tab_height: float = 8.0, closing_tab_width: float = 6.0,
-                   tab_clearance: float = 1.0, spacing: float = 5.0) -> CreasePattern:
+                   tab_clearance: float = 1.0, polygon_spacing: float = 5.0) -> CreasePattern:
     """Lay out the flat crease pattern of a generalized Kresling cell.
 
     Parameters
@@ -163,7 +163,7 @@ def crease_pattern(design: Design, *, tab_height: float = 8.0, closing_tab_width
     tab_clearance : float, default 1.0
         How far the closing tab's free corners stay from the other creases of the facet it is
         glued to [mm], so it stiffens neither (more than half the laminate's 1 mm valley gap).
-    spacing : float, default 5.0
+    polygon_spacing : float, default 5.0
         Gap between the tab tips and the base polygon in the layout [mm].
 
     Returns
@@ -177,7 +177,7 @@ def crease_pattern(design: Design, *, tab_height: float = 8.0, closing_tab_width
         polygon, or the closing tab does not fit in the facet it is glued to.
     """
     positive("tab_height", tab_height), positive("closing_tab_width", closing_tab_width)
-    non_negative("tab_clearance", tab_clearance), non_negative("spacing", spacing)
+    non_negative("tab_clearance", tab_clearance), non_negative("polygon_spacing", polygon_spacing)
     n, P, R = design.n, design.P, design.R
     apothem = R * math.cos(math.pi / n)
     if tab_height >= apothem:
@@ -191,7 +191,7 @@ def crease_pattern(design: Design, *, tab_height: float = 8.0, closing_tab_width
     tips = np.column_stack([P * (np.arange(n) + 0.5), np.full(n, -tab_height)])
     closing = _closing_tab_corners(bottom[n], top[n], top[n] + [P, 0.0], closing_tab_width,
                                    tab_clearance)
-    polygon = _base_polygon(n, R, centre_x=0.5 * n * P, top_y=-tab_height - spacing)
+    polygon = _base_polygon(n, R, centre_x=0.5 * n * P, top_y=-tab_height - polygon_spacing)
     points = np.vstack([bottom, top, tips, closing, polygon])
 
     B, T = np.arange(n + 1), np.arange(n + 1, 2 * n + 2)
