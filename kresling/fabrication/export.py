@@ -8,6 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from kresling.fabrication.dxf import write_dxf
+from kresling.fabrication.layers import CutSheet
 from kresling.fabrication.fold import fold_angles, fold_document, write_fold
 from kresling.fabrication.pattern import CreasePattern, crease_pattern
 from kresling.fabrication.processes import make_process
@@ -15,7 +16,7 @@ from kresling.fabrication.sheet import cut_sheet, module_sheet, split_parameters
 from kresling.fabrication.svg import render_png, svg_document, write_svg
 from kresling.geometry import STATES, Design, state_index
 
-__all__ = ["FORMATS", "pattern_fold_document", "write_pattern"]
+__all__ = ["FORMATS", "file_format", "pattern_fold_document", "write_sheet", "write_pattern"]
 
 logger = logging.getLogger(__name__)
 
@@ -71,6 +72,35 @@ def pattern_fold_document(pattern: CreasePattern, process="laminate", *,
                "kresling:design": {k: float(v) for k, v in d.quantities().items()}})
 
 
+def file_format(path) -> str:
+    """The lower-case extension of ``path`` if it is one of :data:`FORMATS`.
+
+    Raises
+    ------
+    ValueError
+        Naming the extension and the allowed ones.
+    """
+    suffix = Path(path).suffix.lower()
+    if suffix not in FORMATS:
+        raise ValueError(f"file extension {Path(path).suffix!r} of {str(path)!r} is invalid: "
+                         f"must be one of {sorted(FORMATS)}")
+    return suffix
+
+
+def write_sheet(sheet: CutSheet, path, *, dpi: float = 96.0) -> Path:
+    """Write a cut sheet as .svg, .dxf or .png (a preview at ``dpi``), by extension."""
+    suffix = file_format(path)
+    if suffix == ".svg":
+        return write_svg(sheet, path)
+    if suffix == ".dxf":
+        return write_dxf(sheet, path)
+    if suffix == ".png":
+        # A preview: lines thick enough to see at screen resolution.
+        return render_png(svg_document(sheet, stroke_width=0.35), path, dpi=dpi)
+    raise ValueError(f"file extension {suffix!r} is invalid for a cut sheet: must be one of "
+                     "['.dxf', '.png', '.svg'] (a .fold file holds a crease pattern)")
+
+
 def write_pattern(path, design: Design, process="laminate", *, module: bool = False,
                   dpi: float = 96.0, **parameters) -> Path:
     """Write the fabrication file of a design; the format comes from the file's extension.
@@ -100,23 +130,13 @@ def write_pattern(path, design: Design, process="laminate", *, module: bool = Fa
     ImportError
         If the ``fabrication`` extra is missing (DXF needs ezdxf, PNG needs cairosvg).
     """
-    path = Path(path)
-    suffix = path.suffix.lower()
-    if suffix not in FORMATS:
-        raise ValueError(f"file extension {path.suffix!r} of {str(path)!r} is invalid: must be "
-                         f"one of {sorted(FORMATS)}")
-    if suffix == ".fold":
-        if module:
-            raise ValueError("module = True is invalid with .fold: a FOLD file describes one "
-                             "cell; write the module's cut sheet as .svg, .dxf or .png")
-        pattern_parameters, process_parameters = split_parameters(parameters)
-        process = make_process(process, **process_parameters)
-        pattern = crease_pattern(design, **pattern_parameters)
-        return write_fold(path, pattern_fold_document(pattern, process))
-    sheet = (module_sheet if module else cut_sheet)(design, process, **parameters)
-    if suffix == ".svg":
-        return write_svg(sheet, path)
-    if suffix == ".dxf":
-        return write_dxf(sheet, path)
-    # A preview: lines thick enough to see at screen resolution.
-    return render_png(svg_document(sheet, stroke_width=0.35), path, dpi=dpi)
+    if file_format(path) != ".fold":
+        sheet = (module_sheet if module else cut_sheet)(design, process, **parameters)
+        return write_sheet(sheet, path, dpi=dpi)
+    if module:
+        raise ValueError("module = True is invalid with .fold: a FOLD file describes one "
+                         "cell; write the module's cut sheet as .svg, .dxf or .png")
+    pattern_parameters, process_parameters = split_parameters(parameters)
+    process = make_process(process, **process_parameters)
+    pattern = crease_pattern(design, **pattern_parameters)
+    return write_fold(path, pattern_fold_document(pattern, process))

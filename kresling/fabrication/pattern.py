@@ -311,10 +311,14 @@ def _mirrored(pattern: CreasePattern) -> CreasePattern:
 def _check_no_overlap(pattern: CreasePattern, tolerance: float = 1e-6) -> None:
     """Faces may touch along edges and corners, never overlap (all faces are convex)."""
     polygons = [pattern.points[list(face)] for face in pattern.faces]
-    for a in range(len(polygons)):
-        for b in range(a + 1, len(polygons)):
-            if convex_overlap(polygons[a], polygons[b]) > tolerance:
-                raise ValueError(
-                    f"{pattern.design!r} cannot be laid flat: {pattern.face_name(a)} overlaps "
-                    f"{pattern.face_name(b)} (tab_height = {pattern.tab_height:g} mm, "
-                    f"closing_tab_width = {pattern.closing_tab_width:g} mm)")
+    low = np.array([p.min(axis=0) for p in polygons])
+    high = np.array([p.max(axis=0) for p in polygons])
+    # Only faces whose bounding boxes overlap need the exact test: O(faces) pairs, not O(faces^2).
+    boxes_meet = np.all(np.minimum(high[:, None], high[None]) - np.maximum(low[:, None], low[None])
+                        > tolerance, axis=2)
+    for a, b in zip(*np.nonzero(np.triu(boxes_meet, k=1))):
+        if convex_overlap(polygons[a], polygons[b]) > tolerance:
+            raise ValueError(
+                f"{pattern.design!r} cannot be laid flat: {pattern.face_name(a)} overlaps "
+                f"{pattern.face_name(b)} (tab_height = {pattern.tab_height:g} mm, "
+                f"closing_tab_width = {pattern.closing_tab_width:g} mm)")

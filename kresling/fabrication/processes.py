@@ -107,7 +107,8 @@ class Paper:
         pieces = (("cell", outline), ("base polygon", polygon)) + tuple(
             (f"reinforcement panel {k}", panel) for k, panel in enumerate(panels))
         notes = ("drawn from the outside of the cell: fold with the face up on the cutter outside",
-                 "glue each reinforcement panel, cutter-side down, inside the facet below it",
+                 "reinforcement panels: turn them over with the strip and glue each inside the "
+                 "facet it was cut above",
                  "glue the closing tab inside facet 0, then the tabs onto the base polygon")
         return CutSheet(_title(pattern, self), layers, pieces, notes)
 
