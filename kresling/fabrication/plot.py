@@ -68,6 +68,7 @@ def plot_folded(pattern: CreasePattern, state, ax=None, *, alpha: float = 0.3):
     Axes3D
     """
     import matplotlib.pyplot as plt
+    from matplotlib.ticker import MaxNLocator
     from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
     if ax is None:
@@ -86,4 +87,5 @@ def plot_folded(pattern: CreasePattern, state, ax=None, *, alpha: float = 0.3):
     name = "extended" if state_index(state) == 1 else "contracted"
     ax.set_title(f"n={d.n}, lam={d.lam:g}, Lc={d.Lc:g} mm, {d.chirality:+d}: {name}", fontsize=9)
     ax.set_xlabel("x [mm]"), ax.set_ylabel("y [mm]"), ax.set_zlabel("z [mm]")
+    ax.zaxis.set_major_locator(MaxNLocator(3))   # a flat contracted cell has little room
     return ax
