@@ -131,3 +131,12 @@ def test_fold_document_is_general_and_checks_its_input():
         fold_document(square, edges, "BBBBV", [[0, 1, 2], [0, 2, 7]])
     with pytest.raises(ValueError, match="must be \\(4, 3\\)"):
         fold_document(square, edges, "BBBBV", faces, frames=[{"vertices_coords": square}])
+
+
+def test_flat_folded_traditional_kresling_keeps_the_assignment_signs(tmp_path):
+    """Lc = 0 folds the contracted cell flat: fold angles of +-180 degrees, signed by kind."""
+    doc = _read(write_pattern(tmp_path / "flat.fold", kresling.Design(6, 0.8, 0.0), "laminate"))
+    contracted = np.array(doc["file_frames"][0]["edges_foldAngle"])
+    assignments = np.array(doc["edges_assignment"])
+    np.testing.assert_allclose(contracted[assignments == "V"], 180.0, atol=1e-6)
+    np.testing.assert_allclose(contracted[assignments == "M"], -180.0, atol=1e-6)

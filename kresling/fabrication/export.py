@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-import logging
+import math
 from pathlib import Path
 
 import numpy as np
@@ -17,8 +17,6 @@ from kresling.fabrication.svg import render_png, svg_document, write_svg
 from kresling.geometry import STATES, Design, state_index
 
 __all__ = ["FORMATS", "file_format", "pattern_fold_document", "write_sheet", "write_pattern"]
-
-logger = logging.getLogger(__name__)
 
 #: File extensions :func:`write_pattern` understands and what each writes.
 FORMATS = {
@@ -54,10 +52,14 @@ def pattern_fold_document(pattern: CreasePattern, process="laminate", *,
     process = make_process(process)
     key = state_index(key_state)
     assignments = [process.fold_assignments[kind] for kind in pattern.edge_kinds]
+    # Folded flat (Lc = 0, contracted) a crease's sign is not in the geometry: the kind gives it.
+    sign = np.array([1.0 if kind == "valley" else -1.0 for kind in pattern.edge_kinds])
     frames, angles = [], {}
     for name, code in STATES.items():
         coordinates = pattern.folded(code)
         angles[code] = np.degrees(fold_angles(pattern.faces, pattern.edges, coordinates))
+        flat_folded = np.abs(angles[code]) > 180.0 - 1e-7
+        angles[code][flat_folded] = 180.0 * sign[flat_folded]
         frames.append({"title": name, "vertices_coords": coordinates,
                        "edges_foldAngle": angles[code]})
     d = pattern.design
@@ -69,7 +71,9 @@ def pattern_fold_document(pattern: CreasePattern, process="laminate", *,
                f"{'extended' if key else 'contracted'}"),
         extra={"kresling:edges_crease": list(pattern.edge_kinds),
                "kresling:faces_kind": list(pattern.face_kinds),
-               "kresling:design": {k: float(v) for k, v in d.quantities().items()}})
+               # JSON has no inf: Psi_ratio of a flat-folding design (Lc = 0) becomes null.
+               "kresling:design": {k: float(v) if math.isfinite(v) else None
+                                   for k, v in d.quantities().items()}})
 
 
 def file_format(path) -> str:

@@ -38,8 +38,10 @@ def fold_angles(faces, edges, coordinates) -> np.ndarray:
     Returns
     -------
     ndarray, shape (E,)
-        Fold angle [rad] in (-pi, pi]: pi minus the dihedral angle, positive for a valley
-        (the faces' normal sides turn towards each other), 0 for an edge of one face.
+        Fold angle [rad] in [-pi, pi]: pi minus the dihedral angle, positive for a valley
+        (the faces' normal sides turn towards each other), 0 for an edge of one face. Where
+        two faces are folded flat onto each other the geometry cannot tell valley from
+        mountain and the sign is arbitrary; the caller's assignment decides it.
     """
     coordinates = np.asarray(coordinates, dtype=float)
     left_of = {}                       # directed edge (u, v) -> the face on its left

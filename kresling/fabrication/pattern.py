@@ -176,8 +176,10 @@ def crease_pattern(design: Design, *, tab_height: float = 8.0, closing_tab_width
         If a parameter is not a finite positive number, the tabs would overlap on the base
         polygon, or the closing tab does not fit in the facet it is glued to.
     """
-    positive("tab_height", tab_height), positive("closing_tab_width", closing_tab_width)
-    non_negative("tab_clearance", tab_clearance), non_negative("polygon_spacing", polygon_spacing)
+    positive("tab_height", tab_height)
+    positive("closing_tab_width", closing_tab_width)
+    non_negative("tab_clearance", tab_clearance)
+    non_negative("polygon_spacing", polygon_spacing)
     n, P, R = design.n, design.P, design.R
     apothem = R * math.cos(math.pi / n)
     if tab_height >= apothem:

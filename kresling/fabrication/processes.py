@@ -13,7 +13,6 @@ it is silent the docstring says so and why the default was chosen.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, fields
 from typing import ClassVar
 
@@ -71,9 +70,10 @@ class Paper:
                                         "seam": "M", "boundary": "B"}
 
     def __post_init__(self):
-        positive("dash_length", self.dash_length), positive("tie_length", self.tie_length)
-        non_negative("mountain_bridge", self.mountain_bridge)
-        positive("panel_inset", self.panel_inset), non_negative("panel_spacing", self.panel_spacing)
+        for name in ("dash_length", "tie_length", "panel_inset"):
+            positive(name, getattr(self, name))
+        for name in ("mountain_bridge", "panel_spacing"):
+            non_negative(name, getattr(self, name))
         if non_negative("kerf", self.kerf) >= self.dash_length:
             raise ValueError(f"kerf = {self.kerf!r} is invalid for paper: must be < dash_length "
                              f"= {self.dash_length!r} mm (each dash is shortened by the kerf)")
@@ -154,7 +154,8 @@ class Laminate:
                                         "seam": "M", "boundary": "B"}
 
     def __post_init__(self):
-        positive("gap_width", self.gap_width), positive("bridge_width", self.bridge_width)
+        positive("gap_width", self.gap_width)
+        positive("bridge_width", self.bridge_width)
         if non_negative("kerf", self.kerf) >= self.gap_width:
             raise ValueError(f"kerf = {self.kerf!r} is invalid for the laminate: must be < "
                              f"gap_width = {self.gap_width!r} mm")

@@ -19,7 +19,7 @@ from kresling.fabrication.fold import fold_angles, write_fold
 from kresling.fabrication.pattern import CreasePattern, crease_pattern
 from kresling.fabrication.processes import Laminate, Paper
 from kresling.fabrication.sheet import module_sheet
-from kresling.fabrication.svg import svg_document, write_svg
+from kresling.fabrication.svg import write_svg
 from kresling.geometry import STATES, Design
 from kresling.report.section import Check, Section
 
