@@ -7,7 +7,8 @@ PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
 BUILD_DIR := build/py
-APT_PACKAGES := g++ make libeigen3-dev libsuitesparse-dev libgtest-dev
+# libcairo2: cairosvg (the fabrication extra) renders the cut files' PNG previews with it.
+APT_PACKAGES := g++ make libeigen3-dev libsuitesparse-dev libgtest-dev libcairo2
 # What the compiled extension depends on: any change reinstalls it (incrementally).
 CORE_SOURCES := CMakeLists.txt pyproject.toml $(shell find cmake cpp -type f 2>/dev/null)
 

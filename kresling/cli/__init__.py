@@ -2,8 +2,9 @@
 
 Each subcommand lives in its own module of this package and exposes
 ``register(subparsers)``, which adds its parser and sets ``func(args) -> int``.
-Bad input (a ``ValueError`` from the library) prints one line on stderr and exits 2;
-it never shows a traceback.
+Bad input (a ``ValueError`` from the library) prints one line on stderr and exits 2; a
+missing optional dependency (``ImportError``, naming the extra) exits 3. Neither shows a
+traceback.
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ import os
 import sys
 
 # Subcommand modules, in the order ``kresling --help`` lists them.
-_COMMANDS = ("design", "fit")
+_COMMANDS = ("design", "pattern", "fit")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -42,6 +43,10 @@ def main(argv=None) -> int:
     except (ValueError, FileNotFoundError) as error:
         print(f"kresling {args.command}: error: {error}", file=sys.stderr)
         return 2
+    except ImportError as error:
+        # A missing optional extra: the message names what to install.
+        print(f"kresling {args.command}: error: {error}", file=sys.stderr)
+        return 3
     except KeyboardInterrupt:
         print(f"kresling {args.command}: interrupted", file=sys.stderr)
         return 130

@@ -1,0 +1,79 @@
+"""``kresling pattern``: the cut file (SVG, DXF), crease pattern (FOLD) or preview (PNG) of a
+cell or a two-cell module."""
+
+from __future__ import annotations
+
+from kresling.cli._output import print_json
+from kresling.cli.design import add_design_arguments, design_from_args
+
+# Optional parameters: (option, destination, help). Only those given reach the library, so
+# its defaults (documented with their sources) stay in one place.
+_PARAMETERS = (
+    ("--tab-height", "tab_height", "height of the triangular tabs [mm] (default 8)"),
+    ("--closing-tab-width", "closing_tab_width", "width of the closing tab [mm] (default 6)"),
+    ("--tab-clearance", "tab_clearance", "closing tab clearance from creases [mm] (default 1)"),
+    ("--polygon-spacing", "polygon_spacing", "gap tabs to base polygon [mm] (default 5)"),
+    ("--kerf", "kerf", "tool kerf [mm] (default 0, drag knife)"),
+    ("--gap-width", "gap_width", "laminate: valley gap width [mm] (default 1, thesis App. C)"),
+    ("--bridge-width", "bridge_width", "laminate: base-polygon bridge length [mm] (default 1)"),
+    ("--dash-length", "dash_length", "paper: perforation cut length [mm] (default 1)"),
+    ("--tie-length", "tie_length", "paper: perforation tie length [mm] (default 1)"),
+    ("--mountain-bridge", "mountain_bridge", "paper: uncut end of mountain cuts [mm] (default 1)"),
+    ("--panel-inset", "panel_inset", "paper: reinforcement panel inset [mm] (default 1.5)"),
+    ("--panel-spacing", "panel_spacing", "paper: gap strip to panels [mm] (default 5)"),
+)
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "pattern",
+        help="cut file / crease pattern of a cell (SVG, DXF, FOLD, PNG)",
+        description="Write the flat pattern of a generalized Kresling cell at true scale "
+                    "(mm) for the thesis's paper or PET-laminate process. The format comes "
+                    "from the output file's extension: .svg and .dxf (cut files, one layer "
+                    "per cut pass), .fold (crease pattern with both stable states), .png "
+                    "(preview). Laminate cut files are drawn from the inside of the cell, "
+                    "as the plotter sees the sheet.",
+    )
+    add_design_arguments(parser)
+    parser.add_argument("--process", default="laminate", metavar="{laminate,paper}",
+                        help="fabrication process (default laminate); any other name is "
+                             "rejected with the list of processes")
+    parser.add_argument("-o", "--output", required=True, metavar="FILE",
+                        help="output file: .svg, .dxf, .fold or .png")
+    parser.add_argument("--module", action="store_true",
+                        help="cut a module: the cell and its mirror image on one sheet")
+    parser.add_argument("--polygon-bridges", type=int, dest="polygon_bridges",
+                        help="laminate: bridges on the base polygon in cut layer 1 (default 2)")
+    for option, destination, text in _PARAMETERS:
+        parser.add_argument(option, type=float, dest=destination, help=text)
+    parser.add_argument("--dpi", type=float, default=96.0, help="PNG resolution (default 96)")
+    parser.add_argument("--json", action="store_true", help="print the summary as JSON")
+    parser.set_defaults(func=run)
+
+
+def run(args) -> int:
+    from kresling.fabrication import FORMATS, cut_sheet, module_sheet, write_pattern
+    from kresling.fabrication.export import file_format, write_sheet
+
+    design = design_from_args(args)
+    names = ["polygon_bridges"] + [destination for _, destination, _ in _PARAMETERS]
+    parameters = {name: getattr(args, name) for name in names if getattr(args, name) is not None}
+    suffix = file_format(args.output)
+    summary = {"file": args.output, "format": FORMATS[suffix], "process": args.process,
+               "module": args.module, "design": repr(design)}
+    if suffix == ".fold":
+        write_pattern(args.output, design, args.process, module=args.module, **parameters)
+    else:
+        sheet = (module_sheet if args.module else cut_sheet)(design, args.process, **parameters)
+        write_sheet(sheet, args.output, dpi=args.dpi)
+        width, height = sheet.size
+        summary.update(width_mm=width, height_mm=height,
+                       layers={layer.name: len(layer.paths) for layer in sheet.layers})
+    if args.json:
+        print_json(summary)
+    else:
+        size = (f", {summary['width_mm']:.1f} x {summary['height_mm']:.1f} mm"
+                if "width_mm" in summary else "")
+        print(f"wrote {args.output} ({summary['format']}{size})")
+    return 0
