@@ -7,5 +7,6 @@
 namespace kresling::python {
 
 void bind_geometry(pybind11::module_& m);
+void bind_kinematics(pybind11::module_& m);
 
 }  // namespace kresling::python

@@ -7,4 +7,7 @@ PYBIND11_MODULE(_core, m) {
             "Use the Python API in the kresling package; this module is internal.";
   auto geometry = m.def_submodule("geometry", "Generalized Kresling cell geometry");
   kresling::python::bind_geometry(geometry);
+  auto kinematics = m.def_submodule(
+      "kinematics", "Constant-curvature manipulator kinematics (thesis ch. 4, Appendix E)");
+  kresling::python::bind_kinematics(kinematics);
 }
