@@ -14,7 +14,7 @@ import os
 import sys
 
 # Subcommand modules, in the order ``kresling --help`` lists them.
-_COMMANDS = ("design",)
+_COMMANDS = ("design", "manipulator")
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -9,8 +9,8 @@ Examples
 --------
 >>> from kresling.manipulator import Manipulator, pseudo_linkage
 >>> run = pseudo_linkage(Manipulator(), "101", steps=[10])
->>> run.markers[0, -1].round(3)
-array([ 75.654,   0.   , 229.969])
+>>> run.markers[0, -1, [0, 2]].round(3)     # tip x and z [mm] at k = 10 (Appendix E)
+array([ 75.655, 229.971])
 """
 
 from kresling.manipulator.constant_curvature import arc_from_tendons, tendon_angles, tendons_from_arc

@@ -92,7 +92,7 @@ class TendonDrive:
         --------
         >>> arm = Manipulator()
         >>> TendonDrive().motor_counts(arm, "101", [10.0, 40.0, 40.0]).round(2)
-        array([  748.66,   748.66, -1497.32])
+        array([  748.66,   748.66, -1497.33])
         """
         shortening = self.tendon_shortening(model, configuration, tendon_lengths)
         counts = np.empty(3)
