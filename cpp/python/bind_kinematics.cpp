@@ -42,6 +42,23 @@ Rows3 map_rows(const Rows3& in, F f) {
   return out;
 }
 
+// Bind f(row, layout, suffix) -> row as a batch function over (n, 3) arrays.
+using RowMap = Eigen::Vector3d (*)(const Eigen::Vector3d&, const kk::TendonLayout&,
+                                   const std::string&);
+void bind_row_map(py::module_& m, const char* name, RowMap f, const char* input, const char* doc) {
+  m.def(
+      name,
+      [f, input](py::array_t<double, py::array::c_style | py::array::forcecast> rows, double d,
+                 int N) {
+        const kk::TendonLayout layout{d, N};
+        return map_rows(as_rows3(rows, input),
+                        [&](const Eigen::Vector3d& row, const std::string& suffix) {
+                          return f(row, layout, suffix);
+                        });
+      },
+      py::arg(input), py::arg("d"), py::arg("N"), doc);
+}
+
 py::array_t<double> frames_array(const std::vector<Eigen::Matrix4d>& frames) {
   py::array_t<double> out({static_cast<py::ssize_t>(frames.size()), py::ssize_t{4}, py::ssize_t{4}});
   auto view = out.mutable_unchecked<3>();
@@ -60,28 +77,11 @@ void bind_kinematics(py::module_& m) {
 
   m.def("tendon_angle", &kk::tendon_angle, py::arg("i"),
         "Angle of tendon i (0-based) in a module's base frame [rad].");
-  m.def(
-      "arc_from_tendons",
-      [](py::array_t<double, py::array::c_style | py::array::forcecast> lengths, double d, int N) {
-        const kk::TendonLayout layout{d, N};
-        return map_rows(as_rows3(lengths, "tendon lengths"),
-                        [&](const Eigen::Vector3d& l, const std::string& suffix) {
-                          return kk::arc_from_tendons(l, layout, suffix);
-                        });
-      },
-      py::arg("lengths"), py::arg("d"), py::arg("N"),
-      "Eqns 27-29: (n, 3) tendon lengths [mm] -> (n, 3) arcs (s [mm], kappa [1/mm], phi [rad]).");
-  m.def(
-      "tendons_from_arc",
-      [](py::array_t<double, py::array::c_style | py::array::forcecast> arcs, double d, int N) {
-        const kk::TendonLayout layout{d, N};
-        return map_rows(as_rows3(arcs, "arcs"),
-                        [&](const Eigen::Vector3d& a, const std::string& suffix) {
-                          return kk::tendons_from_arc(a, layout, suffix);
-                        });
-      },
-      py::arg("arcs"), py::arg("d"), py::arg("N"),
-      "Inverse of arc_from_tendons: (n, 3) arcs -> (n, 3) tendon lengths [mm].");
+  bind_row_map(m, "arc_from_tendons", &kk::arc_from_tendons, "lengths",
+               "Eqns 27-29: (n, 3) tendon lengths [mm] -> (n, 3) arcs (s [mm], kappa [1/mm], "
+               "phi [rad]).");
+  bind_row_map(m, "tendons_from_arc", &kk::tendons_from_arc, "arcs",
+               "Inverse of arc_from_tendons: (n, 3) arcs -> (n, 3) tendon lengths [mm].");
   m.def("flexible_module_transform", &kk::flexible_module_transform, py::arg("s"),
         py::arg("kappa"), py::arg("phi"), py::arg("convention"),
         "Eqn 26 (jones) or its twist-free variant: 4x4 homogeneous transform.");

@@ -15,7 +15,7 @@ from kresling import _core
 from kresling.manipulator.model import Manipulator, configuration_name
 
 __all__ = ["ChainState", "forward_kinematics", "flexible_tendon_rows", "to_plot_plane",
-           "from_plot_plane"]
+           "from_plot_plane", "marker_distances"]
 
 
 def to_plot_plane(points) -> np.ndarray:
@@ -32,6 +32,12 @@ def from_plot_plane(xy) -> np.ndarray:
     """Inverse of :func:`to_plot_plane` for points in the plane y = 0: ``(..., 2) -> (..., 3)``."""
     xy = np.asarray(xy, dtype=float)
     return np.stack([-xy[..., 0], np.zeros(xy.shape[:-1]), -xy[..., 1]], axis=-1)
+
+
+def marker_distances(markers) -> np.ndarray:
+    """Distance between consecutive markers, ``(..., m + 1, k) -> (..., m)``: the module
+    ("joint") lengths of Table 5."""
+    return np.linalg.norm(np.diff(np.asarray(markers, dtype=float), axis=-2), axis=-1)
 
 
 def flexible_tendon_rows(configuration, tendon_lengths) -> np.ndarray:
@@ -52,8 +58,25 @@ def flexible_tendon_rows(configuration, tendon_lengths) -> np.ndarray:
                      f"configuration {configuration_name(configuration)}")
 
 
+class MarkerViews:
+    """Views of a ``markers`` array of shape (..., m + 1, 3), shared by the results that
+    carry one (:class:`ChainState`, :class:`~kresling.manipulator.ProtocolRun`)."""
+
+    markers: np.ndarray
+
+    @property
+    def plot_markers(self) -> np.ndarray:
+        """Markers in the thesis's plot coordinates ``(-x, -z)`` [mm], shape (..., m + 1, 2)."""
+        return to_plot_plane(self.markers)
+
+    @property
+    def module_lengths(self) -> np.ndarray:
+        """Marker-to-marker distance of each module [mm], shape (..., m)."""
+        return marker_distances(self.markers)
+
+
 @dataclass(frozen=True)
-class ChainState:
+class ChainState(MarkerViews):
     """The manipulator evaluated at one configuration and tendon input (pinocchio's ``Data``).
 
     Attributes
@@ -85,16 +108,6 @@ class ChainState:
     def tip(self) -> np.ndarray:
         """Position of the last module's end [mm], shape (3,)."""
         return self.frames[-1, :3, 3].copy()
-
-    @property
-    def plot_markers(self) -> np.ndarray:
-        """Markers in the thesis's plot coordinates ``(-x, -z)`` [mm], shape (m + 1, 2)."""
-        return to_plot_plane(self.markers)
-
-    @property
-    def module_lengths(self) -> np.ndarray:
-        """Marker-to-marker distance of each module [mm], shape (m,)."""
-        return np.linalg.norm(np.diff(self.markers, axis=0), axis=1)
 
     def backbone(self, per_module: int = 24) -> np.ndarray:
         """Points along the backbone [mm], shape (m * per_module + 1, 3)."""

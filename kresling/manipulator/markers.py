@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from kresling.manipulator.forward import marker_distances
 from kresling.manipulator.model import Manipulator, configuration_name, parse_configuration
 from kresling.manipulator.protocol import pseudo_linkage
 
@@ -75,7 +76,7 @@ class MarkerData:
             if sorted(part.marker[rows].tolist()) == list(range(1, modules + 2)):
                 xy = part.xy[rows][np.argsort(part.marker[rows])]
                 steps.append(step)
-                lengths.append(np.linalg.norm(np.diff(xy, axis=0), axis=1))
+                lengths.append(marker_distances(xy))
         return np.array(steps, dtype=int), np.array(lengths).reshape(len(steps), modules)
 
 

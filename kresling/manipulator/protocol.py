@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling import _core
-from kresling.manipulator.forward import to_plot_plane
+from kresling.manipulator.forward import MarkerViews
 from kresling.manipulator.model import Manipulator
 
 __all__ = ["protocol_tendon_lengths", "ProtocolRun", "pseudo_linkage", "THESIS_STEPS"]
@@ -43,7 +43,7 @@ def protocol_tendon_lengths(k, rest_length: float = 30.0) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class ProtocolRun:
+class ProtocolRun(MarkerViews):
     """Predicted markers of one configuration over the protocol's steps.
 
     Attributes
@@ -60,16 +60,6 @@ class ProtocolRun:
     steps: np.ndarray
     tendon_lengths: np.ndarray
     markers: np.ndarray
-
-    @property
-    def plot_markers(self) -> np.ndarray:
-        """Markers in the thesis's plot coordinates ``(-x, -z)`` [mm], shape (n, m + 1, 2)."""
-        return to_plot_plane(self.markers)
-
-    @property
-    def module_lengths(self) -> np.ndarray:
-        """Marker-to-marker distance of every module at every step [mm], shape (n, m)."""
-        return np.linalg.norm(np.diff(self.markers, axis=1), axis=2)
 
     @property
     def path_lengths(self) -> np.ndarray:
