@@ -39,7 +39,8 @@ def register(subparsers) -> None:
 
 
 def _model(args) -> Manipulator:
-    modules = args.modules if args.modules is not None else len(str(args.config).strip("()[] "))
+    digits = [c for c in str(args.config) if c not in "()[] ,"]  # "101", "(1 0 1)", "1,0,1"
+    modules = args.modules if args.modules is not None else max(len(digits), 1)
     return Manipulator(modules=modules, design=Design(args.n, args.lam, args.Lc, args.R),
                        tendon_radius=args.d, segments=args.N, frame=args.frame)
 

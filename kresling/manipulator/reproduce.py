@@ -14,7 +14,7 @@ from kresling.manipulator.forward import forward_kinematics
 from kresling.manipulator.inverse import inverse_kinematics, solve_configuration
 from kresling.manipulator.joint_lengths import joint_length_table
 from kresling.manipulator.markers import compare_markers, read_markers
-from kresling.manipulator.model import Manipulator, configuration_name
+from kresling.manipulator.model import Manipulator
 from kresling.manipulator.motors import TendonDrive
 from kresling.manipulator.protocol import protocol_tendon_lengths
 from kresling.manipulator.synthetic import SHIPPED_FILE

@@ -26,7 +26,7 @@ import numpy as np
 
 from kresling import _core
 from kresling.manipulator.forward import to_plot_plane
-from kresling.manipulator.markers import MarkerData, write_markers
+from kresling.manipulator.markers import MarkerData
 from kresling.manipulator.model import Manipulator, configuration_name
 from kresling.manipulator.protocol import THESIS_STEPS, protocol_tendon_lengths
 
