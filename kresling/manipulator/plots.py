@@ -137,7 +137,7 @@ def plot_workspaces(workspaces: dict, ax=None):
     """
     import matplotlib.pyplot as plt
 
-    ax = plt.figure(figsize=(5, 5.5)).gca() if ax is None else ax
+    ax = plt.figure(figsize=(5, 5.5), layout="constrained").gca() if ax is None else ax
     for i, (name, space) in enumerate(workspaces.items()):
         points = to_plot_plane(space.points)
         ax.plot(*points.T, ".", ms=2 if len(points) > 1 else 8, color=f"C{i % 10}",
