@@ -1,0 +1,111 @@
+"""``kresling manipulator``: markers, tendon lengths and motor counts of the thesis's arm at a
+step of the section 4.3 protocol, or the configuration and inputs that reach a target."""
+
+from __future__ import annotations
+
+from kresling.cli._output import print_json, print_table
+from kresling.geometry import Design
+from kresling.manipulator import (FRAMES, Manipulator, TendonDrive, configuration_name,
+                                  forward_kinematics, inverse_kinematics, protocol_tendon_lengths)
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "manipulator",
+        help="manipulator kinematics: markers and motor counts, or inverse kinematics",
+        description="Forward kinematics of the Kresling manipulator under the thesis's "
+                    "pseudo-linkage protocol (l1 = 2Lc - 2k, l2 = l3 = 2Lc + k per flexible "
+                    "module), or with --target, the configuration and tendon lengths that "
+                    "reach a point. Positions in mm in the frame of eqn 26 (z along the "
+                    "undeformed axis, tendon 1 on +x).",
+    )
+    parser.add_argument("--config", default="101",
+                        help="module states, base first: 0 contracted, 1 extended (default 101)")
+    parser.add_argument("--k", type=float, default=10.0, help="protocol step (default 10)")
+    parser.add_argument("--target", type=float, nargs=3, metavar=("X", "Y", "Z"),
+                        help="solve the inverse kinematics for this point [mm] instead")
+    parser.add_argument("--modules", type=int, default=None,
+                        help="number of modules (default: the length of --config)")
+    parser.add_argument("--n", type=int, default=10, help="cell polygon sides (default 10)")
+    parser.add_argument("--lam", type=float, default=0.9, help="cell angle ratio (default 0.9)")
+    parser.add_argument("--Lc", type=float, default=15.0, help="cell contracted height [mm] (default 15)")
+    parser.add_argument("--R", type=float, default=30.0, help="cell circumradius [mm] (default 30)")
+    parser.add_argument("--d", type=float, default=32.0, help="tendon radius [mm] (default 32)")
+    parser.add_argument("--N", type=int, default=1, help="tendon segments per module (default 1)")
+    parser.add_argument("--frame", choices=FRAMES, default="twist_free",
+                        help="frame convention of flexible modules (markers do not depend on it)")
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.set_defaults(func=run)
+
+
+def _model(args) -> Manipulator:
+    digits = [c for c in str(args.config) if c not in "()[] ,"]  # "101", "(1 0 1)", "1,0,1"
+    modules = args.modules if args.modules is not None else max(len(digits), 1)
+    return Manipulator(modules=modules, design=Design(args.n, args.lam, args.Lc, args.R),
+                       tendon_radius=args.d, segments=args.N, frame=args.frame)
+
+
+def _counts(drive: TendonDrive, model, configuration, lengths) -> dict:
+    counts = drive.motor_counts(model, configuration, lengths)
+    return {f"motor{i + 1}": float(c) for i, c in enumerate(counts)}
+
+
+def run(args) -> int:
+    model = _model(args)
+    drive = TendonDrive()
+    if args.target is not None:
+        return _run_inverse(args, model, drive)
+    configuration = model.configuration(args.config)
+    lengths = protocol_tendon_lengths(args.k, model.rest_tendon_length)
+    state = forward_kinematics(model, configuration, lengths if 0 in configuration else None)
+    flexible = [j + 1 for j, s in enumerate(configuration) if s == 0]
+    result = {
+        "config": configuration_name(configuration),
+        "k": args.k,
+        "frame": model.frame,
+        "markers": state.markers,
+        "plot_markers": state.plot_markers,
+        "module_lengths": state.module_lengths,
+        "arcs": {f"module{j}": state.arcs[j - 1] for j in flexible},
+        "tendon_lengths": {f"module{j}": row for j, row in zip(flexible, state.tendon_lengths)},
+        "tendon_shortening": drive.tendon_shortening(model, configuration, state.tendon_lengths),
+        "motor_counts": _counts(drive, model, configuration, state.tendon_lengths),
+        "counts_per_mm": drive.counts_per_mm,
+        "snap_counts": drive.snap_counts(model),
+    }
+    if args.json:
+        print_json(result)
+        return 0
+    print(f"configuration ({result['config']}), step k = {args.k:g}; markers [mm], frame of eqn 26")
+    print_table([(i + 1, *p) for i, p in enumerate(state.markers)], ("marker", "x", "y", "z"))
+    print()
+    print_table([(name, *row) for name, row in result["tendon_lengths"].items()],
+                ("module", "l1 [mm]", "l2 [mm]", "l3 [mm]"))
+    print()
+    print_table(list(result["motor_counts"].items()), ("motor", "counts"))
+    return 0
+
+
+def _run_inverse(args, model, drive) -> int:
+    found = inverse_kinematics(model, args.target)
+    lengths = found.tendon_lengths if 0 in found.configuration else None
+    result = {
+        "target": found.target,
+        "reachable": found.reachable,
+        "config": configuration_name(found.configuration),
+        "tendon_lengths": found.tendon_lengths,
+        "position": found.position,
+        "distance": found.distance,
+        "markers": forward_kinematics(model, found.configuration, lengths).markers,
+        "motor_counts": _counts(drive, model, found.configuration, found.tendon_lengths)
+        if lengths is not None else {"motor1": 0.0, "motor2": 0.0, "motor3": 0.0},
+    }
+    if args.json:
+        print_json(result)
+        return 0
+    verdict = "reachable" if found.reachable else "NOT reachable; nearest point"
+    print(f"target {found.target.tolist()} mm: {verdict} with configuration ({result['config']})")
+    print_table([("l1, l2, l3 [mm]", *found.tendon_lengths), ("tip [mm]", *found.position)],
+                ("", "1", "2", "3"))
+    print(f"distance {found.distance:.3g} mm")
+    return 0

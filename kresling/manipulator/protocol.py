@@ -1,0 +1,103 @@
+"""The pseudo-linkage evaluation of thesis section 4.3.
+
+Every flexible module gets ``l1 = rest - 2k``, ``l2 = l3 = rest + k`` at step k = 1..10
+(``Delta l2 = Delta l3 = -Delta l1 / 2``; the motors move tendon 1 by ``2 f k`` in total
+for f flexible modules). The mean tendon length stays at ``rest``, which for N = 1 is the
+module's marker-to-marker chord: the modules behave as revolute joints of fixed length,
+bending in the plane of tendon 1 by ``2 asin(k / d)``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from kresling import _core
+from kresling.manipulator.forward import MarkerViews
+from kresling.manipulator.model import Manipulator
+
+__all__ = ["protocol_tendon_lengths", "ProtocolRun", "pseudo_linkage", "THESIS_STEPS"]
+
+#: The thesis's displacement steps (0 is the rest state, photographed too).
+THESIS_STEPS = tuple(range(0, 11))
+
+
+def protocol_tendon_lengths(k, rest_length: float = 30.0) -> np.ndarray:
+    """Tendon lengths of one flexible module at protocol step(s) ``k`` [mm].
+
+    Parameters
+    ----------
+    k : float or array_like, shape (n,)
+        Displacement step(s); the thesis uses 1..10 (0 = rest).
+    rest_length : float
+        Tendon length at rest [mm] (``2 Lc`` = 30 mm).
+
+    Returns
+    -------
+    ndarray, shape (3,) or (n, 3)
+        ``(rest - 2k, rest + k, rest + k)``.
+    """
+    k = np.asarray(k, dtype=float)
+    return np.stack([rest_length - 2 * k, rest_length + k, rest_length + k], axis=-1)
+
+
+@dataclass(frozen=True)
+class ProtocolRun(MarkerViews):
+    """Predicted markers of one configuration over the protocol's steps.
+
+    Attributes
+    ----------
+    configuration : tuple of int
+    steps : ndarray, shape (n,)
+    tendon_lengths : ndarray, shape (n, 3)
+        Tendon lengths of every flexible module at each step [mm].
+    markers : ndarray, shape (n, m + 1, 3)
+        Base and module-end positions [mm] in the frame of eqn 26.
+    """
+
+    configuration: tuple
+    steps: np.ndarray
+    tendon_lengths: np.ndarray
+    markers: np.ndarray
+
+    @property
+    def path_lengths(self) -> np.ndarray:
+        """Length of the arm from the base to each marker along the chain of marker-to-marker
+        segments [mm], shape (n, m + 1) (0 at the base)."""
+        return np.concatenate([np.zeros((len(self.steps), 1)),
+                               np.cumsum(self.module_lengths, axis=1)], axis=1)
+
+    def at(self, step) -> np.ndarray:
+        """Markers at one step [mm], shape (m + 1, 3)."""
+        matches = np.flatnonzero(self.steps == step)
+        if matches.size == 0:
+            raise ValueError(f"step = {step!r} is invalid: must be one of {self.steps.tolist()}")
+        return self.markers[matches[0]]
+
+
+def pseudo_linkage(model: Manipulator, configuration, steps=THESIS_STEPS) -> ProtocolRun:
+    """Predicted markers of ``configuration`` under the section 4.3 protocol.
+
+    Parameters
+    ----------
+    model : Manipulator
+    configuration : str or sequence of int
+    steps : array_like of float
+        Displacement steps k (default 0..10).
+
+    Returns
+    -------
+    ProtocolRun
+
+    Raises
+    ------
+    ValueError
+        For a bad configuration, or a step beyond which tendon 1 would be negative or no arc
+        realises the lengths.
+    """
+    configuration = model.configuration(configuration)
+    steps = np.atleast_1d(np.asarray(steps, dtype=float))
+    lengths = np.atleast_2d(protocol_tendon_lengths(steps, model.rest_tendon_length))
+    markers = _core.kinematics.markers_of_identical_modules(model._chain, configuration, lengths)
+    return ProtocolRun(configuration, steps, lengths, markers)
