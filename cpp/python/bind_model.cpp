@@ -84,7 +84,42 @@ void bind_model(py::module_& m) {
       .def_property_readonly("num_nodes", &model::Model::num_nodes)
       .def_property_readonly("num_dofs", &model::Model::num_dofs)
       .def_property_readonly("num_bars", [](const model::Model& m) { return m.bars().size(); })
-      .def_property_readonly("num_hinges", [](const model::Model& m) { return m.hinges().size(); });
+      .def_property_readonly("num_hinges", [](const model::Model& m) { return m.hinges().size(); })
+      .def("arrays", [](const model::Model& m) {
+        // Structure-of-arrays copies of the model's data (for the Python Model's views).
+        const auto nb = static_cast<py::ssize_t>(m.bars().size());
+        const auto nh = static_cast<py::ssize_t>(m.hinges().size());
+        py::array_t<Index> bar_nodes({nb, py::ssize_t(2)}), hinge_nodes({nh, py::ssize_t(4)});
+        py::array_t<double> area(nb), rest(nb), modulus(nb), k(nh), angle(nh), length(nh),
+            t1(nh), t2(nh);
+        py::array_t<Index> bar_law(nb), hinge_law(nh);
+        auto bn = bar_nodes.mutable_unchecked<2>();
+        for (py::ssize_t i = 0; i < nb; ++i) {
+          const auto& b = m.bars()[i];
+          bn(i, 0) = b.nodes[0], bn(i, 1) = b.nodes[1];
+          area.mutable_at(i) = b.area, rest.mutable_at(i) = b.rest_length;
+          modulus.mutable_at(i) = b.law.modulus;
+          bar_law.mutable_at(i) = static_cast<Index>(b.law.kind);
+        }
+        auto hn = hinge_nodes.mutable_unchecked<2>();
+        for (py::ssize_t i = 0; i < nh; ++i) {
+          const auto& h = m.hinges()[i];
+          for (int j = 0; j < 4; ++j) hn(i, j) = h.nodes[j];
+          k.mutable_at(i) = h.stiffness, angle.mutable_at(i) = h.rest_angle;
+          length.mutable_at(i) = h.length, t1.mutable_at(i) = h.law.theta1;
+          t2.mutable_at(i) = h.law.theta2;
+          hinge_law.mutable_at(i) = static_cast<Index>(h.law.kind);
+        }
+        py::dict out;
+        out["nodes"] = m.nodes();
+        out["bars"] = bar_nodes, out["bar_area"] = area, out["bar_rest_length"] = rest;
+        out["bar_modulus"] = modulus, out["bar_law"] = bar_law;
+        out["hinges"] = hinge_nodes, out["hinge_stiffness"] = k, out["hinge_rest_angle"] = angle;
+        out["hinge_length"] = length, out["hinge_law"] = hinge_law;
+        out["hinge_theta1"] = t1, out["hinge_theta2"] = t2;
+        out["fixed"] = py::array_t<std::uint8_t>(m.fixed().size(), m.fixed().data());
+        return out;
+      });
 
   m.def(
       "build_topology",

@@ -10,6 +10,7 @@ void bind_geometry(pybind11::module_& m);
 void bind_elements(pybind11::module_& m);
 void bind_model(pybind11::module_& m);
 void bind_solvers(pybind11::module_& m);
+void bind_analyses(pybind11::module_& m);
 void bind_kinematics(pybind11::module_& m);
 
 }  // namespace kresling::python

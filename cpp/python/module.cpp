@@ -13,6 +13,8 @@ PYBIND11_MODULE(_core, m) {
   kresling::python::bind_model(model);
   auto solvers = m.def_submodule("solvers", "Assembly and nonlinear solvers");
   kresling::python::bind_solvers(solvers);
+  auto analyses = m.def_submodule("analyses", "Kresling specimens and the thesis's analyses");
+  kresling::python::bind_analyses(analyses);
   auto kinematics = m.def_submodule(
       "kinematics", "Constant-curvature manipulator kinematics (thesis ch. 4, Appendix E)");
   kresling::python::bind_kinematics(kinematics);

@@ -5,7 +5,12 @@ that names the element). :func:`panel_topology` turns panels into triangles, bar
 by MERLIN2's rules.
 """
 
+from kresling.model.kresling_specimen import (EDGE_FAMILIES, KreslingSpecimen,
+                                              SpecimenParameters, alternating_chirality,
+                                              kresling_specimen)
 from kresling.model.model import BAR_LAWS, SPRING_LAWS, Model
 from kresling.model.topology import Topology, panel_topology
 
-__all__ = ["Model", "Topology", "panel_topology", "BAR_LAWS", "SPRING_LAWS"]
+__all__ = ["Model", "Topology", "panel_topology", "BAR_LAWS", "SPRING_LAWS",
+           "KreslingSpecimen", "SpecimenParameters", "kresling_specimen", "EDGE_FAMILIES",
+           "alternating_chirality"]

@@ -134,6 +134,25 @@ class Model:
             a["hinge_limits"][:, 1].copy(), a["fixed"].astype(np.uint8).ravel())
 
     @classmethod
+    def _from_core(cls, core) -> "Model":
+        """Wrap a model built (and validated) by the C++ core, e.g. a Kresling specimen."""
+        a = {k: np.asarray(v) for k, v in core.arrays().items()}
+        self = cls.__new__(cls)
+        self._arrays = {
+            "nodes": a["nodes"], "bars": a["bars"].reshape(-1, 2), "bar_area": a["bar_area"],
+            "bar_rest_length": a["bar_rest_length"], "bar_law": a["bar_law"],
+            "bar_modulus": a["bar_modulus"], "hinges": a["hinges"].reshape(-1, 4),
+            "hinge_stiffness": a["hinge_stiffness"], "hinge_rest_angle": a["hinge_rest_angle"],
+            "hinge_length": a["hinge_length"], "hinge_law": a["hinge_law"],
+            "hinge_limits": np.column_stack([a["hinge_theta1"], a["hinge_theta2"]]),
+            "fixed": a["fixed"].astype(bool).reshape(-1, 3),
+        }
+        for array in self._arrays.values():
+            array.flags.writeable = False
+        self._core = core
+        return self
+
+    @classmethod
     def from_panels(cls, nodes, panels, *, split="N4B5", duplicate_shared_edges=True,
                     **properties):
         """Build a model from panels (see :func:`kresling.model.panel_topology`).

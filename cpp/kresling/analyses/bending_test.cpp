@@ -1,0 +1,103 @@
+#include "kresling/analyses/bending_test.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "kresling/core/check.hpp"
+
+namespace kresling::analyses {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+void check(const geometry::Design& design, int state, const BendingOptions& o) {
+  const int n = design.parameters().n;
+  if (n % 2 != 0) {
+    throw_invalid("n", n,
+                  "even for the bending test: each end is pinned at vertices 0 and n/2, which "
+                  "must be opposite");
+  }
+  if (state != 0 && state != 1) throw_invalid("state", state, "0 (contracted) or 1 (extended)");
+  if (o.cells < 2 || o.cells % 2 != 0) {
+    throw_invalid("cells", o.cells, "an even number >= 2 (the load acts on the middle polygon)");
+  }
+  require_finite("deflection", o.deflection);
+  if (o.deflection == 0.0 || std::abs(o.deflection) >= design.parameters().R) {
+    throw_invalid("deflection", o.deflection,
+                  "non-zero and smaller than the polygon's radius R = " +
+                      format_number(design.parameters().R) + " mm");
+  }
+  if (o.steps < 1) throw_invalid("steps", o.steps, "an integer >= 1");
+}
+
+}  // namespace
+
+double slope_through_origin(const std::vector<double>& x, const std::vector<double>& y) {
+  double xy = 0.0, xx = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) xy += x[i] * y[i], xx += x[i] * x[i];
+  return xx > 0.0 ? xy / xx : kNaN;
+}
+
+BendingResult bending_test(const geometry::Design& design, int state, const BendingOptions& o) {
+  check(design, state, o);
+  const int n = design.parameters().n;
+  std::vector<int> states(o.cells, state), chirality(o.cells);
+  for (int i = 0; i < o.cells; ++i) chirality[i] = (i % 2 == 0) ? 1 : -1;
+
+  // Supports: vertices 0 and n/2 and the centre of the end polygons, x y z.
+  const int num_nodes = (o.cells + 1) * (n + 1);
+  std::vector<std::uint8_t> fixed(static_cast<std::size_t>(3 * num_nodes), 0);
+  for (int level : {0, o.cells}) {
+    for (int j : {0, n / 2, n}) {
+      for (int k = 0; k < 3; ++k) fixed[3 * (level * (n + 1) + j) + k] = 1;
+    }
+  }
+  const model::KreslingSpecimen specimen =
+      model::build_kresling_specimen(design, states, chirality, o.specimen, std::move(fixed));
+  const int middle = o.cells / 2;
+  VectorX prescribed = VectorX::Zero(specimen.model.num_dofs());
+  for (int j = 0; j <= n; ++j) prescribed[3 * specimen.node(middle, j) + 1] = -o.deflection;
+
+  const solvers::PathResult path =
+      solvers::solve_displacement_control(specimen.model, prescribed, o.steps, o.solver);
+
+  BendingResult r;
+  r.module_length = 2.0 * design.height(static_cast<geometry::State>(state));
+  r.completed = path.completed;
+  r.message = path.message;
+  r.num_dofs = static_cast<int>(specimen.model.num_dofs());
+  int held = 0;
+  for (auto f : specimen.model.fixed()) held += f;
+  r.num_free_dofs = r.num_dofs - held - (n + 1);
+  const Index centre_y = 3 * specimen.node(middle, n) + 1;
+  for (const auto& step : path.steps) {
+    const double y = -step.displacement[centre_y];
+    const double F = step.constraint_force.sum();
+    r.deflection.push_back(y);
+    r.force.push_back(F);
+    r.angle.push_back(std::atan2(y, r.module_length));
+    r.moment.push_back(F * r.module_length * 1e-3);
+    r.iterations.push_back(step.iterations);
+    r.negative_eigenvalues.push_back(step.negative_eigenvalues);
+  }
+  r.stiffness = slope_through_origin(r.angle, r.moment);
+  // Least squares with intercept (a lab fit); undefined with fewer than two points.
+  const std::size_t m = r.angle.size();
+  if (m >= 2) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+      sx += r.angle[i], sy += r.moment[i], sxx += r.angle[i] * r.angle[i];
+      sxy += r.angle[i] * r.moment[i];
+    }
+    const double det = m * sxx - sx * sx;
+    r.stiffness_intercept = det > 0 ? (m * sxy - sx * sy) / det : kNaN;
+    r.intercept = det > 0 ? (sy - r.stiffness_intercept * sx) / m : kNaN;
+  } else {
+    r.stiffness_intercept = r.intercept = kNaN;
+  }
+  return r;
+}
+
+}  // namespace kresling::analyses

@@ -1,0 +1,58 @@
+#pragma once
+/// \file bending_test.hpp
+/// The thesis's three-point bending test (section 3.4, Appendix B; MODEL.md).
+///
+/// A stack of cells (default four: two modules, chirality + - + -), all in one state.
+/// Nodes 0, n/2 and the centre of the bottom and top polygons are fixed in x, y, z (each
+/// end pinned along a line through its polygon, perpendicular to the load); all n+1 nodes of
+/// the middle polygon are driven by u_y = -deflection in equal steps. From the summed
+/// reaction F and the centre's deflection y: M = F L 1e-3 [N m], delta = atan(y / L),
+/// with L the module length (two cells), and K_B = the least-squares slope of M on delta
+/// through the origin (MATLAB's theta \ M in the thesis's code) [N m / rad].
+
+#include <string>
+#include <vector>
+
+#include "kresling/geometry/design.hpp"
+#include "kresling/model/kresling_specimen.hpp"
+#include "kresling/solvers/displacement_control.hpp"
+
+namespace kresling::analyses {
+
+struct BendingOptions {
+  double deflection = 5.0;  ///< prescribed transverse motion of the middle polygon [mm]
+  int steps = 350;          ///< displacement increments (the thesis: 350 for 5 mm)
+  int cells = 4;            ///< even, >= 2: the middle polygon is level cells / 2
+  model::SpecimenParameters specimen;
+  solvers::DisplacementControlOptions solver;
+};
+
+struct BendingResult {
+  double stiffness = 0.0;            ///< K_B, slope through the origin [N m / rad]
+  double stiffness_intercept = 0.0;  ///< K_B of the least-squares line with intercept
+  double intercept = 0.0;            ///< that line's moment at delta = 0 [N m]
+  double module_length = 0.0;        ///< L = two cells' height [mm]
+  std::vector<double> deflection;    ///< centre of the middle polygon, downward [mm]
+  std::vector<double> force;         ///< summed reaction at the driven nodes [N]
+  std::vector<double> angle;         ///< delta [rad]
+  std::vector<double> moment;        ///< M [N m]
+  std::vector<int> iterations;       ///< Newton iterations per increment
+  std::vector<int> negative_eigenvalues;
+  bool completed = false;
+  std::string message;               ///< why the run stopped early
+  int num_dofs = 0;
+  int num_free_dofs = 0;
+};
+
+/// Run the test on `design` in `state` (0 contracted, 1 extended). Throws
+/// std::invalid_argument for odd n (the pins need opposite vertices), an odd or too small
+/// cell count, a deflection that is zero, not finite or larger than the specimen's radius,
+/// or steps < 1. A run that does not converge returns completed = false with the reason;
+/// the stiffness is then fitted to the increments that did converge (NaN if none).
+BendingResult bending_test(const geometry::Design& design, int state,
+                           const BendingOptions& options = {});
+
+/// Least-squares slope of y on x through the origin (NaN for an empty or all-zero x).
+double slope_through_origin(const std::vector<double>& x, const std::vector<double>& y);
+
+}  // namespace kresling::analyses

@@ -1,0 +1,112 @@
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "kresling/analyses/bending_test.hpp"
+#include "kresling/model/kresling_specimen.hpp"
+
+namespace py = pybind11;
+using kresling::geometry::Design;
+using kresling::model::SpecimenParameters;
+
+namespace kresling::python {
+
+namespace {
+
+std::vector<int> families(const std::vector<model::EdgeFamily>& f) {
+  std::vector<int> out(f.size());
+  for (std::size_t i = 0; i < f.size(); ++i) out[i] = static_cast<int>(f[i]);
+  return out;
+}
+
+solvers::DisplacementControlOptions solver_options(double tolerance, int max_iterations,
+                                                   int reject_iterations, int max_bisections,
+                                                   double shift) {
+  solvers::DisplacementControlOptions o;
+  o.newton.tolerance = tolerance;
+  o.newton.max_iterations = max_iterations;
+  o.reject_iterations = reject_iterations;
+  o.max_bisections = max_bisections;
+  o.shift = shift;
+  return o;
+}
+
+}  // namespace
+
+void bind_analyses(py::module_& m) {
+  py::class_<SpecimenParameters>(m, "SpecimenParameters")
+      .def(py::init<>())
+      .def_readwrite("kf", &SpecimenParameters::kf)
+      .def_readwrite("valley_factor", &SpecimenParameters::valley_factor)
+      .def_readwrite("polygon_edge_factor", &SpecimenParameters::polygon_edge_factor)
+      .def_readwrite("spoke_factor", &SpecimenParameters::spoke_factor)
+      .def_readwrite("mountain_factor", &SpecimenParameters::mountain_factor)
+      .def_readwrite("modulus_factor", &SpecimenParameters::modulus_factor)
+      .def_readwrite("material_area", &SpecimenParameters::material_area)
+      .def_readwrite("mountain_area", &SpecimenParameters::mountain_area)
+      .def_readwrite("theta1", &SpecimenParameters::theta1)
+      .def_readwrite("theta2", &SpecimenParameters::theta2)
+      .def_property(
+          "bar_law", [](const SpecimenParameters& p) { return static_cast<int>(p.bar_law); },
+          [](SpecimenParameters& p, int law) {
+            if (law != 0 && law != 1) throw std::invalid_argument("bar_law: unknown law code");
+            p.bar_law = static_cast<elements::BarLawKind>(law);
+          })
+      .def_readwrite("duplicate_shared_edges", &SpecimenParameters::duplicate_shared_edges);
+
+  m.def(
+      "build_kresling_specimen",
+      [](const Design& design, const std::vector<int>& states, const std::vector<int>& chirality,
+         const SpecimenParameters& parameters, const std::vector<std::uint8_t>& fixed) {
+        auto s = model::build_kresling_specimen(design, states, chirality, parameters, fixed);
+        py::dict info;
+        info["bar_family"] = families(s.bar_family);
+        info["hinge_family"] = families(s.hinge_family);
+        info["level_height"] = s.level_height;
+        info["level_angle"] = s.level_angle;
+        return py::make_tuple(std::move(s.model), info);
+      },
+      py::arg("design"), py::arg("states"), py::arg("chirality"), py::arg("parameters"),
+      py::arg("fixed"));
+
+  m.def(
+      "bending_test",
+      [](const Design& design, int state, double deflection, int steps, int cells,
+         const SpecimenParameters& parameters, double tolerance, int max_iterations,
+         int reject_iterations, int max_bisections, double shift) {
+        analyses::BendingOptions o;
+        o.deflection = deflection;
+        o.steps = steps;
+        o.cells = cells;
+        o.specimen = parameters;
+        o.solver = solver_options(tolerance, max_iterations, reject_iterations, max_bisections, shift);
+        analyses::BendingResult r;
+        {
+          py::gil_scoped_release release;
+          r = analyses::bending_test(design, state, o);
+        }
+        py::dict out;
+        out["stiffness"] = r.stiffness;
+        out["stiffness_intercept"] = r.stiffness_intercept;
+        out["intercept"] = r.intercept;
+        out["module_length"] = r.module_length;
+        out["deflection"] = py::array_t<double>(r.deflection.size(), r.deflection.data());
+        out["force"] = py::array_t<double>(r.force.size(), r.force.data());
+        out["angle"] = py::array_t<double>(r.angle.size(), r.angle.data());
+        out["moment"] = py::array_t<double>(r.moment.size(), r.moment.data());
+        out["iterations"] = py::array_t<int>(r.iterations.size(), r.iterations.data());
+        out["negative_eigenvalues"] =
+            py::array_t<int>(r.negative_eigenvalues.size(), r.negative_eigenvalues.data());
+        out["completed"] = r.completed;
+        out["message"] = r.message;
+        out["num_dofs"] = r.num_dofs;
+        out["num_free_dofs"] = r.num_free_dofs;
+        return out;
+      },
+      py::arg("design"), py::arg("state"), py::arg("deflection"), py::arg("steps"),
+      py::arg("cells"), py::arg("parameters"), py::arg("tolerance"), py::arg("max_iterations"),
+      py::arg("reject_iterations"), py::arg("max_bisections"), py::arg("shift"));
+}
+
+}  // namespace kresling::python

@@ -1,0 +1,197 @@
+"""Bar-and-hinge models of generalized Kresling stacks (the thesis's specimens).
+
+The C++ core builds the nodes, panels and elements exactly as MODEL.md reconstructs the
+thesis's generator; this module is its Python face.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, fields
+
+import numpy as np
+
+from kresling import _core
+from kresling.geometry import Design, state_index
+from kresling.model.model import BAR_LAWS, Model
+
+__all__ = ["SpecimenParameters", "KreslingSpecimen", "kresling_specimen", "EDGE_FAMILIES",
+           "alternating_chirality"]
+
+#: Element families by code: the family of a bar is its edge's, of a hinge its axis's.
+EDGE_FAMILIES = ("valley", "mountain", "polygon_edge", "polygon_spoke")
+
+
+@dataclass(frozen=True)
+class SpecimenParameters:
+    """Stiffness assignment of a Kresling specimen; the defaults are the thesis's.
+
+    Parameters
+    ----------
+    kf : float
+        Crease stiffness per unit length [N/rad] (thesis Table 1: 0.047).
+    valley_factor, polygon_edge_factor : float
+        Hinges on valley creases and polygon edges: ``factor * kf`` (1).
+    spoke_factor : float
+        Hinges on the polygon spokes (the flat fan inside each polygon): ``factor * kf`` (10).
+    mountain_factor : float
+        Hinges on the mountain creases, cut through in the specimens (0).
+    modulus_factor : float
+        Bar modulus ``C0 = modulus_factor * kf`` (1e5, so EA = 4700 N with area 1).
+    material_area, mountain_area : float
+        Bar areas on material (1) and on the cut mountain creases (0.01: EA = 1e3 kf).
+    fold_limits : (float, float)
+        Linear range of the enhanced linear spring law [rad] (5 and 355 degrees).
+    bar_law : {"ogden", "linear"}
+    duplicate_shared_edges : bool
+        MERLIN2's topology (True) or one bar per edge (see ``kresling.model.panel_topology``).
+    """
+
+    kf: float = 0.047
+    valley_factor: float = 1.0
+    polygon_edge_factor: float = 1.0
+    spoke_factor: float = 10.0
+    mountain_factor: float = 0.0
+    modulus_factor: float = 1e5
+    material_area: float = 1.0
+    mountain_area: float = 0.01
+    fold_limits: tuple = field(default=(np.radians(5.0), np.radians(355.0)))
+    bar_law: str = "ogden"
+    duplicate_shared_edges: bool = True
+
+    def __post_init__(self):
+        if self.bar_law not in BAR_LAWS:
+            raise ValueError(f"bar_law = {self.bar_law!r} is invalid: must be one of {sorted(BAR_LAWS)}")
+        if len(self.fold_limits) != 2:
+            raise ValueError(f"fold_limits = {self.fold_limits!r} is invalid: must be two angles [rad]")
+
+    def to_core(self):
+        """The C++ parameters object (values are range-checked there)."""
+        p = _core.analyses.SpecimenParameters()
+        for f in fields(self):
+            value = getattr(self, f.name)
+            if f.name == "fold_limits":
+                p.theta1, p.theta2 = (float(v) for v in value)
+            elif f.name == "bar_law":
+                p.bar_law = BAR_LAWS[value]
+            elif f.name == "duplicate_shared_edges":
+                p.duplicate_shared_edges = bool(value)
+            else:
+                setattr(p, f.name, float(value))
+        return p
+
+
+def alternating_chirality(cells: int) -> list:
+    """``[+1, -1, +1, ...]``: modules of two cells whose twists cancel."""
+    return [1 if i % 2 == 0 else -1 for i in range(cells)]
+
+
+@dataclass(frozen=True)
+class KreslingSpecimen:
+    """A Kresling stack and its model.
+
+    Attributes
+    ----------
+    design : Design
+    states, chirality : tuple of int
+        Per cell, base first.
+    model : kresling.model.Model
+        Nodes ``k (n+1) + j`` for perimeter vertex ``j`` of level ``k``, ``k (n+1) + n`` for
+        its centre.
+    bar_family, hinge_family : ndarray of str
+        Element families (:data:`EDGE_FAMILIES`).
+    level_height, level_angle : ndarray, shape (cells + 1,)
+        z [mm] and twist angle [rad] of each level.
+    """
+
+    design: Design
+    states: tuple
+    chirality: tuple
+    parameters: SpecimenParameters
+    model: Model
+    bar_family: np.ndarray
+    hinge_family: np.ndarray
+    level_height: np.ndarray
+    level_angle: np.ndarray
+
+    @property
+    def cells(self) -> int:
+        return len(self.states)
+
+    def node(self, level: int, vertex: int) -> int:
+        """Node index of perimeter ``vertex`` (0..n-1) of ``level`` (0..cells)."""
+        n = self.design.n
+        if not (0 <= level <= self.cells and 0 <= vertex < n):
+            raise ValueError(f"node({level}, {vertex}): level must be in [0, {self.cells}] and "
+                             f"vertex in [0, {n})")
+        return level * (n + 1) + vertex
+
+    def centre(self, level: int) -> int:
+        """Node index of the centre of ``level``."""
+        if not 0 <= level <= self.cells:
+            raise ValueError(f"centre({level}): level must be in [0, {self.cells}]")
+        return level * (self.design.n + 1) + self.design.n
+
+    def level_nodes(self, level: int) -> np.ndarray:
+        """The ``n + 1`` nodes of ``level`` (perimeter, then centre)."""
+        return np.arange(self.design.n + 1) + level * (self.design.n + 1) if 0 <= level <= self.cells \
+            else self.centre(level)
+
+
+def kresling_specimen(design: Design, states, chirality=None, parameters=None,
+                      fixed=None) -> KreslingSpecimen:
+    """Build a stack of generalized Kresling cells.
+
+    Parameters
+    ----------
+    design : Design
+        The cell design (its own chirality is ignored: ``chirality`` sets each cell's).
+    states : sequence of {0, 1, "contracted", "extended"}
+        State of each cell, base first.
+    chirality : sequence of {+1, -1}, optional
+        Handedness of each cell; default alternating ``+1, -1, ...`` (modules).
+    parameters : SpecimenParameters, optional
+        Stiffness assignment (default: the thesis's).
+    fixed : array_like of bool, shape (N, 3), optional
+        Supports.
+
+    Returns
+    -------
+    KreslingSpecimen
+
+    Raises
+    ------
+    ValueError
+        For an empty state list, a chirality list of another length, or bad entries.
+
+    Examples
+    --------
+    >>> from kresling import Design
+    >>> s = kresling_specimen(Design(10, 0.9, 15), ["extended"] * 2)
+    >>> round(float(s.level_height[-1]), 3)   # the extended module
+    111.639
+    """
+    if isinstance(states, (str, int)):
+        raise ValueError(f"states = {states!r} is invalid: must be a list with one state per cell")
+    states = tuple(state_index(s) for s in states)
+    if chirality is None:
+        chirality = alternating_chirality(len(states))
+    chirality = tuple(int(c) for c in chirality)
+    parameters = parameters or SpecimenParameters()
+    num_nodes = (len(states) + 1) * (design.n + 1)
+    if fixed is None:
+        mask = np.zeros(3 * num_nodes, dtype=np.uint8)
+    else:
+        mask = np.asarray(fixed, dtype=bool)
+        if mask.shape != (num_nodes, 3):
+            raise ValueError(f"fixed has shape {mask.shape}: must be ({num_nodes}, 3)")
+        mask = mask.astype(np.uint8).ravel()
+    core_model, info = _core.analyses.build_kresling_specimen(
+        design._core, list(states), list(chirality), parameters.to_core(), mask.tolist())
+    names = np.array(EDGE_FAMILIES)
+    return KreslingSpecimen(
+        design=design, states=states, chirality=chirality, parameters=parameters,
+        model=Model._from_core(core_model),
+        bar_family=names[np.asarray(info["bar_family"], dtype=int)],
+        hinge_family=names[np.asarray(info["hinge_family"], dtype=int)],
+        level_height=np.asarray(info["level_height"]),
+        level_angle=np.asarray(info["level_angle"]))
