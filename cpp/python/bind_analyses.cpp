@@ -20,18 +20,6 @@ std::vector<int> families(const std::vector<model::EdgeFamily>& f) {
   return out;
 }
 
-solvers::DisplacementControlOptions solver_options(double tolerance, int max_iterations,
-                                                   int reject_iterations, int max_bisections,
-                                                   double shift) {
-  solvers::DisplacementControlOptions o;
-  o.newton.tolerance = tolerance;
-  o.newton.max_iterations = max_iterations;
-  o.reject_iterations = reject_iterations;
-  o.max_bisections = max_bisections;
-  o.shift = shift;
-  return o;
-}
-
 }  // namespace
 
 void bind_analyses(py::module_& m) {
@@ -73,14 +61,13 @@ void bind_analyses(py::module_& m) {
   m.def(
       "bending_test",
       [](const Design& design, int state, double deflection, int steps, int cells,
-         const SpecimenParameters& parameters, double tolerance, int max_iterations,
-         int reject_iterations, int max_bisections, double shift) {
+         const SpecimenParameters& parameters, const solvers::DisplacementControlOptions& solver) {
         analyses::BendingOptions o;
         o.deflection = deflection;
         o.steps = steps;
         o.cells = cells;
         o.specimen = parameters;
-        o.solver = solver_options(tolerance, max_iterations, reject_iterations, max_bisections, shift);
+        o.solver = solver;
         analyses::BendingResult r;
         {
           py::gil_scoped_release release;
@@ -105,8 +92,7 @@ void bind_analyses(py::module_& m) {
         return out;
       },
       py::arg("design"), py::arg("state"), py::arg("deflection"), py::arg("steps"),
-      py::arg("cells"), py::arg("parameters"), py::arg("tolerance"), py::arg("max_iterations"),
-      py::arg("reject_iterations"), py::arg("max_bisections"), py::arg("shift"));
+      py::arg("cells"), py::arg("parameters"), py::arg("solver"));
 }
 
 }  // namespace kresling::python

@@ -94,26 +94,32 @@ void bind_solvers(py::module_& m) {
       },
       py::arg("model"), py::arg("u"));
 
+  py::class_<DisplacementControlOptions>(m, "DisplacementControlOptions")
+      .def(py::init<>())
+      .def_property(
+          "tolerance", [](const DisplacementControlOptions& o) { return o.newton.tolerance; },
+          [](DisplacementControlOptions& o, double v) { o.newton.tolerance = v; })
+      .def_property(
+          "max_iterations", [](const DisplacementControlOptions& o) { return o.newton.max_iterations; },
+          [](DisplacementControlOptions& o, int v) { o.newton.max_iterations = v; })
+      .def_readwrite("reject_iterations", &DisplacementControlOptions::reject_iterations)
+      .def_readwrite("max_bisections", &DisplacementControlOptions::max_bisections)
+      .def_readwrite("shift", &DisplacementControlOptions::shift)
+      .def_readwrite("extrapolation", &DisplacementControlOptions::extrapolation);
+
   m.def(
       "displacement_control",
-      [](const Model& model, const VectorX& prescribed, int steps, double tolerance,
-         int max_iterations, int reject_iterations, int max_bisections, double shift,
-         const VectorX& initial) {
-        DisplacementControlOptions o;
-        o.newton = newton(tolerance, max_iterations);
-        o.reject_iterations = reject_iterations;
-        o.max_bisections = max_bisections;
-        o.shift = shift;
+      [](const Model& model, const VectorX& prescribed, int steps,
+         const DisplacementControlOptions& options, const VectorX& initial) {
         PathResult r;
         {
           py::gil_scoped_release release;
-          r = solve_displacement_control(model, prescribed, steps, o, initial);
+          r = solve_displacement_control(model, prescribed, steps, options, initial);
         }
         return path_to_dict(r, model.num_dofs());
       },
-      py::arg("model"), py::arg("prescribed"), py::arg("steps"), py::arg("tolerance"),
-      py::arg("max_iterations"), py::arg("reject_iterations"), py::arg("max_bisections"),
-      py::arg("shift"), py::arg("initial"));
+      py::arg("model"), py::arg("prescribed"), py::arg("steps"), py::arg("options"),
+      py::arg("initial"));
 
   m.def(
       "force_control",

@@ -1,5 +1,6 @@
 #include "kresling/solvers/displacement_control.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -9,6 +10,27 @@
 #include "kresling/solvers/rigid_body.hpp"
 
 namespace kresling::solvers {
+
+namespace {
+
+// Lagrange extrapolation of the free DOFs to path parameter t from the last (order + 1)
+// accepted points (t_i, u_i); imposed DOFs are overwritten by the caller.
+void extrapolate(const std::vector<double>& ts, const std::vector<VectorX>& us, int order,
+                 double t, VectorX& u) {
+  const int points = std::min<int>(order + 1, static_cast<int>(ts.size()));
+  if (points < 2) return;  // nothing to extrapolate from: keep the previous equilibrium
+  const std::size_t first = ts.size() - points;
+  u.setZero();
+  for (std::size_t i = first; i < ts.size(); ++i) {
+    double weight = 1.0;
+    for (std::size_t j = first; j < ts.size(); ++j) {
+      if (j != i) weight *= (t - ts[j]) / (ts[i] - ts[j]);
+    }
+    u += weight * us[i];
+  }
+}
+
+}  // namespace
 
 PathResult solve_displacement_control(const model::Model& model, const VectorX& prescribed,
                                       int steps, const DisplacementControlOptions& options,
@@ -20,6 +42,9 @@ PathResult solve_displacement_control(const model::Model& model, const VectorX& 
   }
   if (!prescribed.allFinite()) throw std::invalid_argument("prescribed: contains NaN or inf");
   if (steps < 1) throw_invalid("steps", steps, "an integer >= 1");
+  if (options.extrapolation < 0 || options.extrapolation > 2) {
+    throw_invalid("extrapolation", options.extrapolation, "0, 1 or 2");
+  }
   if (initial.size() != 0 && initial.size() != n) {
     throw std::invalid_argument("initial: must be empty or have one entry per DOF");
   }
@@ -47,6 +72,17 @@ PathResult solve_displacement_control(const model::Model& model, const VectorX& 
 
   PathResult result;
   result.constraint_dofs = imposed;
+  // The last accepted points of the path, for the extrapolated starting guess.
+  std::vector<double> path_t{0.0};
+  std::vector<VectorX> path_u{u};
+  auto remember = [&](double t_point, const VectorX& u_point) {
+    path_t.push_back(t_point);
+    path_u.push_back(u_point);
+    if (path_t.size() > 3) {
+      path_t.erase(path_t.begin());
+      path_u.erase(path_u.begin());
+    }
+  };
   const double nominal = 1.0 / steps;
   const double smallest = nominal / double(1 << options.max_bisections);
   double t = 0.0;
@@ -58,6 +94,7 @@ PathResult solve_displacement_control(const model::Model& model, const VectorX& 
       ++result.attempted_increments;
       VectorX trial = u;
       const double t_new = (dt >= target - t) ? target : t + dt;
+      if (options.extrapolation > 0) extrapolate(path_t, path_u, options.extrapolation, t_new, trial);
       for (Index i : imposed) trial[i] = start[i] + t_new * prescribed[i];
       const NewtonOutcome outcome = newton_equilibrium(
           assembler, solver, trial, no_load, options.newton, options.reject_iterations);
@@ -65,6 +102,7 @@ PathResult solve_displacement_control(const model::Model& model, const VectorX& 
         u = trial;
         t = t_new;
         result.steps.push_back(record_step(assembler, u, t, outcome, imposed, -1.0));
+        remember(t, u);
         dt = target - t;  // back to the rest of the nominal increment
         continue;
       }

@@ -6,7 +6,8 @@
 /// non-zero components are imposed (zero components stay free). Each increment moves the
 /// imposed DOFs, then Newton runs on the free DOFs until ||du_free||_2 <= tolerance. An
 /// increment that needs `reject_iterations` or more iterations (or fails) is rejected and
-/// retried as two halves, recursively, down to `max_bisections` levels.
+/// retried as two halves, recursively, down to `max_bisections` levels. Optionally the free
+/// DOFs start from an extrapolation of the path (see `extrapolation`).
 
 #include "kresling/model/model.hpp"
 #include "kresling/solvers/path.hpp"
@@ -18,6 +19,11 @@ struct DisplacementControlOptions {
   int reject_iterations = 25;  ///< MERLIN2 rejects an increment needing >= 25 iterations
   int max_bisections = 10;     ///< an increment may be cut to 1/2^10 of its size
   double shift = 1e-8;         ///< diagonal shift of the tangent (MERLIN2's)
+  /// Starting guess of each increment's free DOFs: 0 = the previous equilibrium (MERLIN2's
+  /// Newton sequence, iteration for iteration); 1 = linear, 2 = quadratic extrapolation
+  /// along the path through the last accepted equilibria. The equilibrium found is the same
+  /// (to the Newton tolerance); a good guess only saves iterations.
+  int extrapolation = 0;
 };
 
 /// Trace the path. `prescribed` has one entry per DOF; `initial` (empty = zero) is the

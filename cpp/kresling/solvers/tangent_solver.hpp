@@ -2,7 +2,7 @@
 /// \file tangent_solver.hpp
 /// Factorise a symmetric tangent and solve with it, reporting its inertia.
 ///
-/// CHOLMOD's supernodal Cholesky first (positive definite: a stable equilibrium, no
+/// CHOLMOD's simplicial Cholesky first (positive definite: a stable equilibrium, no
 /// negative eigenvalues). When that fails the tangent is indefinite: a sparse LDL^T
 /// (Eigen's simplicial factorisation with AMD ordering) gives the count of negative
 /// eigenvalues by Sylvester's law of inertia; if its pivots are unusable (an exactly
