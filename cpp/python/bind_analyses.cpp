@@ -20,6 +20,29 @@ std::vector<int> families(const std::vector<model::EdgeFamily>& f) {
   return out;
 }
 
+py::dict bending_result_dict(const analyses::BendingResult& r) {
+  auto array = [](const auto& v) {
+    using T = typename std::decay_t<decltype(v)>::value_type;
+    return py::array_t<T>(v.size(), v.data());
+  };
+  py::dict out;
+  out["stiffness"] = r.stiffness;
+  out["stiffness_intercept"] = r.stiffness_intercept;
+  out["intercept"] = r.intercept;
+  out["module_length"] = r.module_length;
+  out["deflection"] = array(r.deflection);
+  out["force"] = array(r.force);
+  out["angle"] = array(r.angle);
+  out["moment"] = array(r.moment);
+  out["iterations"] = array(r.iterations);
+  out["negative_eigenvalues"] = array(r.negative_eigenvalues);
+  out["completed"] = r.completed;
+  out["message"] = r.message;
+  out["num_dofs"] = r.num_dofs;
+  out["num_free_dofs"] = r.num_free_dofs;
+  return out;
+}
+
 }  // namespace
 
 void bind_analyses(py::module_& m) {
@@ -58,41 +81,33 @@ void bind_analyses(py::module_& m) {
       py::arg("design"), py::arg("states"), py::arg("chirality"), py::arg("parameters"),
       py::arg("fixed"));
 
-  m.def(
-      "bending_test",
-      [](const Design& design, int state, double deflection, int steps, int cells,
-         const SpecimenParameters& parameters, const solvers::DisplacementControlOptions& solver) {
-        analyses::BendingOptions o;
-        o.deflection = deflection;
-        o.steps = steps;
-        o.cells = cells;
-        o.specimen = parameters;
-        o.solver = solver;
-        analyses::BendingResult r;
-        {
-          py::gil_scoped_release release;
-          r = analyses::bending_test(design, state, o);
-        }
-        py::dict out;
-        out["stiffness"] = r.stiffness;
-        out["stiffness_intercept"] = r.stiffness_intercept;
-        out["intercept"] = r.intercept;
-        out["module_length"] = r.module_length;
-        out["deflection"] = py::array_t<double>(r.deflection.size(), r.deflection.data());
-        out["force"] = py::array_t<double>(r.force.size(), r.force.data());
-        out["angle"] = py::array_t<double>(r.angle.size(), r.angle.data());
-        out["moment"] = py::array_t<double>(r.moment.size(), r.moment.data());
-        out["iterations"] = py::array_t<int>(r.iterations.size(), r.iterations.data());
-        out["negative_eigenvalues"] =
-            py::array_t<int>(r.negative_eigenvalues.size(), r.negative_eigenvalues.data());
-        out["completed"] = r.completed;
-        out["message"] = r.message;
-        out["num_dofs"] = r.num_dofs;
-        out["num_free_dofs"] = r.num_free_dofs;
-        return out;
-      },
-      py::arg("design"), py::arg("state"), py::arg("deflection"), py::arg("steps"),
-      py::arg("cells"), py::arg("parameters"), py::arg("solver"));
+  py::class_<analyses::BendingTest>(m, "BendingTest")
+      .def(py::init([](int n, double deflection, double deflection_angle, int steps, int cells,
+                       const SpecimenParameters& parameters,
+                       const solvers::DisplacementControlOptions& solver) {
+             analyses::BendingOptions o;
+             o.deflection = deflection;
+             o.deflection_angle = deflection_angle;
+             o.steps = steps;
+             o.cells = cells;
+             o.specimen = parameters;
+             o.solver = solver;
+             return analyses::BendingTest(n, o);
+           }),
+           py::arg("n"), py::arg("deflection"), py::arg("deflection_angle"), py::arg("steps"),
+           py::arg("cells"),
+           py::arg("parameters"), py::arg("solver"))
+      .def(
+          "run",
+          [](analyses::BendingTest& test, const Design& design, int state) {
+            analyses::BendingResult r;
+            {
+              py::gil_scoped_release release;
+              r = test.run(design, state);
+            }
+            return bending_result_dict(r);
+          },
+          py::arg("design"), py::arg("state"));
 }
 
 }  // namespace kresling::python

@@ -12,22 +12,25 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-void check(const geometry::Design& design, int state, const BendingOptions& o) {
-  const int n = design.parameters().n;
+std::vector<int> alternating(int cells) {
+  std::vector<int> chirality(cells);
+  for (int i = 0; i < cells; ++i) chirality[i] = (i % 2 == 0) ? 1 : -1;
+  return chirality;
+}
+
+void check(int n, const BendingOptions& o) {
   if (n % 2 != 0) {
     throw_invalid("n", n,
                   "even for the bending test: each end is pinned at vertices 0 and n/2, which "
                   "must be opposite");
   }
-  if (state != 0 && state != 1) throw_invalid("state", state, "0 (contracted) or 1 (extended)");
   if (o.cells < 2 || o.cells % 2 != 0) {
     throw_invalid("cells", o.cells, "an even number >= 2 (the load acts on the middle polygon)");
   }
   require_finite("deflection", o.deflection);
-  if (o.deflection == 0.0 || std::abs(o.deflection) >= design.parameters().R) {
-    throw_invalid("deflection", o.deflection,
-                  "non-zero and smaller than the polygon's radius R = " +
-                      format_number(design.parameters().R) + " mm");
+  require_finite("deflection_angle", o.deflection_angle);
+  if (std::abs(o.deflection_angle) >= 1.0) {
+    throw_invalid("deflection_angle", o.deflection_angle, "smaller than 1 rad in magnitude");
   }
   if (o.steps < 1) throw_invalid("steps", o.steps, "an integer >= 1");
 }
@@ -40,31 +43,44 @@ double slope_through_origin(const std::vector<double>& x, const std::vector<doub
   return xx > 0.0 ? xy / xx : kNaN;
 }
 
-BendingResult bending_test(const geometry::Design& design, int state, const BendingOptions& o) {
-  check(design, state, o);
-  const int n = design.parameters().n;
-  std::vector<int> states(o.cells, state), chirality(o.cells);
-  for (int i = 0; i < o.cells; ++i) chirality[i] = (i % 2 == 0) ? 1 : -1;
-
+BendingTest::BendingTest(int n, BendingOptions options)
+    : options_((check(n, options), options)),
+      builder_(n, alternating(options.cells), options.specimen),
+      solver_(options.solver) {
   // Supports: vertices 0 and n/2 and the centre of the end polygons, x y z.
-  const int num_nodes = (o.cells + 1) * (n + 1);
-  std::vector<std::uint8_t> fixed(static_cast<std::size_t>(3 * num_nodes), 0);
-  for (int level : {0, o.cells}) {
+  const int num_nodes = (options_.cells + 1) * (n + 1);
+  fixed_.assign(static_cast<std::size_t>(3 * num_nodes), 0);
+  for (int level : {0, options_.cells}) {
     for (int j : {0, n / 2, n}) {
-      for (int k = 0; k < 3; ++k) fixed[3 * (level * (n + 1) + j) + k] = 1;
+      for (int k = 0; k < 3; ++k) fixed_[3 * (level * (n + 1) + j) + k] = 1;
     }
   }
+}
+
+BendingResult BendingTest::run(const geometry::Design& design, int state) {
+  const BendingOptions& o = options_;
+  if (state != 0 && state != 1) throw_invalid("state", state, "0 (contracted) or 1 (extended)");
+  const double module_length = 2.0 * design.height(static_cast<geometry::State>(state));
+  const double deflection = o.deflection_angle != 0.0
+                                ? module_length * std::tan(o.deflection_angle)
+                                : o.deflection;
+  if (deflection == 0.0 || std::abs(deflection) >= design.parameters().R) {
+    throw_invalid(o.deflection_angle != 0.0 ? "deflection (L tan(deflection_angle))" : "deflection",
+                  deflection,
+                  "non-zero and smaller than the polygon's radius R = " +
+                      format_number(design.parameters().R) + " mm");
+  }
+  const int n = design.parameters().n;
   const model::KreslingSpecimen specimen =
-      model::build_kresling_specimen(design, states, chirality, o.specimen, std::move(fixed));
+      builder_.build(design, std::vector<int>(o.cells, state), fixed_);
   const int middle = o.cells / 2;
   VectorX prescribed = VectorX::Zero(specimen.model.num_dofs());
-  for (int j = 0; j <= n; ++j) prescribed[3 * specimen.node(middle, j) + 1] = -o.deflection;
+  for (int j = 0; j <= n; ++j) prescribed[3 * specimen.node(middle, j) + 1] = -deflection;
 
-  const solvers::PathResult path =
-      solvers::solve_displacement_control(specimen.model, prescribed, o.steps, o.solver);
+  const solvers::PathResult path = solver_.solve(specimen.model, prescribed, o.steps);
 
   BendingResult r;
-  r.module_length = 2.0 * design.height(static_cast<geometry::State>(state));
+  r.module_length = module_length;
   r.completed = path.completed;
   r.message = path.message;
   r.num_dofs = static_cast<int>(specimen.model.num_dofs());
@@ -98,6 +114,10 @@ BendingResult bending_test(const geometry::Design& design, int state, const Bend
     r.stiffness_intercept = r.intercept = kNaN;
   }
   return r;
+}
+
+BendingResult bending_test(const geometry::Design& design, int state, const BendingOptions& o) {
+  return BendingTest(design.parameters().n, o).run(design, state);
 }
 
 }  // namespace kresling::analyses

@@ -21,6 +21,9 @@ namespace kresling::analyses {
 
 struct BendingOptions {
   double deflection = 5.0;  ///< prescribed transverse motion of the middle polygon [mm]
+  /// When non-zero, the motion is instead L tan(deflection_angle) with L the module length
+  /// of the design's state: the thesis's 0.001 rad protocol of the parametric study [rad].
+  double deflection_angle = 0.0;
   int steps = 350;          ///< displacement increments (the thesis: 350 for 5 mm)
   int cells = 4;            ///< even, >= 2: the middle polygon is level cells / 2
   model::SpecimenParameters specimen;
@@ -44,7 +47,27 @@ struct BendingResult {
   int num_free_dofs = 0;
 };
 
-/// Run the test on `design` in `state` (0 contracted, 1 extended). Throws
+/// The test for one polygon size, reusable across designs: the specimen's topology, the
+/// sparsity pattern and the symbolic factorisation are built once (a sweep over lambda and
+/// Lc runs many designs of one n through one BendingTest).
+class BendingTest {
+ public:
+  /// Throws std::invalid_argument for odd n, a bad cell count or bad options.
+  BendingTest(int n, BendingOptions options = {});
+
+  /// Run on `design` (its n must be this test's) in `state` (0 contracted, 1 extended).
+  BendingResult run(const geometry::Design& design, int state);
+
+  const BendingOptions& options() const { return options_; }
+
+ private:
+  BendingOptions options_;
+  model::KreslingSpecimenBuilder builder_;
+  solvers::DisplacementControl solver_;
+  std::vector<std::uint8_t> fixed_;
+};
+
+/// Run the test once on `design` in `state` (0 contracted, 1 extended). Throws
 /// std::invalid_argument for odd n (the pins need opposite vertices), an odd or too small
 /// cell count, a deflection that is zero, not finite or larger than the specimen's radius,
 /// or steps < 1. A run that does not converge returns completed = false with the reason;

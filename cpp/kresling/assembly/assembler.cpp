@@ -30,23 +30,28 @@ int find_slot(const SparseMatrix& m, Index row, Index col) {
   return static_cast<int>(it - m.innerIndexPtr());
 }
 
+// Whether the entry (row r, column c) of the assembled matrix is stored.
+bool stored(Index r, Index c, Storage storage) {
+  return r >= 0 && c >= 0 && (storage == Storage::Full || r >= c);
+}
+
 template <std::size_t D>
 void add_pattern(const std::array<Index, D>& dofs, const std::vector<Index>& rows,
-                 std::vector<Eigen::Triplet<double, int>>& entries) {
+                 Storage storage, std::vector<Eigen::Triplet<double, int>>& entries) {
   for (Index a : dofs) {
     for (Index b : dofs) {
-      if (rows[a] >= 0 && rows[b] >= 0) entries.emplace_back(rows[a], rows[b], 0.0);
+      if (stored(rows[a], rows[b], storage)) entries.emplace_back(rows[a], rows[b], 0.0);
     }
   }
 }
 
 template <std::size_t D>
 void add_slots(const std::array<Index, D>& dofs, const std::vector<Index>& rows,
-               const SparseMatrix& m, std::vector<int>& slots) {
+               Storage storage, const SparseMatrix& m, std::vector<int>& slots) {
   // Column-major within the element, matching Eigen's default storage of the local matrix.
   for (Index b : dofs) {
     for (Index a : dofs) {
-      slots.push_back(rows[a] >= 0 && rows[b] >= 0 ? find_slot(m, rows[a], rows[b]) : -1);
+      slots.push_back(stored(rows[a], rows[b], storage) ? find_slot(m, rows[a], rows[b]) : -1);
     }
   }
 }
@@ -70,6 +75,20 @@ void add_force(const Eigen::Matrix<double, D, 1>& local, const std::array<Index,
 
 }  // namespace
 
+namespace {
+
+std::vector<Index> connectivity_of(const model::Model& model) {
+  std::vector<Index> c;
+  c.reserve(2 * model.bars().size() + 4 * model.hinges().size() + 1);
+  c.push_back(model.num_nodes());
+  for (const auto& b : model.bars()) c.insert(c.end(), b.nodes.begin(), b.nodes.end());
+  for (const auto& h : model.hinges()) c.insert(c.end(), h.nodes.begin(), h.nodes.end());
+  c.push_back(static_cast<Index>(model.bars().size()));
+  return c;
+}
+
+}  // namespace
+
 std::vector<Index> all_dofs(Index num_dofs) {
   std::vector<Index> rows(num_dofs);
   for (Index i = 0; i < num_dofs; ++i) rows[i] = i;
@@ -85,46 +104,63 @@ std::vector<Index> unmasked_dofs(const std::vector<std::uint8_t>& mask) {
   return rows;
 }
 
-Assembler::Assembler(const model::Model& model, std::vector<Index> rows, double shift)
-    : model_(model), rows_(std::move(rows)), shift_(shift) {
-  if (static_cast<Index>(rows_.size()) != model_.num_dofs()) {
+Assembler::Assembler(const model::Model& model, std::vector<Index> rows, double shift,
+                     Storage storage)
+    : model_(&model), rows_(std::move(rows)), shift_(shift), storage_(storage) {
+  if (static_cast<Index>(rows_.size()) != model_->num_dofs()) {
     throw std::invalid_argument("rows: has " + std::to_string(rows_.size()) +
                                 " entries, must have one per DOF (" +
-                                std::to_string(model_.num_dofs()) + ")");
+                                std::to_string(model_->num_dofs()) + ")");
   }
   for (Index r : rows_) size_ = std::max(size_, r + 1);
 
   std::vector<Eigen::Triplet<double, int>> entries;
-  entries.reserve(36 * model_.bars().size() + 144 * model_.hinges().size() + size_);
-  for (const auto& bar : model_.bars()) add_pattern(element_dofs(bar.nodes), rows_, entries);
-  for (const auto& h : model_.hinges()) add_pattern(element_dofs(h.nodes), rows_, entries);
+  entries.reserve(36 * model_->bars().size() + 144 * model_->hinges().size() + size_);
+  for (const auto& bar : model_->bars()) add_pattern(element_dofs(bar.nodes), rows_, storage_, entries);
+  for (const auto& h : model_->hinges()) add_pattern(element_dofs(h.nodes), rows_, storage_, entries);
   for (Index i = 0; i < size_; ++i) entries.emplace_back(i, i, 0.0);
   matrix_.resize(size_, size_);
   matrix_.setFromTriplets(entries.begin(), entries.end());
   matrix_.makeCompressed();
 
-  bar_slots_.reserve(36 * model_.bars().size());
-  for (const auto& bar : model_.bars()) add_slots(element_dofs(bar.nodes), rows_, matrix_, bar_slots_);
-  hinge_slots_.reserve(144 * model_.hinges().size());
-  for (const auto& h : model_.hinges()) add_slots(element_dofs(h.nodes), rows_, matrix_, hinge_slots_);
+  bar_slots_.reserve(36 * model_->bars().size());
+  for (const auto& bar : model_->bars()) {
+    add_slots(element_dofs(bar.nodes), rows_, storage_, matrix_, bar_slots_);
+  }
+  hinge_slots_.reserve(144 * model_->hinges().size());
+  for (const auto& h : model_->hinges()) {
+    add_slots(element_dofs(h.nodes), rows_, storage_, matrix_, hinge_slots_);
+  }
   for (Index i = 0; i < size_; ++i) diagonal_slots_.push_back(find_slot(matrix_, i, i));
+  connectivity_ = connectivity_of(*model_);
+}
+
+bool Assembler::same_connectivity(const model::Model& model) const {
+  return connectivity_ == connectivity_of(model);
+}
+
+void Assembler::rebind(const model::Model& model) {
+  if (!same_connectivity(model)) {
+    throw std::invalid_argument("Assembler::rebind: the model's elements differ from the pattern's");
+  }
+  model_ = &model;
 }
 
 Energies Assembler::assemble(const VectorX& u, VectorX& force, bool with_matrix) {
-  if (u.size() != model_.num_dofs()) {
+  if (u.size() != model_->num_dofs()) {
     throw std::invalid_argument("u: has " + std::to_string(u.size()) + " entries, must have " +
-                                std::to_string(model_.num_dofs()));
+                                std::to_string(model_->num_dofs()));
   }
-  const NodeMatrix& X = model_.nodes();
+  const NodeMatrix& X = model_->nodes();
   auto position = [&](Index node) -> Vector3 {
     return X.row(node).transpose() + u.segment<3>(3 * node);
   };
-  force.setZero(model_.num_dofs());
+  force.setZero(model_->num_dofs());
   double* values = matrix_.valuePtr();
   if (with_matrix) std::fill(values, values + matrix_.nonZeros(), 0.0);
 
   Energies energies;
-  const auto& bars = model_.bars();
+  const auto& bars = model_->bars();
   for (std::size_t e = 0; e < bars.size(); ++e) {
     const auto& bar = bars[e];
     const auto r = elements::bar_response(position(bar.nodes[0]), position(bar.nodes[1]),
@@ -133,9 +169,10 @@ Energies Assembler::assemble(const VectorX& u, VectorX& force, bool with_matrix)
     add_force<6>(r.force, element_dofs(bar.nodes), force);
     if (with_matrix) scatter<6>(r.stiffness, &bar_slots_[36 * e], values);
   }
-  const auto& hinges = model_.hinges();
+  const auto& hinges = model_->hinges();
   for (std::size_t e = 0; e < hinges.size(); ++e) {
     const auto& h = hinges[e];
+    if (h.stiffness == 0.0) continue;  // every spring law vanishes with kp (cut creases)
     const auto r = elements::hinge_response(position(h.nodes[0]), position(h.nodes[1]),
                                             position(h.nodes[2]), position(h.nodes[3]),
                                             h.stiffness, h.rest_angle, h.length, h.law,

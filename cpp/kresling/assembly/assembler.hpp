@@ -7,6 +7,8 @@
 /// refills values. Rows are chosen by a DOF numbering: `rows[dof]` is the row of that DOF in
 /// the assembled matrix, or -1 to leave it out (a fixed or imposed DOF). The tangent is
 /// symmetrised element by element and shifted by `shift` on the diagonal, as MERLIN2 does.
+/// It is stored either whole or as its lower triangle only (what the factorisations read:
+/// half the scatter work). Hinges of zero stiffness contribute nothing and are skipped.
 
 #include <vector>
 
@@ -26,6 +28,9 @@ struct Energies {
   double total() const { return bars + hinges; }
 };
 
+/// Which part of the symmetric tangent is stored.
+enum class Storage { Full, Lower };
+
 /// The numbering that assembles every DOF (rows[i] = i).
 std::vector<Index> all_dofs(Index num_dofs);
 
@@ -35,24 +40,35 @@ std::vector<Index> unmasked_dofs(const std::vector<std::uint8_t>& mask);
 class Assembler {
  public:
   /// `model` must outlive the assembler.
-  Assembler(const model::Model& model, std::vector<Index> rows, double shift = 1e-8);
+  Assembler(const model::Model& model, std::vector<Index> rows, double shift = 1e-8,
+            Storage storage = Storage::Full);
 
   Index size() const { return size_; }
-  const model::Model& model() const { return model_; }
+  const model::Model& model() const { return *model_; }
+
+  /// True if `model` has the same nodes count and elements (node for node, in order) as the
+  /// model this assembler was built for: then `rebind` can reuse the pattern and slots.
+  bool same_connectivity(const model::Model& model) const;
+  /// Evaluate `model` from now on (same connectivity required; throws otherwise). `model`
+  /// must outlive the assembler or the next rebind.
+  void rebind(const model::Model& model);
   const std::vector<Index>& rows() const { return rows_; }
 
   /// Evaluate at displacement u (length num_dofs): `force` gets the internal force of every
   /// DOF (resized to num_dofs); if `with_matrix`, the tangent's values are refilled.
   Energies assemble(const VectorX& u, VectorX& force, bool with_matrix);
 
-  /// The tangent from the last assemble(..., true) call: size() x size(), full symmetric.
+  /// The tangent from the last assemble(..., true) call: size() x size(), symmetric, whole
+  /// or its lower triangle (see Storage).
   const SparseMatrix& matrix() const { return matrix_; }
 
  private:
-  const model::Model& model_;
+  const model::Model* model_;
+  std::vector<Index> connectivity_;  // every element's nodes, bars then hinges
   std::vector<Index> rows_;
   Index size_ = 0;
   double shift_ = 0.0;
+  Storage storage_ = Storage::Full;
   SparseMatrix matrix_;
   std::vector<int> bar_slots_;    // 36 per bar, -1 where a row or column is left out
   std::vector<int> hinge_slots_;  // 144 per hinge

@@ -17,7 +17,9 @@
 /// kf, polygon-spoke hinges 10 kf, mountain hinges 0; bars C0 = 1e5 kf with area 1, mountain
 /// bars area 0.01. Each cell is stress-free in its own state.
 
+#include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "kresling/geometry/design.hpp"
@@ -62,9 +64,48 @@ struct KreslingSpecimen {
   Index node(int level, int j) const { return static_cast<Index>(level) * (n + 1) + j; }
 };
 
-/// Build the stack. `states` (0 contracted, 1 extended) and `chirality` (+1/-1) have one
-/// entry per cell, base first. `fixed` is empty (no supports) or one entry per DOF.
-/// Throws std::invalid_argument for empty or mismatched lists, bad entries or parameters.
+/// Builds specimens of one polygon size and chirality pattern. The topology and element
+/// families depend only on those (and on the node numbering), so a builder computes them
+/// once and each build only places the nodes and sets rest lengths and angles: what a
+/// parametric sweep over (lambda, Lc) needs.
+class KreslingSpecimenBuilder {
+ public:
+  /// `chirality` has one entry (+1/-1) per cell, base first. Throws std::invalid_argument
+  /// for n < 3, an empty list, bad entries or parameters.
+  KreslingSpecimenBuilder(int n, std::vector<int> chirality, SpecimenParameters parameters = {});
+
+  /// Build for `design` (its n must be the builder's) with one state (0 contracted,
+  /// 1 extended) per cell. `fixed` is empty (no supports) or one entry per DOF.
+  KreslingSpecimen build(const geometry::Design& design, const std::vector<int>& states,
+                         std::vector<std::uint8_t> fixed = {}) const;
+
+  int n() const { return n_; }
+  int cells() const { return static_cast<int>(chirality_.size()); }
+
+ private:
+  NodeMatrix place_nodes(const geometry::Design& design, const std::vector<int>& states,
+                         std::vector<double>& heights, std::vector<double>& angles) const;
+  void build_topology_for(const NodeMatrix& X, std::vector<std::array<Index, 2>>& bars,
+                          std::vector<EdgeFamily>& bar_family,
+                          std::vector<std::array<Index, 4>>& hinges,
+                          std::vector<EdgeFamily>& hinge_family) const;
+
+  int n_;
+  std::vector<int> chirality_;
+  SpecimenParameters parameters_;
+  std::vector<std::vector<Index>> panels_;
+  std::vector<std::pair<std::pair<Index, Index>, EdgeFamily>> families_;  // sorted by edge
+  // Cached topology (MERLIN2's duplicated topology depends on node numbers only).
+  bool cached_ = false;
+  std::vector<std::array<Index, 2>> bars_;
+  std::vector<EdgeFamily> bar_family_;
+  std::vector<std::array<Index, 4>> hinges_;
+  std::vector<EdgeFamily> hinge_family_;
+};
+
+/// Build the stack in one call (see KreslingSpecimenBuilder). `states` and `chirality`
+/// have one entry per cell, base first. Throws std::invalid_argument for empty or
+/// mismatched lists, bad entries or parameters.
 KreslingSpecimen build_kresling_specimen(const geometry::Design& design,
                                          const std::vector<int>& states,
                                          const std::vector<int>& chirality,

@@ -4,7 +4,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "kresling/assembly/assembler.hpp"
 #include "kresling/core/check.hpp"
 #include "kresling/solvers/newton.hpp"
 #include "kresling/solvers/rigid_body.hpp"
@@ -30,11 +29,21 @@ void extrapolate(const std::vector<double>& ts, const std::vector<VectorX>& us, 
   }
 }
 
+void check_options(const DisplacementControlOptions& o) {
+  if (o.extrapolation < 0 || o.extrapolation > 2) {
+    throw_invalid("extrapolation", o.extrapolation, "0, 1 or 2");
+  }
+}
+
 }  // namespace
 
-PathResult solve_displacement_control(const model::Model& model, const VectorX& prescribed,
-                                      int steps, const DisplacementControlOptions& options,
-                                      const VectorX& initial) {
+DisplacementControl::DisplacementControl(DisplacementControlOptions options)
+    : options_(options) {
+  check_options(options_);
+}
+
+PathResult DisplacementControl::solve(const model::Model& model, const VectorX& prescribed,
+                                      int steps, const VectorX& initial) {
   const Index n = model.num_dofs();
   if (prescribed.size() != n) {
     throw std::invalid_argument("prescribed: has " + std::to_string(prescribed.size()) +
@@ -42,9 +51,6 @@ PathResult solve_displacement_control(const model::Model& model, const VectorX& 
   }
   if (!prescribed.allFinite()) throw std::invalid_argument("prescribed: contains NaN or inf");
   if (steps < 1) throw_invalid("steps", steps, "an integer >= 1");
-  if (options.extrapolation < 0 || options.extrapolation > 2) {
-    throw_invalid("extrapolation", options.extrapolation, "0, 1 or 2");
-  }
   if (initial.size() != 0 && initial.size() != n) {
     throw std::invalid_argument("initial: must be empty or have one entry per DOF");
   }
@@ -64,8 +70,15 @@ PathResult solve_displacement_control(const model::Model& model, const VectorX& 
   if (imposed.empty()) throw std::invalid_argument("prescribed: every entry is zero");
   require_rigid_body_constrained(model, held);
 
-  assembly::Assembler assembler(model, assembly::unmasked_dofs(held), options.shift);
-  TangentSolver solver;
+  // Reuse the pattern and the symbolic factorisation when only the geometry changed.
+  if (assembler_ && held == held_ && assembler_->same_connectivity(model)) {
+    assembler_->rebind(model);
+  } else {
+    assembler_ = std::make_unique<assembly::Assembler>(model, assembly::unmasked_dofs(held),
+                                                       options_.shift, assembly::Storage::Lower);
+    solver_ = std::make_unique<TangentSolver>();
+    held_ = held;
+  }
   const VectorX no_load = VectorX::Zero(n);
   VectorX u = initial.size() ? initial : VectorX::Zero(n);
   const VectorX start = u;
@@ -75,16 +88,8 @@ PathResult solve_displacement_control(const model::Model& model, const VectorX& 
   // The last accepted points of the path, for the extrapolated starting guess.
   std::vector<double> path_t{0.0};
   std::vector<VectorX> path_u{u};
-  auto remember = [&](double t_point, const VectorX& u_point) {
-    path_t.push_back(t_point);
-    path_u.push_back(u_point);
-    if (path_t.size() > 3) {
-      path_t.erase(path_t.begin());
-      path_u.erase(path_u.begin());
-    }
-  };
   const double nominal = 1.0 / steps;
-  const double smallest = nominal / double(1 << options.max_bisections);
+  const double smallest = nominal / double(1 << options_.max_bisections);
   double t = 0.0;
   for (int k = 1; k <= steps; ++k) {
     const double target = (k == steps) ? 1.0 : k * nominal;
@@ -94,15 +99,20 @@ PathResult solve_displacement_control(const model::Model& model, const VectorX& 
       ++result.attempted_increments;
       VectorX trial = u;
       const double t_new = (dt >= target - t) ? target : t + dt;
-      if (options.extrapolation > 0) extrapolate(path_t, path_u, options.extrapolation, t_new, trial);
+      if (options_.extrapolation > 0) extrapolate(path_t, path_u, options_.extrapolation, t_new, trial);
       for (Index i : imposed) trial[i] = start[i] + t_new * prescribed[i];
       const NewtonOutcome outcome = newton_equilibrium(
-          assembler, solver, trial, no_load, options.newton, options.reject_iterations);
-      if (outcome.converged && outcome.iterations < options.reject_iterations) {
+          *assembler_, *solver_, trial, no_load, options_.newton, options_.reject_iterations);
+      if (outcome.converged && outcome.iterations < options_.reject_iterations) {
         u = trial;
         t = t_new;
-        result.steps.push_back(record_step(assembler, u, t, outcome, imposed, -1.0));
-        remember(t, u);
+        result.steps.push_back(record_step(*assembler_, u, t, outcome, imposed, -1.0));
+        path_t.push_back(t);
+        path_u.push_back(u);
+        if (path_t.size() > 3) {
+          path_t.erase(path_t.begin());
+          path_u.erase(path_u.begin());
+        }
         dt = target - t;  // back to the rest of the nominal increment
         continue;
       }
@@ -116,14 +126,20 @@ PathResult solve_displacement_control(const model::Model& model, const VectorX& 
         result.failed_increment = result.attempted_increments;
         result.message = "increment " + std::to_string(k) + " (of " + std::to_string(steps) +
                          ", at " + format_number(t) + " of the prescribed motion) failed after " +
-                         std::to_string(options.max_bisections) + " bisections; at full size: " +
-                         first_failure;
+                         std::to_string(options_.max_bisections) +
+                         " bisections; at full size: " + first_failure;
         return result;
       }
     }
   }
   result.completed = true;
   return result;
+}
+
+PathResult solve_displacement_control(const model::Model& model, const VectorX& prescribed,
+                                      int steps, const DisplacementControlOptions& options,
+                                      const VectorX& initial) {
+  return DisplacementControl(options).solve(model, prescribed, steps, initial);
 }
 
 }  // namespace kresling::solvers

@@ -9,8 +9,14 @@
 /// retried as two halves, recursively, down to `max_bisections` levels. Optionally the free
 /// DOFs start from an extrapolation of the path (see `extrapolation`).
 
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "kresling/assembly/assembler.hpp"
 #include "kresling/model/model.hpp"
 #include "kresling/solvers/path.hpp"
+#include "kresling/solvers/tangent_solver.hpp"
 
 namespace kresling::solvers {
 
@@ -26,9 +32,27 @@ struct DisplacementControlOptions {
   int extrapolation = 0;
 };
 
-/// Trace the path. `prescribed` has one entry per DOF; `initial` (empty = zero) is the
-/// starting displacement. Throws std::invalid_argument for bad input (sizes, a prescribed
-/// DOF that is also fixed, nothing prescribed, steps < 1).
+/// A reusable displacement-control solver. Solving models of identical connectivity under
+/// identical constraints one after another (a parametric sweep) reuses the sparsity
+/// pattern, the slot map and the symbolic factorisation of the first.
+class DisplacementControl {
+ public:
+  explicit DisplacementControl(DisplacementControlOptions options = {});
+
+  /// Trace the path. `prescribed` has one entry per DOF; `initial` (empty = zero) is the
+  /// starting displacement. Throws std::invalid_argument for bad input (sizes, a prescribed
+  /// DOF that is also fixed, nothing prescribed, steps < 1, free rigid-body motions).
+  PathResult solve(const model::Model& model, const VectorX& prescribed, int steps,
+                   const VectorX& initial = VectorX());
+
+ private:
+  DisplacementControlOptions options_;
+  std::unique_ptr<assembly::Assembler> assembler_;
+  std::unique_ptr<TangentSolver> solver_;
+  std::vector<std::uint8_t> held_;  // constraints the cached pattern was built for
+};
+
+/// One-off solve (see DisplacementControl::solve).
 PathResult solve_displacement_control(const model::Model& model, const VectorX& prescribed,
                                       int steps, const DisplacementControlOptions& options = {},
                                       const VectorX& initial = VectorX());

@@ -43,7 +43,8 @@ PathResult solve_force_control(const model::Model& model, const VectorX& forces,
                                const ForceControlOptions& options, const VectorX& initial) {
   check_inputs(model, forces, initial);
   if (steps < 1) throw_invalid("steps", steps, "an integer >= 1");
-  assembly::Assembler assembler(model, assembly::unmasked_dofs(model.fixed()), options.shift);
+  assembly::Assembler assembler(model, assembly::unmasked_dofs(model.fixed()), options.shift,
+                                assembly::Storage::Lower);
   TangentSolver solver;
   VectorX u = initial.size() ? initial : VectorX::Zero(model.num_dofs());
   PathResult result;
@@ -98,7 +99,8 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
   if (options.monitor_dof >= model.num_dofs()) {
     throw_invalid("monitor_dof", static_cast<double>(options.monitor_dof), "a DOF of the model");
   }
-  assembly::Assembler assembler(model, assembly::unmasked_dofs(model.fixed()), options.shift);
+  assembly::Assembler assembler(model, assembly::unmasked_dofs(model.fixed()), options.shift,
+                                assembly::Storage::Lower);
   TangentSolver solver;
   const VectorX F = gather_rows(assembler, forces);
   VectorX u = initial.size() ? initial : VectorX::Zero(model.num_dofs());

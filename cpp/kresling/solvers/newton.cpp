@@ -36,8 +36,30 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
   NewtonOutcome out;
   const int limit = max_iterations > 0 ? max_iterations : options.max_iterations;
   VectorX force;
+  bool factorized = false;  // a tangent of this solve is factorised
+  double last_correction = INFINITY;
+  const double tol = options.tolerance;
   while (out.iterations < limit) {
     ++out.iterations;
+    if (factorized) {
+      // Chord check first: the correction from the tangent already factorised (at the
+      // previous iterate). Its error is ~ |du_prev| / l of itself (l: the geometry's length
+      // scale), while Newton's final step leaves ~ |du|^2 / l <= tol^2 / l. So when
+      // |du_prev| |du_chord| <= tol^2 the chord step is as accurate as a Newton step would
+      // be, and a new tangent (its assembly and factorisation, most of an iteration's
+      // cost) is not needed.
+      assembler.assemble(u, force, /*with_matrix=*/false);
+      const VectorX residual = gather_rows(assembler, external - force);
+      if (residual.allFinite()) {
+        const VectorX du = solver.solve(residual);
+        const double size = du.norm();
+        if (std::isfinite(size) && size <= tol && last_correction * size <= tol * tol) {
+          scatter_add_rows(assembler, du, u);
+          out.converged = true;
+          return out;
+        }
+      }
+    }
     assembler.assemble(u, force, /*with_matrix=*/true);
     const VectorX residual = gather_rows(assembler, external - force);
     if (!residual.allFinite()) {
@@ -49,6 +71,7 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
       out.failure = "the tangent stiffness is singular (an unconstrained mechanism)";
       return out;
     }
+    factorized = true;
     out.negative_eigenvalues = info.negative_eigenvalues;
     const VectorX du = solver.solve(residual);
     if (!du.allFinite()) {
@@ -63,7 +86,8 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
       return out;
     }
     scatter_add_rows(assembler, du, u);
-    if (du.norm() <= options.tolerance) {
+    last_correction = du.norm();
+    if (last_correction <= tol) {
       out.converged = true;
       return out;
     }

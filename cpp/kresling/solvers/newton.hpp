@@ -20,6 +20,12 @@ struct NewtonOutcome {
 
 /// Iterate from `u` (all DOFs, updated in place) until the correction's norm is at most
 /// `options.tolerance`. `external` has one entry per DOF (only free rows are used).
+/// After the first iteration, each iteration first computes its correction with the
+/// tangent already factorised (a chord step); if it is below the tolerance and its product
+/// with the previous correction is below tolerance^2 (so it is as accurate as a Newton
+/// step), it is applied as the last one, saving a tangent assembly and factorisation;
+/// otherwise a full Newton iteration follows. Iterations count applied corrections, as
+/// MERLIN2 counts them.
 /// `max_iterations` overrides options.max_iterations when > 0 (used to reject early).
 NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& solver,
                                  VectorX& u, const VectorX& external,

@@ -18,7 +18,7 @@ struct TangentSolver::Impl {
   Eigen::UmfPackLU<SparseMatrix> lu;
   bool cholesky_analysed = false, ldlt_analysed = false, lu_analysed = false;
   Factorization current = Factorization::None;
-  const SparseMatrix* matrix = nullptr;  // for the LDL^T residual check
+  SparseMatrix whole;  // the full matrix UMFPACK factorises
 };
 
 TangentSolver::TangentSolver() : impl_(std::make_unique<Impl>()) {
@@ -60,11 +60,13 @@ FactorizeInfo TangentSolver::factorize(const SparseMatrix& K) {
       return info;
     }
   }
+  // LU needs the whole matrix: mirror the lower triangle (rare path).
+  s.whole = K.selfadjointView<Eigen::Lower>();
   if (!s.lu_analysed) {
-    s.lu.analyzePattern(K);
+    s.lu.analyzePattern(s.whole);
     s.lu_analysed = true;
   }
-  s.lu.factorize(K);
+  s.lu.factorize(s.whole);
   if (s.lu.info() == Eigen::Success) {
     s.current = Factorization::LU;
     return {true, Factorization::LU, -1};

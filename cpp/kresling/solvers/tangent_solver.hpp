@@ -34,8 +34,8 @@ class TangentSolver {
   TangentSolver(const TangentSolver&) = delete;
   TangentSolver& operator=(const TangentSolver&) = delete;
 
-  /// Factorise K (full symmetric storage). The pattern is analysed on the first call and
-  /// must stay the same afterwards.
+  /// Factorise the symmetric K, of which only the lower triangle is read (store it whole or
+  /// just that triangle). The pattern is analysed on the first call and must stay the same.
   FactorizeInfo factorize(const SparseMatrix& K);
 
   /// Solve K x = b with the last successful factorisation.
