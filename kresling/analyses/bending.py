@@ -1,0 +1,195 @@
+"""The three-point bending test (thesis section 3.4, Appendix B; MODEL.md).
+
+Two modules (four cells, chirality + - + -) in one state; nodes 0, n/2 and the centre of
+the end polygons pinned; the middle polygon driven transversely. From the summed reaction
+F and the centre's deflection y: ``M = F L`` and ``delta = atan(y / L)`` with L the module
+length, and K_B the least-squares slope of M on delta through the origin (as the thesis's
+code fits it; the fit with intercept, as a lab would fit a measured curve, is reported too).
+
+Two protocols: the thesis's Table 3 runs drive the middle polygon 5 mm in 350 steps; its
+parametric study drives it to a 0.001 rad deflection (``L tan(0.001)``) in 10 steps.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from kresling import _core
+from kresling.geometry import Design, state_index
+from kresling.model.kresling_specimen import SpecimenParameters
+from kresling.solvers.displacement_control import displacement_control_options
+
+__all__ = ["PROTOCOLS", "BendingResult", "BendingComparison", "BendingTester", "bending_test",
+           "bending_stiffness"]
+
+#: The thesis's two loading protocols: Table 3 (5 mm in 350 steps) and the parametric
+#: study (0.001 rad, 10 steps: MODEL.md's choice; the thesis gives no step count).
+PROTOCOLS = {
+    "5mm": {"deflection": 5.0, "deflection_angle": 0.0, "steps": 350},
+    "0.001rad": {"deflection": 0.0, "deflection_angle": 0.001, "steps": 10},
+}
+
+
+@dataclass(frozen=True)
+class BendingResult:
+    """One bending test.
+
+    Attributes
+    ----------
+    design : Design
+    state : int
+        0 contracted, 1 extended.
+    stiffness : float
+        K_B, least-squares slope of M on delta through the origin [N*m/rad].
+    stiffness_intercept, intercept : float
+        Slope [N*m/rad] and intercept [N*m] of the fit with intercept.
+    module_length : float
+        L, two cells' height [mm].
+    deflection, force, angle, moment : ndarray, shape (S,)
+        Per step: the middle polygon's centre deflection [mm], the summed reaction [N],
+        delta [rad] and M [N*m].
+    iterations, negative_eigenvalues : ndarray of int, shape (S,)
+    completed : bool
+        False if an increment failed (``message`` says which and why); the fits then use
+        the increments that converged.
+    num_free_dofs : int
+    """
+
+    design: Design
+    state: int
+    stiffness: float
+    stiffness_intercept: float
+    intercept: float
+    module_length: float
+    deflection: np.ndarray
+    force: np.ndarray
+    angle: np.ndarray
+    moment: np.ndarray
+    iterations: np.ndarray
+    negative_eigenvalues: np.ndarray
+    completed: bool
+    message: str
+    num_free_dofs: int
+
+    @property
+    def state_name(self) -> str:
+        return "extended" if self.state == 1 else "contracted"
+
+
+@dataclass(frozen=True)
+class BendingComparison:
+    """K_B in both states and the ratio K_ext / K_con (thesis eqn 23)."""
+
+    extended: BendingResult
+    contracted: BendingResult
+
+    @property
+    def ratio(self) -> float:
+        return self.extended.stiffness / self.contracted.stiffness
+
+    @property
+    def completed(self) -> bool:
+        return self.extended.completed and self.contracted.completed
+
+
+class BendingTester:
+    """A bending test for one polygon size, reusable across designs (for sweeps).
+
+    The specimen's topology, the sparsity pattern and the symbolic factorisation are built
+    once; each :meth:`run` only places the nodes and solves.
+
+    Parameters
+    ----------
+    n : int
+        Sides of the polygon (even: the pins need opposite vertices).
+    protocol : {"5mm", "0.001rad"}, optional
+        Presets of ``deflection``, ``deflection_angle`` and ``steps`` (:data:`PROTOCOLS`).
+    deflection : float, optional
+        Transverse motion of the middle polygon [mm].
+    deflection_angle : float, optional
+        Drive to this deflection angle instead, ``L tan(angle)`` [rad].
+    steps : int, optional
+    cells : int, default 4
+        Even; the load acts on the middle polygon.
+    parameters : SpecimenParameters, optional
+        Stiffness assignment (the thesis's by default).
+    extrapolation : {0, 1, 2}, default 2
+        Starting guess of each increment (see ``solve_displacement_control``): 2 converges
+        in about one Newton iteration per increment to the same equilibria as MERLIN2's 0.
+    **solver
+        Other options of ``solve_displacement_control`` (tolerance, max_iterations, ...).
+    """
+
+    def __init__(self, n, protocol="5mm", *, deflection=None, deflection_angle=None, steps=None,
+                 cells=4, parameters=None, extrapolation=2, **solver):
+        if protocol not in PROTOCOLS:
+            raise ValueError(f"protocol = {protocol!r} is invalid: must be one of {sorted(PROTOCOLS)}")
+        preset = dict(PROTOCOLS[protocol])
+        if deflection is not None:
+            preset.update(deflection=float(deflection), deflection_angle=0.0)
+        if deflection_angle is not None:
+            preset.update(deflection_angle=float(deflection_angle))
+        if steps is not None:
+            preset["steps"] = steps
+        self.n = n
+        self.parameters = parameters or SpecimenParameters()
+        self.settings = dict(preset, cells=cells)
+        options = displacement_control_options(extrapolation=extrapolation, **solver)
+        self._core = _core.analyses.BendingTest(
+            int(n), float(preset["deflection"]), float(preset["deflection_angle"]),
+            int(preset["steps"]), int(cells), self.parameters.to_core(), options)
+
+    def run(self, design: Design, state) -> BendingResult:
+        """Bend ``design`` (same n) in ``state`` (0/1 or "contracted"/"extended")."""
+        state = state_index(state)
+        if design.n != self.n:
+            raise ValueError(f"design.n = {design.n} is invalid: this tester is for n = {self.n}")
+        d = self._core.run(design._core, state)
+        arrays = {k: np.asarray(d[k]) for k in ("deflection", "force", "angle", "moment",
+                                                "iterations", "negative_eigenvalues")}
+        return BendingResult(design=design, state=state, stiffness=d["stiffness"],
+                             stiffness_intercept=d["stiffness_intercept"],
+                             intercept=d["intercept"], module_length=d["module_length"],
+                             completed=d["completed"], message=d["message"],
+                             num_free_dofs=d["num_free_dofs"], **arrays)
+
+
+def bending_test(design: Design, state, protocol="5mm", **options) -> BendingResult:
+    """Run the three-point bending test on ``design`` in one state.
+
+    Parameters
+    ----------
+    design : Design
+    state : {0, 1, "contracted", "extended"}
+    protocol : {"5mm", "0.001rad"}
+        The thesis's Table 3 runs or its parametric study (:data:`PROTOCOLS`).
+    **options
+        Overrides: ``deflection`` [mm], ``deflection_angle`` [rad], ``steps``, ``cells``,
+        ``parameters`` (SpecimenParameters), solver options (see :class:`BendingTester`).
+
+    Returns
+    -------
+    BendingResult
+
+    Raises
+    ------
+    ValueError
+        For odd n (the pins need opposite vertices), a deflection that is zero or as large
+        as the polygon's radius, an odd cell count, or bad options.
+
+    Examples
+    --------
+    >>> from kresling import Design
+    >>> r = bending_test(Design(8, 0.8, 30), "extended")
+    >>> round(r.stiffness, 4)    # N*m/rad; MERLIN2: 2.797835, thesis: 2.79
+    2.7978
+    """
+    return BendingTester(design.n, protocol, **options).run(design, state)
+
+
+def bending_stiffness(design: Design, protocol="5mm", **options) -> BendingComparison:
+    """K_B in both states and their ratio (see :func:`bending_test` for the options)."""
+    tester = BendingTester(design.n, protocol, **options)
+    return BendingComparison(extended=tester.run(design, 1), contracted=tester.run(design, 0))
