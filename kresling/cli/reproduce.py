@@ -57,9 +57,8 @@ def run(args) -> int:
     with _progress_to_stderr():
         report = build_report(args.out, quick=args.quick, only=args.only,
                               command=_command(args))
-    rows = [(run.chapter.key, run.chapter.part,
-             f"{run.checks_passed}/{len(run.checks)}" if run.section is not None else "-",
-             f"{run.seconds:.1f}", run.outcome) for run in report.runs]
+    rows = [(run.chapter.key, run.chapter.part, run.checks_text, f"{run.seconds:.1f}",
+             run.outcome) for run in report.runs]
     print_table(rows, ("section", "thesis", "checks", "seconds", "outcome"))
     print(f"\n{report.checks_passed}/{report.checks_total} checks passed in "
           f"{report.seconds:.1f} s ({'quick' if report.quick else 'full'})")

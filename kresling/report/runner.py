@@ -64,15 +64,22 @@ class SectionRun:
         return sum(bool(check.passed) for check in self.checks)
 
     @property
+    def checks_text(self) -> str:
+        """``passed/total``, or ``-`` for a section that did not run."""
+        return f"{self.checks_passed}/{len(self.checks)}" if self.status == RAN else "-"
+
+    @property
     def outcome(self) -> str:
-        """A few words for the summary: checks passed, the error or "not yet available"."""
+        """A few words for the summary: the error, "not yet available", or how many checks
+        are outside their tolerance."""
         if self.status == NOT_AVAILABLE:
             return "not yet available"
         if self.status == ERROR:
             return f"error: {self.error}"
         failed = len(self.checks) - self.checks_passed
-        passed = f"{self.checks_passed}/{len(self.checks)} checks passed"
-        return passed if not failed else f"{passed}, {failed} outside tolerance"
+        if not self.checks:
+            return "no checks"
+        return f"{failed} outside tolerance" if failed else "all within tolerance"
 
 
 def run_section(chapter: Chapter, out_dir, quick: bool = True) -> SectionRun:
@@ -100,7 +107,8 @@ def run_section(chapter: Chapter, out_dir, quick: bool = True) -> SectionRun:
     if run.section is not None:
         run.section.seconds = run.seconds
     log = logger.error if run.status == ERROR else logger.info
-    log("%s: %s (%.1f s)", chapter.key, run.outcome, run.seconds)
+    checks = f"{run.checks_text} checks passed, " if run.status == RAN else ""
+    log("%s: %s%s (%.1f s)", chapter.key, checks, run.outcome, run.seconds)
     return run
 
 
