@@ -42,12 +42,16 @@ install: $(VENV)/.installed
 
 # $(call apt_install,PACKAGES,WHAT-IF-MISSING-WITHOUT-ROOT): install the missing Debian
 # packages as root; otherwise name them and run the second argument (exit 1 or carry on).
+# A package counts as present only if installed (`dpkg -s` also knows removed packages).
 define apt_install
 	@if ! command -v dpkg >/dev/null 2>&1; then \
 	  echo "note: not a Debian system; make sure these (or their equivalents) are installed: $(1)"; \
 	else \
 	  missing=""; \
-	  for p in $(1); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	  for p in $(1); do \
+	    dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" \
+	      || missing="$$missing $$p"; \
+	  done; \
 	  if [ -n "$$missing" ]; then \
 	    if [ "$$(id -u)" = 0 ]; then \
 	      echo "Installing Debian packages:$$missing"; \
