@@ -54,16 +54,19 @@ class Report:
 
     @property
     def version(self) -> str:
+        """Version of kresling that made the report."""
         from kresling import __version__
 
         return __version__
 
     @property
     def html_path(self) -> Path:
+        """``out_dir / "report.html"``."""
         return self.out_dir / "report.html"
 
     @property
     def json_path(self) -> Path:
+        """``out_dir / "report.json"``."""
         return self.out_dir / "report.json"
 
     @property
@@ -78,10 +81,12 @@ class Report:
 
     @property
     def checks_passed(self) -> int:
+        """Checks within tolerance, over every section."""
         return sum(run.checks_passed for run in self.runs)
 
     @property
     def checks_total(self) -> int:
+        """Checks over every section that ran."""
         return sum(len(run.checks) for run in self.runs)
 
     def document(self) -> dict:

@@ -14,6 +14,7 @@ import csv
 import math
 from html import escape
 from pathlib import Path
+from urllib.parse import quote
 
 __all__ = ["render_html", "write_html", "summary_table_html", "format_number"]
 
@@ -69,6 +70,7 @@ def render_html(document: dict, out_dir) -> str:
     mode = escape(document["mode"])
     parts = [
         "<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
+        '<meta name="viewport" content="width=device-width, initial-scale=1">',
         f"<title>kresling: reproduction of the thesis ({mode})</title>",
         f"<style>{_STYLE}</style></head><body>",
         "<h1>Bistable generalized Kresling origami: the thesis, reproduced</h1>",
@@ -197,13 +199,13 @@ def _tolerance_text(check: dict) -> str:
 
 
 def _figure_html(item: dict, out_dir: Path) -> str:
-    caption, path = escape(item["caption"]), escape(item["path"])
+    caption, path, href = escape(item["caption"]), escape(item["path"]), _href(item["path"])
     png = (out_dir / item["path"]).read_bytes()
     width = _png_width(png)
     size = f' width="{width}"' if width else ""
     data = base64.b64encode(png).decode("ascii")
     return (f'<figure><img src="data:image/png;base64,{data}"{size} alt="{caption}">'
-            f'<figcaption>{caption} <a href="{path}">{path}</a></figcaption></figure>')
+            f'<figcaption>{caption} <a href="{href}">{path}</a></figcaption></figure>')
 
 
 def _table_html(item: dict, out_dir: Path) -> str:
@@ -215,10 +217,15 @@ def _table_html(item: dict, out_dir: Path) -> str:
             if len(body) > len(shown) else "")
     head = "".join(f"<th>{escape(cell)}</th>" for cell in header)
     lines = "".join("<tr>" + "".join(_csv_cell(cell) for cell in row) + "</tr>" for row in shown)
-    path = escape(item["path"])
-    return (f'<p>{escape(item["caption"])} <a href="{path}">{path}</a></p>'
+    path, href = escape(item["path"]), _href(item["path"])
+    return (f'<p>{escape(item["caption"])} <a href="{href}">{path}</a></p>'
             f'<div class="wide"><table><thead><tr>{head}</tr></thead><tbody>{lines}</tbody>'
             f"</table></div>{more}")
+
+
+def _href(relative_path: str) -> str:
+    """A link to a file beside the page (URL-quoted, then HTML-escaped)."""
+    return escape(quote(relative_path))
 
 
 def _png_width(png: bytes):
