@@ -9,45 +9,67 @@ PY := $(VENV)/bin/python
 BUILD_DIR := build/py
 # libcairo2: cairosvg (the fabrication extra) renders the cut files' PNG previews with it.
 APT_PACKAGES := g++ make libeigen3-dev libsuitesparse-dev libgtest-dev libcairo2
+# Only for `make test`: the report is checked in a real browser (headless Chromium; about
+# 20 s and 500 MB to install).
+APT_TEST_PACKAGES := chromium
+REPORT_DIR := report
 # What the compiled extension depends on: any change reinstalls it (incrementally).
 CORE_SOURCES := CMakeLists.txt pyproject.toml $(shell find cmake cpp -type f 2>/dev/null)
 
-.PHONY: demo test test-cpp test-python install system-deps clean help
+.PHONY: demo test test-cpp test-python install system-deps test-deps clean help
 
 help:
-	@echo "make demo   - reproduce the thesis's optimal design (and, as they land, its tables)"
+	@echo "make demo   - the optimal design's geometry, then reproduce the thesis: $(REPORT_DIR)/report.html"
 	@echo "make test   - C++ unit tests (ctest) and the Python test suite (pytest)"
 	@echo "make clean  - remove build/ and .venv/"
 
 demo: install
 	$(VENV)/bin/kresling design --n 10 --lam 0.9 --Lc 15 --R 30
+	@echo
+	$(VENV)/bin/kresling reproduce --quick --out $(REPORT_DIR)
+	@echo
+	@echo "Open $(REPORT_DIR)/report.html in a browser (report.json holds every check)."
 
 test: install test-cpp test-python
 
 test-cpp: install
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j2
 
-test-python: install
+test-python: install test-deps
 	$(PY) -m pytest -q
 
 install: $(VENV)/.installed
 
-system-deps:
+# $(call apt_install,PACKAGES,WHAT-IF-MISSING-WITHOUT-ROOT): install the missing Debian
+# packages as root; otherwise name them and run the second argument (exit 1 or carry on).
+# A package counts as present only if installed (`dpkg -s` also knows removed packages).
+define apt_install
 	@if ! command -v dpkg >/dev/null 2>&1; then \
-	  echo "note: not a Debian system; make sure Eigen 3, SuiteSparse and GoogleTest are installed"; \
+	  echo "note: not a Debian system; make sure these (or their equivalents) are installed: $(1)"; \
 	else \
 	  missing=""; \
-	  for p in $(APT_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	  for p in $(1); do \
+	    dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" \
+	      || missing="$$missing $$p"; \
+	  done; \
 	  if [ -n "$$missing" ]; then \
 	    if [ "$$(id -u)" = 0 ]; then \
 	      echo "Installing Debian packages:$$missing"; \
 	      apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing >/dev/null; \
 	    else \
 	      echo "Missing Debian packages:$$missing" >&2; \
-	      echo "Install them as root:  apt-get install$$missing" >&2; exit 1; \
+	      echo "Install them as root:  apt-get install$$missing" >&2; $(2); \
 	    fi; \
 	  fi; \
 	fi
+endef
+
+system-deps:
+	$(call apt_install,$(APT_PACKAGES),exit 1)
+
+# Without root and without chromium the browser test is skipped (and says so).
+test-deps:
+	$(call apt_install,$(APT_TEST_PACKAGES),echo "the browser test of the report will be skipped" >&2)
 
 $(VENV)/.venv-ready:
 	$(PYTHON) -m venv $(VENV)

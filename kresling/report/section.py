@@ -54,11 +54,16 @@ class Check:
         return self.difference / abs(self.reference) if self.reference else math.inf
 
     @property
+    def tolerance(self) -> float:
+        """The largest ``|value - reference|`` that passes: ``atol + rtol * |reference|``."""
+        return self.atol + self.rtol * abs(self.reference)
+
+    @property
     def passed(self) -> bool:
         """Within tolerance (False for a NaN value)."""
         if not (math.isfinite(self.value) and math.isfinite(self.reference)):
             return False
-        return abs(self.difference) <= self.atol + self.rtol * abs(self.reference)
+        return abs(self.difference) <= self.tolerance
 
 
 @dataclass

@@ -1,0 +1,61 @@
+"""Small fake report sections for the tests of the report machinery (fast: no real work)."""
+
+import math
+import time
+
+from kresling.report import Check, Section
+
+#: A check name that must come out of the HTML escaped.
+HOSTILE = "<script>alert('x')</script> & co"
+
+
+def _png(path):
+    from matplotlib.figure import Figure
+
+    figure = Figure(figsize=(2, 1.5))
+    figure.add_subplot().plot([0, 1], [1, 0])
+    figure.savefig(path, dpi=50)
+    return path
+
+
+def passing(out_dir, quick=True):
+    """Two passing checks, one figure, one table; records ``quick`` in its summary."""
+    out_dir.mkdir(parents=True, exist_ok=True)
+    time.sleep(0.05)
+    section = Section("Passing part", f"quick={quick}")
+    section.checks += [Check(HOSTILE, 1.0, 1.0, "by hand", atol=1e-9, unit="mm"),
+                       Check("relative", 101.0, 100.0, "by hand", rtol=0.02, note="2 %")]
+    section.add_figure(_png(out_dir / "line.png"), "A line <i>down</i>.")
+    (out_dir / "values.csv").write_text("name,value\nalpha,0.123456789012\n<b>,2\n")
+    section.add_table(out_dir / "values.csv", "Some values.")
+    return section
+
+
+def off_tolerance(out_dir, quick=True):
+    """One check outside its tolerance and one NaN."""
+    section = Section("Part with failing checks")
+    section.checks += [Check("ok", 2.0, 2.0, "thesis", atol=0.1),
+                       Check("too far", 3.0, 2.0, "thesis", atol=0.1, note="known difference"),
+                       Check("not a number", math.nan, 2.0, "thesis", atol=0.1)]
+    return section
+
+
+def raising(out_dir, quick=True):
+    raise RuntimeError("boom <b>")
+
+
+def not_a_section(out_dir, quick=True):
+    return 42
+
+
+def figure_not_written(out_dir, quick=True):
+    section = Section("Lists a figure it did not write")
+    section.add_figure(out_dir / "nowhere.png", "missing")
+    return section
+
+
+def leaves_a_figure_open(out_dir, quick=True):
+    import matplotlib.pyplot as plt
+
+    plt.figure()
+    return Section("Leaves a pyplot figure open")

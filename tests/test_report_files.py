@@ -1,0 +1,117 @@
+"""report.json and report.html written by build_report, on fake sections."""
+
+import json
+import math
+import re
+
+import pytest
+
+from kresling.report.build import build_report
+from kresling.report.chapters import Chapter
+from kresling.report.html_report import format_number
+
+CHAPTERS = (
+    Chapter("good", "Part 1", "Good", "report_fakes", "passing"),
+    Chapter("off", "Part 2", "Off", "report_fakes", "off_tolerance"),
+    Chapter("later", "Part 3", "Written later", "kresling.not_written_yet"),
+    Chapter("broken", "Part 4", "Broken", "report_fakes", "raising"),
+)
+
+
+@pytest.fixture(scope="module")
+def report(tmp_path_factory):
+    return build_report(tmp_path_factory.mktemp("report"), quick=True, chapters=CHAPTERS,
+                        command="kresling reproduce --quick")
+
+
+def _no_nan(text):
+    raise AssertionError(f"{text} in report.json")
+
+
+@pytest.fixture(scope="module")
+def document(report):
+    return json.loads(report.json_path.read_text(), parse_constant=_no_nan)
+
+
+@pytest.fixture(scope="module")
+def page(report):
+    return report.html_path.read_text()
+
+
+def test_json_summarizes_the_run(document):
+    assert document["mode"] == "quick" and document["command"] == "kresling reproduce --quick"
+    assert (document["checks_passed"], document["checks_total"]) == (3, 5)
+    assert document["errors"] == ["broken"] and document["not_available"] == ["later"]
+    assert [s["key"] for s in document["sections"]] == ["good", "off", "later", "broken"]
+    assert [s["status"] for s in document["sections"]] == ["ran", "ran", "not available",
+                                                            "error"]
+
+
+def test_json_has_every_check_with_its_tolerance(document):
+    good, off = document["sections"][:2]
+    relative = good["checks"][1]
+    assert relative == {
+        "name": "relative", "value": 101.0, "reference": 100.0, "source": "by hand",
+        "unit": "", "rtol": 0.02, "atol": 0.0, "tolerance": 2.0, "difference": 1.0,
+        "relative_difference": 0.01, "passed": True, "note": "2 %"}
+    assert [c["passed"] for c in off["checks"]] == [True, False, False]
+    nan = off["checks"][2]
+    assert nan["value"] is None and nan["difference"] is None and nan["reference"] == 2.0
+
+
+def test_json_keeps_errors_and_file_paths_relative_to_the_report(report, document):
+    broken = document["sections"][3]
+    assert broken["error"] == "RuntimeError: boom <b>" and "Traceback" in broken["traceback"]
+    good = document["sections"][0]
+    assert good["figures"] == [{"path": "good/line.png", "caption": "A line <i>down</i>."}]
+    assert good["tables"][0]["path"] == "good/values.csv"
+    assert (report.out_dir / good["figures"][0]["path"]).is_file()
+    assert good["seconds"] >= 0.05 and document["seconds"] >= good["seconds"]
+
+
+def test_html_escapes_every_text_it_inserts(page):
+    assert "<script>" not in page and "<b>" not in page and "<i>down" not in page
+    assert "&lt;script&gt;alert(&#x27;x&#x27;)&lt;/script&gt; &amp; co" in page
+    assert "RuntimeError: boom &lt;b&gt;" in page
+    assert "A line &lt;i&gt;down&lt;/i&gt;." in page
+
+
+def test_html_embeds_the_figures_and_renders_the_tables(page):
+    images = re.findall(r'<img src="([^"]*)"', page)
+    assert len(images) == 1 and images[0].startswith("data:image/png;base64,iVBORw0KGgo")
+    assert '<a href="good/values.csv">good/values.csv</a>' in page
+    # Long floats shortened, the full value on hover; text cells escaped.
+    assert '<td class="num" title="0.123456789012">0.123457</td>' in page
+    assert "<td>&lt;b&gt;</td>" in page
+
+
+def test_html_shows_each_outcome(page):
+    summary = page[page.index('<table class="summary">'):page.index("</table>")]
+    assert summary.count("<tr>") == 1 + 4 + 1  # header, sections, total
+    assert '<td class="num">1/3</td><td class="fail">2 outside tolerance</td>' in summary
+    assert '<td class="num">-</td><td class="missing">not yet available</td>' in summary
+    assert "not yet available" in summary and "error: RuntimeError" in summary
+    assert page.count('class="fail-row"') == 2
+    assert page.count("&#10003; pass") == 3 and page.count("&#10007; fail") == 2
+    assert "1/3 checks passed, 2 outside tolerance (" in page
+    assert "Not yet available: module kresling.not_written_yet does not exist yet" in page
+
+
+def test_the_report_shows_its_summary_in_a_notebook(report):
+    html = report._repr_html_()
+    assert html.startswith('<table class="summary">') and "Written later" in html
+
+
+def test_format_number_shows_the_digits_the_tolerance_resolves():
+    assert format_number(55.819466779781926, 1e-9) == "55.81946677978"
+    assert format_number(0.04693333, 0.0005) == "0.04693"
+    assert format_number(1.4e-14, 1e-9) == "1.4e-14"
+    assert format_number(2.0, 0.0) == "2"
+    assert format_number(1 / 3, 0.0) == "0.333333333333333"
+    assert format_number(None) == "-" and format_number(math.inf, 1) == "inf"
+
+
+def test_unknown_sections_are_rejected_before_anything_runs(tmp_path):
+    with pytest.raises(ValueError, match="unknown section 'nope'"):
+        build_report(tmp_path / "r", only=["nope"], chapters=CHAPTERS)
+    assert not (tmp_path / "r").exists()
