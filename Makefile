@@ -16,11 +16,12 @@ REPORT_DIR := report
 # What the compiled extension depends on: any change reinstalls it (incrementally).
 CORE_SOURCES := CMakeLists.txt pyproject.toml $(shell find cmake cpp -type f 2>/dev/null)
 
-.PHONY: demo test test-cpp test-python install system-deps test-deps clean help
+.PHONY: demo test test-cpp test-python install system-deps test-deps benchmark clean help
 
 help:
 	@echo "make demo   - the optimal design's geometry, then reproduce the thesis: $(REPORT_DIR)/report.html"
 	@echo "make test   - C++ unit tests (ctest) and the Python test suite (pytest)"
+	@echo "make benchmark - solver speed and memory against MERLIN2 (prints tables)"
 	@echo "make clean  - remove build/ and .venv/"
 
 demo: install
@@ -82,8 +83,12 @@ $(VENV)/.venv-ready:
 $(VENV)/.installed: $(VENV)/.venv-ready $(CORE_SOURCES) | system-deps
 	$(PY) -m pip install -q --no-build-isolation \
 	  -Cbuild-dir=$(BUILD_DIR) -Ccmake.define.KRESLING_BUILD_TESTS=ON \
+	  -Ccmake.define.KRESLING_BUILD_BENCHMARKS=ON \
 	  -e ".[test]"
 	touch $@
+
+benchmark: install
+	$(PY) benchmarks/solver_speed.py
 
 clean:
 	rm -rf build $(VENV)

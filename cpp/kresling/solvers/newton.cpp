@@ -1,5 +1,7 @@
 #include "kresling/solvers/newton.hpp"
 
+#include <cstdio>
+
 #include <cmath>
 
 namespace kresling::solvers {
@@ -92,7 +94,12 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
       return out;
     }
   }
-  out.failure = "Newton did not converge in " + std::to_string(limit) + " iterations";
+  // Say how it failed: corrections that stagnate around a small value are rounding noise
+  // of an ill-conditioned tangent (the absolute tolerance is below what it can resolve).
+  char detail[96];
+  std::snprintf(detail, sizeof detail, " (last correction %.3g mm > tolerance %.3g mm)",
+                last_correction, tol);
+  out.failure = "Newton did not converge in " + std::to_string(limit) + " iterations" + detail;
   return out;
 }
 
