@@ -5,6 +5,7 @@
 #include <string>
 
 #include "kresling/core/check.hpp"
+#include "kresling/solvers/increments.hpp"
 #include "kresling/solvers/newton.hpp"
 #include "kresling/solvers/rigid_body.hpp"
 
@@ -88,51 +89,36 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
   // The last accepted points of the path, for the extrapolated starting guess.
   std::vector<double> path_t{0.0};
   std::vector<VectorX> path_u{u};
-  const double nominal = 1.0 / steps;
-  const double smallest = nominal / double(1 << options_.max_bisections);
-  double t = 0.0;
-  for (int k = 1; k <= steps; ++k) {
-    const double target = (k == steps) ? 1.0 : k * nominal;
-    double dt = target - t;
-    std::string first_failure;  // why the whole increment failed, the most telling reason
-    while (t < target) {
-      ++result.attempted_increments;
-      VectorX trial = u;
-      const double t_new = (dt >= target - t) ? target : t + dt;
-      if (options_.extrapolation > 0) extrapolate(path_t, path_u, options_.extrapolation, t_new, trial);
-      for (Index i : imposed) trial[i] = start[i] + t_new * prescribed[i];
-      const NewtonOutcome outcome = newton_equilibrium(
-          *assembler_, *solver_, trial, no_load, options_.newton, options_.reject_iterations);
-      if (outcome.converged && outcome.iterations < options_.reject_iterations) {
-        u = trial;
-        t = t_new;
-        result.steps.push_back(record_step(*assembler_, u, t, outcome, imposed, -1.0));
-        path_t.push_back(t);
-        path_u.push_back(u);
-        if (path_t.size() > 3) {
-          path_t.erase(path_t.begin());
-          path_u.erase(path_u.begin());
-        }
-        dt = target - t;  // back to the rest of the nominal increment
-        continue;
-      }
-      if (first_failure.empty()) {
-        first_failure = outcome.failure.empty()
-                            ? "Newton needed " + std::to_string(outcome.iterations) + " iterations"
-                            : outcome.failure;
-      }
-      dt *= 0.5;
-      if (dt < smallest) {
-        result.failed_increment = result.attempted_increments;
-        result.message = "increment " + std::to_string(k) + " (of " + std::to_string(steps) +
-                         ", at " + format_number(t) + " of the prescribed motion) failed after " +
-                         std::to_string(options_.max_bisections) +
-                         " bisections; at full size: " + first_failure;
-        return result;
-      }
-    }
-  }
-  result.completed = true;
+  march(steps, options_.max_bisections, result,
+        [&](double t, double t_new, std::string& failure) {
+          VectorX trial = u;
+          if (options_.extrapolation > 0) {
+            extrapolate(path_t, path_u, options_.extrapolation, t_new, trial);
+          }
+          for (Index i : imposed) trial[i] = start[i] + t_new * prescribed[i];
+          const NewtonOutcome outcome = newton_equilibrium(
+              *assembler_, *solver_, trial, no_load, options_.newton, options_.reject_iterations);
+          if (!(outcome.converged && outcome.iterations < options_.reject_iterations)) {
+            failure = outcome.failure.empty()
+                          ? "Newton needed " + std::to_string(outcome.iterations) + " iterations"
+                          : outcome.failure;
+            return false;
+          }
+          u = trial;
+          result.steps.push_back(record_step(*assembler_, u, t_new, outcome, imposed, -1.0));
+          path_t.push_back(t_new);
+          path_u.push_back(u);
+          if (path_t.size() > 3) {
+            path_t.erase(path_t.begin());
+            path_u.erase(path_u.begin());
+          }
+          return true;
+        },
+        [&](int k, double t, const std::string& reason) {
+          return "increment " + std::to_string(k) + " (of " + std::to_string(steps) + ", at " +
+                 format_number(t) + " of the prescribed motion) failed after " +
+                 std::to_string(options_.max_bisections) + " bisections; at full size: " + reason;
+        });
   return result;
 }
 

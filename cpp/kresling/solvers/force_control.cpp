@@ -6,6 +6,7 @@
 
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/core/check.hpp"
+#include "kresling/solvers/increments.hpp"
 #include "kresling/solvers/newton.hpp"
 #include "kresling/solvers/rigid_body.hpp"
 
@@ -49,39 +50,25 @@ PathResult solve_force_control(const model::Model& model, const VectorX& forces,
   VectorX u = initial.size() ? initial : VectorX::Zero(model.num_dofs());
   PathResult result;
   result.constraint_dofs = fixed_dofs(model);
-  const double nominal = 1.0 / steps;
-  const double smallest = nominal / double(1 << options.max_bisections);
-  double lambda = 0.0;
-  for (int k = 1; k <= steps; ++k) {
-    const double target = (k == steps) ? 1.0 : k * nominal;
-    double dl = target - lambda;
-    std::string first_failure;  // why the whole load step failed, the most telling reason
-    while (lambda < target) {
-      ++result.attempted_increments;
-      const double l_new = (dl >= target - lambda) ? target : lambda + dl;
-      VectorX trial = u;
-      const NewtonOutcome outcome =
-          newton_equilibrium(assembler, solver, trial, l_new * forces, options.newton);
-      if (outcome.converged) {
-        u = trial;
-        lambda = l_new;
-        result.steps.push_back(record_step(assembler, u, lambda, outcome, result.constraint_dofs, 1.0));
-        dl = target - lambda;
-        continue;
-      }
-      if (first_failure.empty()) first_failure = outcome.failure;
-      dl *= 0.5;
-      if (dl < smallest) {
-        result.failed_increment = result.attempted_increments;
-        result.message = "no equilibrium found beyond load factor " + format_number(lambda) +
-                         " (load step " + std::to_string(k) + " of " + std::to_string(steps) +
-                         ", " + std::to_string(options.max_bisections) +
-                         " bisections; a limit point? use MGDCM); at full size: " + first_failure;
-        return result;
-      }
-    }
-  }
-  result.completed = true;
+  march(steps, options.max_bisections, result,
+        [&](double, double l_new, std::string& failure) {
+          VectorX trial = u;
+          const NewtonOutcome outcome =
+              newton_equilibrium(assembler, solver, trial, l_new * forces, options.newton);
+          if (!outcome.converged) {
+            failure = outcome.failure;
+            return false;
+          }
+          u = trial;
+          result.steps.push_back(record_step(assembler, u, l_new, outcome, result.constraint_dofs, 1.0));
+          return true;
+        },
+        [&](int k, double lambda, const std::string& reason) {
+          return "no equilibrium found beyond load factor " + format_number(lambda) +
+                 " (load step " + std::to_string(k) + " of " + std::to_string(steps) + ", " +
+                 std::to_string(options.max_bisections) +
+                 " bisections; a limit point? use MGDCM); at full size: " + reason;
+        });
   return result;
 }
 
