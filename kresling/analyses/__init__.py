@@ -1,8 +1,10 @@
 """The thesis's analyses on Kresling specimens (chapter 3): the three-point bending test in
-both stable states and the bending-stiffness ratio; more analyses build on these."""
+both stable states and the bending-stiffness ratio, its linearised (infinitesimal) form, and
+the snap-through test of bistability strength."""
 
 from kresling.analyses.bending import (PROTOCOLS, BendingComparison, BendingResult, BendingTester,
                                        bending_stiffness, bending_test)
+from kresling.analyses.snap_through import SnapThroughResult, SnapThroughTester, snap_through
 
 __all__ = ["PROTOCOLS", "BendingResult", "BendingComparison", "BendingTester", "bending_test",
-           "bending_stiffness"]
+           "bending_stiffness", "SnapThroughResult", "SnapThroughTester", "snap_through"]
