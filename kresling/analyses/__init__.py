@@ -4,7 +4,9 @@ the snap-through test of bistability strength."""
 
 from kresling.analyses.bending import (PROTOCOLS, BendingComparison, BendingResult, BendingTester,
                                        bending_stiffness, bending_test)
+from kresling.analyses.linear_bending import LinearBendingTester, linear_bending_stiffness
 from kresling.analyses.snap_through import SnapThroughResult, SnapThroughTester, snap_through
 
 __all__ = ["PROTOCOLS", "BendingResult", "BendingComparison", "BendingTester", "bending_test",
-           "bending_stiffness", "SnapThroughResult", "SnapThroughTester", "snap_through"]
+           "bending_stiffness", "LinearBendingTester", "linear_bending_stiffness",
+           "SnapThroughResult", "SnapThroughTester", "snap_through"]
