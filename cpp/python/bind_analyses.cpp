@@ -39,6 +39,8 @@ py::dict bending_result_dict(const analyses::BendingResult& r) {
   out["moment"] = array(r.moment);
   out["iterations"] = array(r.iterations);
   out["negative_eigenvalues"] = array(r.negative_eigenvalues);
+  out["final_displacement"] =
+      py::array_t<double>(r.final_displacement.size(), r.final_displacement.data());
   out["completed"] = r.completed;
   out["message"] = r.message;
   out["num_dofs"] = r.num_dofs;
