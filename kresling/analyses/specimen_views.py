@@ -144,7 +144,7 @@ def write_specimen_fold(path, specimen, **options):
 
 
 def plot_specimen(specimen, displacement=None, *, scale: float = 1.0, ax=None,
-                  undeformed: bool = True, title: str = ""):
+                  undeformed: bool = True, title: str = "", view=None):
     """Draw a specimen in 3D: facets, creases by family, optionally displaced.
 
     Parameters
@@ -158,6 +158,9 @@ def plot_specimen(specimen, displacement=None, *, scale: float = 1.0, ax=None,
     undeformed : bool, default True
         Also draw the built geometry, as a faint wireframe, when displaced.
     title : str
+    view : (float, float), optional
+        Elevation and azimuth of the camera [degrees] (``(10, 0)`` looks along x, so a
+        bending test's deflection along y is seen side on).
 
     Returns
     -------
@@ -189,6 +192,8 @@ def plot_specimen(specimen, displacement=None, *, scale: float = 1.0, ax=None,
     ax.set_zlim(low[2], low[2] + span[2])
     ax.set_box_aspect(np.maximum(span, 1e-9))
     ax.set_xlabel("x [mm]"), ax.set_ylabel("y [mm]"), ax.set_zlabel("z [mm]")
+    if view is not None:
+        ax.view_init(*view)
     d = specimen.design
     states = "extended" if set(specimen.states) == {1} else \
         "contracted" if set(specimen.states) == {0} else f"states {list(specimen.states)}"
