@@ -134,9 +134,10 @@ void SnapThroughTest::release(const model::Model& model, const VectorX& start, I
   r.stable_energy = rest.energy;
   r.stable_tilt = top_tilt(model, u, builder_.n());
   r.bistable = r.stable_displacement > r.unstable_displacement;
-  r.bistability = r.bistable ? "second stable state at height " + mm(r.stable_height) +
-                                   ", tilted " + format_number(std::round(r.stable_tilt * 1800 / kPi) / 10) +
-                                   " degrees"
+  const double tilt_degrees = std::round(r.stable_tilt * 1800 / kPi) / 10;
+  const std::string pose =
+      tilt_degrees > 0 ? "tilted " + format_number(tilt_degrees) + " degrees" : "level";
+  r.bistability = r.bistable ? "second stable state at height " + mm(r.stable_height) + ", " + pose
                              : "released, the cell returned over the barrier (height " +
                                    mm(r.stable_height) + ")";
 }
