@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling.analyses.linear_bending import LinearBendingTester
+from kresling.analyses.plots import plot_orientation_study
 from kresling.geometry import Design
 
 __all__ = ["OrientationStudy", "orientation_study", "plot_orientation_study"]
@@ -95,35 +96,3 @@ def orientation_study(design: Design, angles=None, *, points: int = 25, pin_offs
                                   for a in angles]) for state in (0, 1)}
     return OrientationStudy(design=design, angles=angles, extended=stiffness[1],
                             contracted=stiffness[0], pin_offset=float(pin_offset))
-
-
-def plot_orientation_study(studies, axes=None):
-    """Figure A-1: the K_B ratio (left) and each state's K_B relative to its value at
-    beta = 0 (right) against the bending axis angle, one line per study.
-
-    Parameters
-    ----------
-    studies : sequence of OrientationStudy
-    axes : pair of matplotlib.axes.Axes, optional
-
-    Returns
-    -------
-    pair of matplotlib.axes.Axes
-    """
-    if axes is None:
-        import matplotlib.pyplot as plt
-
-        axes = plt.figure(figsize=(9.0, 3.6), layout="constrained").subplots(1, 2)
-    left, right = axes
-    for study in studies:
-        d = study.design
-        line, = left.plot(study.angles, study.ratio, label=f"n={d.n}")
-        for values, style in ((study.extended, "-"), (study.contracted, "--")):
-            right.plot(study.angles, 100 * (values / values[0] - 1), style, color=line.get_color())
-    left.set_xlabel("bending axis angle β [rad]")
-    left.set_ylabel("K_B ratio (linearised)")
-    left.legend(fontsize=8)
-    right.set_xlabel("bending axis angle β [rad]")
-    right.set_ylabel("K_B(β) / K_B(0) - 1 [%]")
-    right.set_title("solid: extended, dashed: contracted", fontsize=8)
-    return axes

@@ -9,7 +9,10 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["plot_moment_angle", "plot_table3_design", "plot_stiffness_by_n", "plot_snap_through"]
+from kresling.fits.plots import label_moment_angle_axes
+
+__all__ = ["plot_moment_angle", "plot_table3_design", "plot_stiffness_by_n", "plot_snap_through",
+           "plot_orientation_study"]
 
 _COLORS = {"extended": "tab:blue", "contracted": "tab:orange"}
 _LABELS = {"extended": "state (1), extended", "contracted": "state (0), contracted"}
@@ -21,6 +24,14 @@ def _axes(ax, size=(5.5, 4.0)):
     import matplotlib.pyplot as plt
 
     return plt.figure(figsize=size, layout="constrained").add_subplot()
+
+
+def _axes_pair(axes, size=(9.5, 3.8)):
+    if axes is not None:
+        return axes
+    import matplotlib.pyplot as plt
+
+    return plt.figure(figsize=size, layout="constrained").subplots(1, 2)
 
 
 def plot_moment_angle(comparison, ax=None, *, reference=None, experiment=None, title=""):
@@ -62,14 +73,7 @@ def plot_moment_angle(comparison, ax=None, *, reference=None, experiment=None, t
             if np.isfinite(sd):
                 ax.fill_between(delta, (mean - sd) * delta, (mean + sd) * delta, color=color,
                                 alpha=0.15, lw=0)
-    ax.set_xlabel("deflection angle δ [rad]")
-    ax.set_ylabel("moment M [N·m]")
-    ax.set_xlim(left=0.0)
-    ax.set_ylim(bottom=0.0)
-    ax.legend(fontsize=7, loc="upper left")
-    if title:
-        ax.set_title(title, fontsize=9)
-    return ax
+    return label_moment_angle_axes(ax, title)
 
 
 def plot_table3_design(entry, ax=None, reference_curves=None):
@@ -99,11 +103,7 @@ def plot_stiffness_by_n(comparisons: dict, axes=None):
     -------
     pair of matplotlib.axes.Axes
     """
-    if axes is None:
-        import matplotlib.pyplot as plt
-
-        axes = plt.figure(figsize=(9.5, 3.8), layout="constrained").subplots(1, 2)
-    left, right = axes
+    left, right = _axes_pair(axes)
     ns = sorted(comparisons)
     for n in ns:
         c = comparisons[n]
@@ -117,7 +117,7 @@ def plot_stiffness_by_n(comparisons: dict, axes=None):
     right.set_xticks(ns)
     right.set_xlabel("number of sides n")
     right.set_ylabel("K_B ratio")
-    return axes
+    return left, right
 
 
 def plot_snap_through(result, ax=None, *, title=""):
@@ -152,3 +152,23 @@ def plot_snap_through(result, ax=None, *, title=""):
     ax.set_title(title or f"n = {d.n}, Lc = {d.Lc:g} mm, λ = {d.lam:g}: "
                           f"{'bistable' if result.bistable else 'not bistable'}", fontsize=9)
     return ax
+
+
+def plot_orientation_study(studies, axes=None):
+    """Figure A-1: the K_B ratio (left) and each state's K_B relative to its value at
+    beta = 0 (right) against the bending axis angle, one line per
+    :class:`~kresling.analyses.orientation.OrientationStudy` of ``studies``; returns the pair
+    of axes (``axes``, or a new figure's)."""
+    left, right = _axes_pair(axes)
+    for study in studies:
+        d = study.design
+        line, = left.plot(study.angles, study.ratio, label=f"n={d.n}")
+        for values, style in ((study.extended, "-"), (study.contracted, "--")):
+            right.plot(study.angles, 100 * (values / values[0] - 1), style, color=line.get_color())
+    left.set_xlabel("bending axis angle β [rad]")
+    left.set_ylabel("K_B ratio (linearised)")
+    left.legend(fontsize=8)
+    right.set_xlabel("bending axis angle β [rad]")
+    right.set_ylabel("K_B(β) / K_B(0) - 1 [%]")
+    right.set_title("solid: extended, dashed: contracted", fontsize=8)
+    return left, right

@@ -101,12 +101,7 @@ def _table3_part(section: Section, out_dir: Path, table) -> str:
     section.checks.append(Check(
         "force histories vs MERLIN2, largest relative difference", worst, 0.0,
         "MERLIN2 reference runs, all 350 steps of 8 runs", atol=1e-4, note="issue 4's bar"))
-    path = out_dir / "table3.csv"
-    rows = [entry.row() for entry in table]
-    with open(path, "w", newline="") as handle:
-        writer = csv.DictWriter(handle, fieldnames=list(rows[0]), lineterminator="\n")
-        writer.writeheader()
-        writer.writerows(rows)
+    path = _write_rows(out_dir / "table3.csv", [entry.row() for entry in table])
     section.add_table(path, "Table 3 side by side: ours, the MERLIN2 reference runs, the "
                             "thesis's model and experiment columns (K_B in N*m/rad).")
     optimum = table[-1].ours.ratio
@@ -117,6 +112,15 @@ def _table3_part(section: Section, out_dir: Path, table) -> str:
             f"{optimum:.2f} (thesis 16.77; its specimen measured 11.79, a disagreement the "
             f"thesis notes). Model and experimental ratios of samples 1-3 agree within ±1, as "
             f"the thesis says, with its printed ratios.")
+
+
+def _write_rows(path: Path, rows) -> Path:
+    """Write dicts with the same keys as CSV (a header, then one line each)."""
+    with open(path, "w", newline="") as handle:
+        writer = csv.DictWriter(handle, fieldnames=list(rows[0]), lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+    return path
 
 
 def _history_error(entry) -> float:
@@ -237,11 +241,7 @@ def _snap_part(section: Section, out_dir: Path, quick: bool) -> str:
 
 def _topology_part(section: Section, out_dir: Path) -> str:
     effect = topology_effect()
-    path = out_dir / "topology_effect.csv"
-    with open(path, "w", newline="") as handle:
-        writer = csv.DictWriter(handle, fieldnames=list(effect[0]), lineterminator="\n")
-        writer.writeheader()
-        writer.writerows(effect)
+    path = _write_rows(out_dir / "topology_effect.csv", effect)
     section.add_table(path, "One bar and hinge per edge instead of MERLIN2's one per pair of "
                             "triangles: relative change of K_B and of the ratio (5 mm).")
     optimum = next(e for e in effect if e["n"] == 10)
