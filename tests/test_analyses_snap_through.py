@@ -61,6 +61,16 @@ def test_bistability_verdicts():
     assert "tilted" in optimum.bistability
 
 
+def test_second_state_near_the_edge_of_bistability():
+    # A shallow dip (-0.015 N): released, the top polygon's centre node domes up by 0.6 mm;
+    # the cell's travel is read from the perimeter, past the unstable state.
+    r = snap_through(Design(4, 0.725, 33.75))
+    assert -0.02 < r.minimum_force < 0
+    assert r.bistable and r.stable_negative_eigenvalues == 0
+    assert r.unstable_displacement < r.stable_displacement < r.displacement[-1]
+    assert 0 < r.stable_energy < r.energy_barrier
+
+
 def test_no_local_maximum_gives_nan_and_says_so():
     r = snap_through(Design(10, 0.7, 60))
     assert r.completed and not r.has_peak and math.isnan(r.snap_force)

@@ -18,16 +18,18 @@ parabola through the peak sample and its neighbours; the **energy barrier** is t
 energy at the **unstable state**, the first zero of F after the peak, which equals the work
 of the drive up to it (the energy is recorded at every step and interpolated with its
 derivative F); the cell is **bistable** when F rises back through zero and the cell released
-there (every top DOF free, no load) comes to rest past the barrier, at an energy minimum
-(positive-definite tangent). The drive keeps the top polygon level; released, it may tilt:
-the optimum's level contracted equilibrium is a saddle, and it comes to rest tilted by about
-16 degrees.
+there (every top DOF free, no load) comes to rest at an energy minimum (positive-definite
+tangent) other than its extended state, the only stress-free one. The drive keeps the top
+polygon level; released, it may tilt: the optimum's level contracted equilibrium is a
+saddle, and it comes to rest tilted by about 16 degrees.
 
 The model is stress-free only in its extended state, so the force at the contracted height
-is not zero and the second stable state lies between the barrier and ``Lc``. The thesis says
+is not zero and the second stable state lies above ``Lc``. The thesis says
 its figure 3.16 curve (n = 8, Lc = 30, lambda = 0.8) stays above zero; ours dips to -0.11 N
 there (MODEL.md's reference run: 4.34 N at 5.93 mm, then slightly below zero): compare the
-trends of figure 3.17, not the sign of that dip.
+trends of figure 3.17, not the sign of that dip. Those trends hold except near the
+monostable corner (lambda below about 0.8 with Lc above about 45 mm for n = 8 and 10), where
+the first maximum flattens, rises again slightly with Lc and then disappears (NaN).
 """
 
 from __future__ import annotations
@@ -69,12 +71,13 @@ class SnapThroughResult:
     minimum_force : float
         Smallest force after the peak [N] (negative: the cell pulls the drive down).
     bistable : bool
-        The released cell comes to rest past the barrier, at an energy minimum.
+        The released cell comes to rest at an energy minimum other than its extended state.
     bistability : str
         Why (or why not), in words.
     stable_displacement, stable_height : float
-        Travel [mm] and cell height ``Le - travel`` [mm] of the second stable state (top
-        centre); NaN if not bistable.
+        Travel [mm] and cell height ``Le - travel`` [mm] of the second stable state (mean of
+        the top polygon's perimeter: released, its centre node may dome out of plane); NaN
+        if not bistable.
     stable_energy : float
         Its strain energy [N*mm].
     stable_tilt : float
@@ -202,6 +205,6 @@ def snap_through(design: Design, *, steps=DEFAULT_STEPS, parameters=None,
     >>> round(r.snap_force, 2), round(r.snap_displacement, 2)   # N, mm; MODEL.md: 4.34 at 5.93
     (4.34, 5.92)
     >>> r.bistable, round(r.stable_height, 1)
-    (True, 34.8)
+    (True, 33.9)
     """
     return SnapThroughTester(design.n, steps=steps, parameters=parameters, **solver).run(design)

@@ -15,7 +15,7 @@ _ROWS = (
     ("energy_barrier", "N*mm", "strain energy at the unstable state (work up to it)"),
     ("unstable_displacement", "mm", "travel at the unstable state (force back at zero)"),
     ("minimum_force", "N", "smallest force after the peak"),
-    ("bistable", "", "the released cell rests past the barrier"),
+    ("bistable", "", "the released cell rests away from its extended state"),
     ("stable_height", "mm", "cell height of the second stable state"),
     ("stable_tilt", "rad", "its top polygon's tilt"),
     ("extended_height", "mm", "Le"),

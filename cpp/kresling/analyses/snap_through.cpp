@@ -27,6 +27,8 @@ std::vector<std::uint8_t> bottom_fixed(int n) {
 }
 
 constexpr double kPi = 3.14159265358979323846;
+// A rest state with less energy than this fraction of the barrier is the extended state.
+constexpr double kExtendedEnergy = 1e-6;
 
 // Angle between the z axis and the normal of the top polygon (level 1) at displacement u.
 double top_tilt(const model::Model& model, const VectorX& u, int n) {
@@ -129,17 +131,22 @@ void SnapThroughTest::release(const model::Model& model, const VectorX& start, I
     return;
   }
   r.stable_negative_eigenvalues = rest.negative_eigenvalues;
-  r.stable_displacement = -u[top_z];
+  // The perimeter's mean travel: released, the top polygon's centre node may dome out of
+  // its plane (it hangs on the spokes alone), so it no longer tells the cell's height.
+  double travel = 0.0;
+  for (int j = 0; j < builder_.n(); ++j) travel -= u[3 * ((builder_.n() + 1) + j) + 2];
+  r.stable_displacement = travel / builder_.n();
   r.stable_height = r.extended_height - r.stable_displacement;
   r.stable_energy = rest.energy;
   r.stable_tilt = top_tilt(model, u, builder_.n());
-  r.bistable = r.stable_displacement > r.unstable_displacement;
+  // The extended state is the only stress-free one: coming to rest anywhere else (level,
+  // tilted or warped, even short of the level path's barrier) is a second stable state.
+  r.bistable = r.stable_energy > kExtendedEnergy * r.energy_barrier;
   const double tilt_degrees = std::round(r.stable_tilt * 1800 / kPi) / 10;
   const std::string pose =
       tilt_degrees > 0 ? "tilted " + format_number(tilt_degrees) + " degrees" : "level";
   r.bistability = r.bistable ? "second stable state at height " + mm(r.stable_height) + ", " + pose
-                             : "released, the cell returned over the barrier (height " +
-                                   mm(r.stable_height) + ")";
+                             : "released, the cell returned to its extended state";
 }
 
 SnapThroughResult snap_through(const geometry::Design& design, const SnapThroughOptions& options) {

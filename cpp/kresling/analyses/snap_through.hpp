@@ -16,12 +16,13 @@
 ///                      state to it, E = integral of F dd (the energy is sampled at every
 ///                      step; cubic Hermite with E' = F locates it between samples) [N mm]
 ///   bistable           F rises back through 0 (a second zero), and the cell released there
-///                      (every top DOF free, no load) comes to rest past the barrier: energy
-///                      descent (solvers::minimize_energy) from the released state reaches a
-///                      minimum, a positive-definite tangent with the bottom polygon held,
-///                      at a smaller height than the unstable state's. The drive keeps the top
-///                      level; released, it may tilt (the optimum's second state does: the
-///                      level contracted equilibrium is a saddle there)
+///                      (every top DOF free, no load) comes to rest somewhere other than its
+///                      extended state: energy descent (solvers::minimize_energy) from the
+///                      released state reaches a minimum (positive-definite tangent, bottom
+///                      polygon held) with strain energy above 1e-6 of the barrier (the
+///                      extended state is the only stress-free one). The drive keeps the top
+///                      level; released, it may tilt: the optimum's level contracted
+///                      equilibrium is a saddle and it rests tilted
 ///
 /// A cell whose force stays positive after the peak is monostable: released anywhere, it
 /// springs back; its energy barrier and second state are NaN. The cell is stress-free only
@@ -64,7 +65,8 @@ struct SnapThroughResult {
   double energy_barrier = kNaN;         ///< strain energy at the unstable state [N mm]
   double minimum_force = kNaN;          ///< smallest F after the peak [N]
   bool bistable = false;
-  double stable_displacement = kNaN;    ///< d of the released second state [mm]
+  /// Travel of the second stable state: the mean of the top polygon's perimeter nodes [mm]
+  double stable_displacement = kNaN;
   double stable_height = kNaN;          ///< its cell height, Le - d [mm]
   double stable_energy = kNaN;          ///< its strain energy [N mm]
   double stable_tilt = kNaN;            ///< its top polygon's tilt from horizontal [rad]

@@ -38,6 +38,7 @@ EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
   require_positive("tolerance", o.tolerance);
   require_positive("escape_step", o.escape_step);
   require_positive("min_curvature", o.min_curvature);
+  require_positive("max_step", o.max_step);
   if (o.max_iterations < 1) throw_invalid("max_iterations", o.max_iterations, "an integer >= 1");
   EnergyMinimum out;
   Evaluation e;
@@ -61,6 +62,7 @@ EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
       }
       step = o.escape_step * V.col(0);  // out of the saddle, down its steepest direction
     }
+    if (step.norm() > o.max_step) step *= o.max_step / step.norm();
     // Backtracking on the energy; a step below the rounding of the energy is taken whole.
     const double slope = std::min(e.gradient.dot(step), 0.0);
     double alpha = 1.0;

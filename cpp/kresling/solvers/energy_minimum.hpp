@@ -23,6 +23,9 @@ struct EnergyMinimumOptions {
   int max_iterations = 200;
   double escape_step = 0.05;    ///< length of the step out of a saddle [mm]
   double min_curvature = 1e-8;  ///< floor of |eigenvalue| in the step [N/mm]
+  /// Longest step [mm]: longer ones are shortened to it, so that the descent follows the
+  /// energy landscape instead of leaping into another basin where the local model is poor.
+  double max_step = 0.5;
 };
 
 struct EnergyMinimum {
