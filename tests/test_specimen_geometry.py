@@ -35,3 +35,14 @@ def test_optimum_extended_module_length():
     s = kresling_specimen(Design(10, 0.9, 15), ["extended"] * 2)
     assert round(float(s.level_height[-1]), 3) == 111.639      # thesis eqn 30: 111.6 mm
     assert s.level_height[-1] == pytest.approx(2 * 55.8194667799374, abs=1e-9)
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    (dict(states=[1, 1], chirality=[1]), "chirality: has 1 entries but states has 2; give one per cell"),
+    (dict(states=[]), "states: the specimen needs at least one cell"),
+    (dict(states=[1, 2]), "state = 2 is invalid"),
+    (dict(states=[1], chirality=[2]), r"chirality\[0\] = 2 is invalid"),
+])
+def test_bad_state_and_chirality_lists(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        kresling_specimen(Design(8, 0.8, 30), **kwargs)
