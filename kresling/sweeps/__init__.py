@@ -1,0 +1,19 @@
+"""Parametric design studies (thesis sections 3.4-3.5): many designs through the bending,
+facet-angle and snap-through analyses, in parallel and resumable, and what to do with them.
+
+- :func:`design_grid` and :class:`DesignSet`: the designs (the thesis's n x Lc x lambda grid).
+- :data:`METRICS`: what can be computed per design (K_B ratio at 0.001 rad and 5 mm, the
+  facet-angle ratio, ...).
+- :func:`sweep`: the computation, on threads, processes or any ``concurrent.futures``
+  executor (Dask), written to disk as it goes and resumed after an interruption.
+- :class:`SweepTable`: the results, one row per design.
+"""
+
+from kresling.sweeps.designs import THESIS_LAM, THESIS_N, DesignSet, as_design_set, design_grid
+from kresling.sweeps.metrics import METRICS, Analysis, Evaluation, Metric, resolve_metrics
+from kresling.sweeps.sweep import DEFAULT_METRICS, sweep
+from kresling.sweeps.table import SweepTable
+
+__all__ = ["sweep", "design_grid", "DesignSet", "as_design_set", "SweepTable", "METRICS",
+           "Metric", "Analysis", "Evaluation", "resolve_metrics", "DEFAULT_METRICS",
+           "THESIS_N", "THESIS_LAM"]
