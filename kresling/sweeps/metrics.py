@@ -82,13 +82,15 @@ class Metric:
     analysis : Analysis
     columns : tuple of str
         Columns it adds, ``name`` first.
-    unit, description : str
+    label : str
+        Short label of the main column for plots, with its unit.
+    description : str
     """
 
     name: str
     analysis: Analysis
     columns: tuple
-    unit: str = ""
+    label: str = ""
     description: str = ""
 
 
@@ -123,12 +125,12 @@ _BENDING_5MM = _bending_analysis("5mm", "_5mm")
 #: Every metric a sweep knows, by name.
 METRICS = {
     metric.name: metric for metric in (
-        Metric("kb_ratio", _BENDING_SMALL, _BENDING_SMALL.columns, "",
+        Metric("kb_ratio", _BENDING_SMALL, _BENDING_SMALL.columns, "K_B ratio (0.001 rad)",
                "K_B ratio extended/contracted at a 0.001 rad deflection (the thesis's study), "
                "with K_B of each state [N*m/rad]"),
-        Metric("kb_ratio_5mm", _BENDING_5MM, _BENDING_5MM.columns, "",
+        Metric("kb_ratio_5mm", _BENDING_5MM, _BENDING_5MM.columns, "K_B ratio (5 mm)",
                "K_B ratio and K_B of each state [N*m/rad] for the 5 mm protocol (Table 3)"),
-        Metric("psi_ratio", _PSI, _PSI.columns, "",
+        Metric("psi_ratio", _PSI, _PSI.columns, "facet-angle ratio Psi_ext / Psi_con",
                "facet-angle ratio Psi_ext/Psi_con, with Psi of each state [rad]"),
     )
 }

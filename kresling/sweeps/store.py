@@ -128,6 +128,12 @@ def _check_same(directory: Path, found: dict, wanted: dict) -> None:
 
 
 def _short(value) -> str:
+    if isinstance(value, dict) and "sha256" in value:  # the designs: say what they are
+        spec = value.get("spec", {})
+        if spec.get("kind") == "grid":
+            return (f"{value['count']} designs (grid n {spec['n']}, size {spec['size']}, Lc "
+                    f"{spec['Lc']}, lam {spec['lam']}, R {spec['R']}; {value['sha256'][:8]})")
+        return f"{value.get('count')} designs (a list; {value['sha256'][:8]})"
     text = json.dumps(value, sort_keys=True)
     return text if len(text) <= 120 else text[:117] + "..."
 
