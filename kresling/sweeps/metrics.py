@@ -20,7 +20,7 @@ from typing import Any, Callable, Optional
 from kresling.analyses import PROTOCOLS, BendingTester
 from kresling.geometry import Design
 
-__all__ = ["Analysis", "Evaluation", "Metric", "METRICS", "resolve_metrics"]
+__all__ = ["Analysis", "Evaluation", "Metric", "METRICS", "resolve_metrics", "require_even_n"]
 
 
 @dataclass(frozen=True)
@@ -162,3 +162,12 @@ def resolve_metrics(names) -> tuple:
     if repeated:
         raise ValueError(f"metric {repeated[0]!r} is named twice")
     return tuple(metrics)
+
+
+def require_even_n(metrics, ns) -> None:
+    """Raise ValueError if a metric needs an even n and ``ns`` holds an odd one."""
+    odd = sorted({int(n) for n in ns if int(n) % 2})
+    needs_even = [m.name for m in metrics if m.analysis.even_n]
+    if odd and needs_even:
+        raise ValueError(f"n = {odd[0]} is invalid for {needs_even[0]}: the bending test needs "
+                         f"an even n (its pins are opposite vertices)")

@@ -13,10 +13,10 @@ from tqdm.auto import tqdm
 from kresling import __version__
 from kresling.sweeps.designs import DesignSet, as_design_set
 from kresling.sweeps.executors import make_executor
-from kresling.sweeps.metrics import resolve_metrics
+from kresling.sweeps.metrics import require_even_n, resolve_metrics
 from kresling.sweeps.store import SweepStore
 from kresling.sweeps.table import DESIGN_COLUMNS, FAILED, OK, STATUS_COLUMNS, SweepTable
-from kresling.sweeps.worker import Plan, run_chunk
+from kresling.sweeps.worker import Plan, make_plan, run_chunk
 
 __all__ = ["sweep", "DEFAULT_METRICS"]
 
@@ -124,17 +124,8 @@ def sweep(designs, metrics=DEFAULT_METRICS, *, workers=None, executor=None, out=
 
 
 def _plan(metrics, design_set: DesignSet) -> Plan:
-    analyses, columns = [], []
-    for metric in metrics:
-        if metric.analysis not in analyses:
-            analyses.append(metric.analysis)
-        columns += [c for c in metric.columns if c not in columns]
-    odd = sorted({int(n) for n in design_set.n if n % 2})
-    needs_even = [m.name for m in metrics if m.analysis.even_n]
-    if odd and needs_even:
-        raise ValueError(f"n = {odd[0]} is invalid for {needs_even[0]}: the bending test needs "
-                         f"an even n (its pins are opposite vertices)")
-    return Plan(tuple(analyses), tuple(columns))
+    require_even_n(metrics, np.unique(design_set.n))
+    return make_plan(metrics)
 
 
 def _manifest(metrics, plan: Plan, columns, design_set: DesignSet) -> dict:

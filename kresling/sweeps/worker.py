@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from kresling.geometry import Design
 from kresling.sweeps.table import FAILED, OK
 
-__all__ = ["Plan", "run_chunk", "evaluate_design"]
+__all__ = ["Plan", "make_plan", "run_chunk", "evaluate_design"]
 
 _local = threading.local()
 
@@ -34,6 +34,16 @@ class Plan:
 
     analyses: tuple
     columns: tuple
+
+
+def make_plan(metrics) -> Plan:
+    """The plan of resolved ``metrics``: each analysis once, the columns in metric order."""
+    analyses, columns = [], []
+    for metric in metrics:
+        if metric.analysis not in analyses:
+            analyses.append(metric.analysis)
+        columns += [c for c in metric.columns if c not in columns]
+    return Plan(tuple(analyses), tuple(columns))
 
 
 def _tester(analysis, n: int):
