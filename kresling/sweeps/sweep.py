@@ -154,46 +154,71 @@ def _row_checker(design_set: DesignSet, columns):
 
 def _run(handle, plan, design_set, pending, size, done, store, bar) -> None:
     """Submit chunks (a bounded number in flight) and record each as it finishes; ``done``
-    maps design index to its row in column order."""
+    maps design index to its row in column order.
+
+    A chunk lost to its worker (a process that died, a task the executor dropped) makes its
+    designs suspects: each is then run alone, with nothing else in flight, and one that is
+    lost again is recorded as failed. On an interruption (Ctrl-C) the chunks that had already
+    finished are recorded before it propagates.
+    """
     queue = deque([pending[k:k + size] for k in range(0, len(pending), size)])
-    in_flight, attempts = {}, {}
-    limit = 2 * handle.workers
-    while queue or in_flight:
-        while queue and len(in_flight) < limit:
-            indices = queue.popleft()
-            chunk = [(i, *_design_values(design_set, i)) for i in indices]
+    suspects, in_flight = deque(), {}
+
+    def record(results):
+        rows = [(*_design_values(design_set, r[0]), *r[1:], r[0]) for r in results]
+        if store is not None:
+            store.append(rows)
+        for row in rows:
+            done[row[-1]] = row
+        bar.update(len(rows))
+
+    def submit(indices, alone=False):
+        chunk = [(i, *_design_values(design_set, i)) for i in indices]
+        try:
             future = handle.executor.submit(run_chunk, plan, chunk)
-            in_flight[future] = (indices, handle.executor)
-        finished, _ = wait(in_flight, return_when=FIRST_COMPLETED)
-        for future in finished:
-            indices, executor = in_flight.pop(future)
-            try:
-                results = future.result()
-            except Exception as error:  # noqa: BLE001 - a worker died or the task was lost
-                if isinstance(error, BrokenExecutor) and executor is handle.executor \
-                        and not handle.rebuild():
-                    raise RuntimeError(f"the executor broke ({error}); finished chunks are "
-                                       f"saved: run the sweep again to resume") from error
-                results = _lost(plan, indices, error, queue, attempts)
-            rows = [(*_design_values(design_set, r[0]), *r[1:], r[0]) for r in results]
-            if store is not None:
-                store.append(rows)
-            for row in rows:
-                done[row[-1]] = row
-            bar.update(len(rows))
+        except BrokenExecutor as error:
+            _rebuild(handle, error)
+            future = handle.executor.submit(run_chunk, plan, chunk)
+        in_flight[future] = (indices, handle.executor, alone)
+
+    try:
+        while queue or suspects or in_flight:
+            if suspects:
+                if not in_flight:
+                    submit([suspects.popleft()], alone=True)
+            else:
+                while queue and len(in_flight) < 2 * handle.workers:
+                    submit(queue.popleft())
+            finished, _ = wait(in_flight, return_when=FIRST_COMPLETED)
+            for future in finished:
+                indices, executor, alone = in_flight.pop(future)
+                try:
+                    record(future.result())
+                except Exception as error:  # noqa: BLE001 - a worker died or the task was lost
+                    if isinstance(error, BrokenExecutor) and executor is handle.executor:
+                        _rebuild(handle, error)
+                    logger.warning("a worker was lost on designs %s%s: %s: %s", indices[:5],
+                                   "..." if len(indices) > 5 else "", type(error).__name__, error)
+                    if alone:
+                        record([_failed_row(plan, indices[0], error)])
+                    else:
+                        suspects.extend(indices)
+    except BaseException:
+        for future in in_flight:
+            future.cancel()
+        for future in in_flight:
+            if future.done() and not future.cancelled() and future.exception() is None:
+                record(future.result())
+        raise
 
 
-def _lost(plan, indices, error, queue, attempts) -> list:
-    """A chunk whose worker failed: retry its designs one at a time; a design that fails
-    alone twice is recorded as failed (it probably crashes the worker)."""
-    logger.warning("a worker failed on designs %s%s: %s: %s", indices[:5],
-                   "..." if len(indices) > 5 else "", type(error).__name__, error)
-    rows = []
-    for i in indices:
-        attempts[i] = attempts.get(i, 0) + 1
-        if attempts[i] >= 2 and len(indices) == 1:
-            reason = f"worker failed twice on this design: {type(error).__name__}: {error}"
-            rows.append((i, *([np.nan] * len(plan.columns)), FAILED, reason, 0, 0.0))
-        else:
-            queue.appendleft([i])
-    return rows
+def _rebuild(handle, error) -> None:
+    if not handle.rebuild():
+        raise RuntimeError(f"the executor broke ({error}); finished chunks are saved: run the "
+                           f"sweep again to resume") from error
+
+
+def _failed_row(plan, index, error) -> tuple:
+    reason = f"its worker was lost twice, the second time running it alone: " \
+             f"{type(error).__name__}: {error}".replace("\n", " ")
+    return (index, *([np.nan] * len(plan.columns)), FAILED, reason, 0, 0.0)
