@@ -69,7 +69,7 @@ def test_the_quick_report_runs_every_available_section(quick_report):
     assert [s["key"] for s in document["sections"]] == [c.key for c in CHAPTERS]
     assert document["errors"] == []
     ran = {s["key"] for s in document["sections"] if s["status"] == "ran"}
-    assert {"geometry", "experiments", "fabrication", "manipulator"} <= ran
+    assert {"geometry", "experiments", "analyses", "fabrication", "manipulator"} <= ran
     assert seconds < 180, f"the quick report took {seconds:.0f} s"
 
 

@@ -4,6 +4,7 @@
 
 #include "bindings.hpp"
 #include "kresling/analyses/bending_test.hpp"
+#include "kresling/analyses/snap_through.hpp"
 #include "kresling/model/kresling_specimen.hpp"
 
 namespace py = pybind11;
@@ -20,11 +21,13 @@ std::vector<int> families(const std::vector<model::EdgeFamily>& f) {
   return out;
 }
 
+// A copy of `v` as a numpy array (the Python side owns its arrays).
+template <typename T>
+py::array_t<T> array(const std::vector<T>& v) {
+  return py::array_t<T>(v.size(), v.data());
+}
+
 py::dict bending_result_dict(const analyses::BendingResult& r) {
-  auto array = [](const auto& v) {
-    using T = typename std::decay_t<decltype(v)>::value_type;
-    return py::array_t<T>(v.size(), v.data());
-  };
   py::dict out;
   out["stiffness"] = r.stiffness;
   out["stiffness_intercept"] = r.stiffness_intercept;
@@ -36,10 +39,37 @@ py::dict bending_result_dict(const analyses::BendingResult& r) {
   out["moment"] = array(r.moment);
   out["iterations"] = array(r.iterations);
   out["negative_eigenvalues"] = array(r.negative_eigenvalues);
+  out["final_displacement"] =
+      py::array_t<double>(r.final_displacement.size(), r.final_displacement.data());
   out["completed"] = r.completed;
   out["message"] = r.message;
   out["num_dofs"] = r.num_dofs;
   out["num_free_dofs"] = r.num_free_dofs;
+  return out;
+}
+
+py::dict snap_result_dict(const analyses::SnapThroughResult& r) {
+  py::dict out;
+  out["snap_force"] = r.snap_force;
+  out["snap_displacement"] = r.snap_displacement;
+  out["unstable_displacement"] = r.unstable_displacement;
+  out["energy_barrier"] = r.energy_barrier;
+  out["minimum_force"] = r.minimum_force;
+  out["bistable"] = r.bistable;
+  out["stable_displacement"] = r.stable_displacement;
+  out["stable_height"] = r.stable_height;
+  out["stable_energy"] = r.stable_energy;
+  out["stable_tilt"] = r.stable_tilt;
+  out["stable_negative_eigenvalues"] = r.stable_negative_eigenvalues;
+  out["bistability"] = r.bistability;
+  out["extended_height"] = r.extended_height;
+  out["contracted_height"] = r.contracted_height;
+  out["displacement"] = array(r.displacement);
+  out["force"] = array(r.force);
+  out["energy"] = array(r.energy);
+  out["iterations"] = array(r.iterations);
+  out["completed"] = r.completed;
+  out["message"] = r.message;
   return out;
 }
 
@@ -108,6 +138,28 @@ void bind_analyses(py::module_& m) {
             return bending_result_dict(r);
           },
           py::arg("design"), py::arg("state"));
+
+  py::class_<analyses::SnapThroughTest>(m, "SnapThroughTest")
+      .def(py::init([](int n, int steps, const SpecimenParameters& parameters,
+                       const solvers::DisplacementControlOptions& solver) {
+             analyses::SnapThroughOptions o;
+             o.steps = steps;
+             o.specimen = parameters;
+             o.solver = solver;
+             return analyses::SnapThroughTest(n, o);
+           }),
+           py::arg("n"), py::arg("steps"), py::arg("parameters"), py::arg("solver"))
+      .def(
+          "run",
+          [](analyses::SnapThroughTest& test, const Design& design) {
+            analyses::SnapThroughResult r;
+            {
+              py::gil_scoped_release release;
+              r = test.run(design);
+            }
+            return snap_result_dict(r);
+          },
+          py::arg("design"));
 }
 
 }  // namespace kresling::python

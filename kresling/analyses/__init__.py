@@ -1,8 +1,20 @@
 """The thesis's analyses on Kresling specimens (chapter 3): the three-point bending test in
-both stable states and the bending-stiffness ratio; more analyses build on these."""
+both stable states and the bending-stiffness ratio (section 3.4), its linearised form and the
+orientation study (Appendix A), the facet angle Psi of the built cells (figure 3.8) and the
+snap-through test of bistability strength (section 3.5).
+
+Submodules beyond these: ``table3`` (Table 3 side by side), ``plots`` (figures 3.5-3.7,
+3.14, 3.16), ``specimen_views`` (FOLD export, 3D plot), ``reproduce`` (the report section).
+"""
 
 from kresling.analyses.bending import (PROTOCOLS, BendingComparison, BendingResult, BendingTester,
                                        bending_stiffness, bending_test)
+from kresling.analyses.facet_angle import facet_angle, facet_angle_ratio, facet_angles
+from kresling.analyses.linear_bending import LinearBendingTester, linear_bending_stiffness
+from kresling.analyses.orientation import OrientationStudy, orientation_study
+from kresling.analyses.snap_through import SnapThroughResult, SnapThroughTester, snap_through
 
 __all__ = ["PROTOCOLS", "BendingResult", "BendingComparison", "BendingTester", "bending_test",
-           "bending_stiffness"]
+           "bending_stiffness", "LinearBendingTester", "linear_bending_stiffness",
+           "SnapThroughResult", "SnapThroughTester", "snap_through", "facet_angles",
+           "facet_angle", "facet_angle_ratio", "OrientationStudy", "orientation_study"]

@@ -55,6 +55,9 @@ class BendingResult:
         False if an increment failed (``message`` says which and why); the fits then use
         the increments that converged.
     num_free_dofs : int
+    final_displacement : ndarray, shape (N, 3)
+        Every node's displacement at the last converged step [mm] (empty if none), in the
+        node order of ``kresling_specimen(design, [state] * cells)``.
     """
 
     design: Design
@@ -72,6 +75,7 @@ class BendingResult:
     completed: bool
     message: str
     num_free_dofs: int
+    final_displacement: np.ndarray = None
 
     @property
     def state_name(self) -> str:
@@ -153,7 +157,9 @@ class BendingTester:
                              stiffness_intercept=d["stiffness_intercept"],
                              intercept=d["intercept"], module_length=d["module_length"],
                              completed=d["completed"], message=d["message"],
-                             num_free_dofs=d["num_free_dofs"], **arrays)
+                             num_free_dofs=d["num_free_dofs"],
+                             final_displacement=np.asarray(d["final_displacement"]).reshape(-1, 3),
+                             **arrays)
 
 
 def bending_test(design: Design, state, protocol="5mm", **options) -> BendingResult:

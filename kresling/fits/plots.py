@@ -14,7 +14,7 @@ import numpy as np
 from kresling.fits.bending import STATES, BendingStiffness, mean_curve, state_name
 from kresling.fits.crease import CreaseStiffness
 
-__all__ = ["plot_bending_test", "plot_crease_runs"]
+__all__ = ["plot_bending_test", "plot_crease_runs", "label_moment_angle_axes"]
 
 _COLORS = {"extended": "tab:blue", "contracted": "tab:orange"}
 _LABELS = {"extended": "state (1), extended", "contracted": "state (0), contracted"}
@@ -76,6 +76,12 @@ def plot_bending_test(result: BendingStiffness, model=None, ax=None, *, title: s
             model_angle, model_moment = _model_curve(model[state], float(angle.max()))
             ax.plot(model_angle, model_moment, color=color, ls="--", lw=1.2,
                     label=f"{_LABELS[state]}: model")
+    return label_moment_angle_axes(ax, title)
+
+
+def label_moment_angle_axes(ax, title: str = ""):
+    """Axis labels, limits from the origin, legend and title of a moment-angle plot (the
+    style of the thesis's figures 3.5-3.7); returns ``ax``."""
     ax.set_xlabel("deflection angle δ [rad]")
     ax.set_ylabel("moment M [N·m]")
     ax.set_xlim(left=0.0)

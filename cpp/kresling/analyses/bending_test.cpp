@@ -98,6 +98,7 @@ BendingResult BendingTest::run(const geometry::Design& design, int state) {
     r.iterations.push_back(step.iterations);
     r.negative_eigenvalues.push_back(step.negative_eigenvalues);
   }
+  if (!path.steps.empty()) r.final_displacement = path.steps.back().displacement;
   r.stiffness = slope_through_origin(r.angle, r.moment);
   // Least squares with intercept (a lab fit); undefined with fewer than two points.
   const std::size_t m = r.angle.size();

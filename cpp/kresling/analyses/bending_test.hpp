@@ -41,6 +41,8 @@ struct BendingResult {
   std::vector<double> moment;        ///< M [N m]
   std::vector<int> iterations;       ///< Newton iterations per increment
   std::vector<int> negative_eigenvalues;
+  /// Every DOF's displacement at the last converged step (empty if none) [mm].
+  VectorX final_displacement;
   bool completed = false;
   std::string message;               ///< why the run stopped early
   int num_dofs = 0;

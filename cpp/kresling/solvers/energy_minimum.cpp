@@ -1,0 +1,88 @@
+#include "kresling/solvers/energy_minimum.hpp"
+
+#include <cmath>
+
+#include <Eigen/Dense>
+
+#include "kresling/core/check.hpp"
+#include "kresling/solvers/newton.hpp"
+
+namespace kresling::solvers {
+
+namespace {
+
+struct Evaluation {
+  double energy = 0.0;
+  VectorX gradient;  // on the assembler's rows
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
+};
+
+bool evaluate(assembly::Assembler& assembler, const VectorX& u, Evaluation& e) {
+  VectorX force;
+  e.energy = assembler.assemble(u, force, /*with_matrix=*/true).total();
+  e.gradient = gather_rows(assembler, force);
+  const Eigen::MatrixXd K = Eigen::MatrixXd(assembler.matrix()).selfadjointView<Eigen::Lower>();
+  e.eigen.compute(K);
+  return std::isfinite(e.energy) && e.gradient.allFinite() && e.eigen.info() == Eigen::Success;
+}
+
+double energy_at(assembly::Assembler& assembler, const VectorX& u) {
+  VectorX force;
+  return assembler.assemble(u, force, /*with_matrix=*/false).total();
+}
+
+}  // namespace
+
+EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
+                              const EnergyMinimumOptions& o) {
+  require_positive("tolerance", o.tolerance);
+  require_positive("escape_step", o.escape_step);
+  require_positive("min_curvature", o.min_curvature);
+  require_positive("max_step", o.max_step);
+  if (o.max_iterations < 1) throw_invalid("max_iterations", o.max_iterations, "an integer >= 1");
+  EnergyMinimum out;
+  Evaluation e;
+  for (out.iterations = 0; out.iterations < o.max_iterations; ++out.iterations) {
+    if (!evaluate(assembler, u, e)) {
+      out.failure = "the energy or its derivatives are not finite (an element degenerated)";
+      return out;
+    }
+    const VectorX& lambda = e.eigen.eigenvalues();
+    const Eigen::MatrixXd& V = e.eigen.eigenvectors();
+    out.energy = e.energy;
+    out.smallest_eigenvalue = lambda.size() ? lambda[0] : 0.0;
+    out.negative_eigenvalues = static_cast<int>((lambda.array() < 0.0).count());
+    // The saddle-free Newton step.
+    const VectorX curvature = lambda.cwiseAbs().cwiseMax(o.min_curvature);
+    VectorX step = -V * (V.transpose() * e.gradient).cwiseQuotient(curvature);
+    if (step.norm() <= o.tolerance) {
+      if (out.negative_eigenvalues == 0) {
+        out.converged = true;
+        return out;
+      }
+      step = o.escape_step * V.col(0);  // out of the saddle, down its steepest direction
+    }
+    if (step.norm() > o.max_step) step *= o.max_step / step.norm();
+    // Backtracking on the energy; a step below the rounding of the energy is taken whole.
+    const double slope = std::min(e.gradient.dot(step), 0.0);
+    double alpha = 1.0;
+    VectorX trial;
+    for (int halvings = 0;; ++halvings) {
+      trial = u;
+      scatter_add_rows(assembler, alpha * step, trial);
+      const double energy = energy_at(assembler, trial);
+      const bool rounding = alpha * step.norm() <= 10.0 * o.tolerance;
+      if ((std::isfinite(energy) && energy <= e.energy + 1e-4 * alpha * slope) || rounding) break;
+      if (halvings == 40) {
+        out.failure = "the line search found no lower energy along the step";
+        return out;
+      }
+      alpha *= 0.5;
+    }
+    u = trial;
+  }
+  out.failure = "no stable equilibrium within " + std::to_string(o.max_iterations) + " iterations";
+  return out;
+}
+
+}  // namespace kresling::solvers

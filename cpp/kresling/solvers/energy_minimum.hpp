@@ -1,0 +1,46 @@
+#pragma once
+/// \file energy_minimum.hpp
+/// Descend to a stable equilibrium (a local minimum of the strain energy) of a small model
+/// with no external load: where a structure released at `u` comes to rest.
+///
+/// Newton's method finds any equilibrium, saddles included; this finds minima. Each
+/// iteration takes the "saddle-free" Newton step -|K|^-1 g, with |K| = V |Lambda| V^T the
+/// free tangent with its eigenvalues replaced by their magnitudes (floored at
+/// `min_curvature`), so every step descends; a backtracking line search on the energy
+/// (Armijo) accepts it. At a saddle (g = 0 but a negative eigenvalue) it steps `escape_step`
+/// along the eigenvector of the most negative eigenvalue. Converged when the step is at most
+/// `tolerance` and the free tangent is positive definite. Dense eigen-decompositions: for
+/// models of up to a few hundred free DOFs (a snap-through cell has 3 (n + 1)).
+
+#include <string>
+
+#include "kresling/assembly/assembler.hpp"
+
+namespace kresling::solvers {
+
+struct EnergyMinimumOptions {
+  double tolerance = 1e-8;      ///< on the 2-norm of the last step [mm]
+  int max_iterations = 200;
+  double escape_step = 0.05;    ///< length of the step out of a saddle [mm]
+  double min_curvature = 1e-8;  ///< floor of |eigenvalue| in the step [N/mm]
+  /// Longest step [mm]: longer ones are shortened to it, so that the descent follows the
+  /// energy landscape instead of leaping into another basin where the local model is poor.
+  double max_step = 0.5;
+};
+
+struct EnergyMinimum {
+  bool converged = false;
+  int iterations = 0;
+  double energy = 0.0;               ///< strain energy at the end [N mm]
+  int negative_eigenvalues = -1;     ///< of the free tangent at the end
+  double smallest_eigenvalue = 0.0;  ///< of the free tangent at the end [N/mm]
+  std::string failure;               ///< why not converged
+};
+
+/// Descend from `u` (all DOFs, updated in place) on the assembler's rows (its other DOFs
+/// stay where they are). The assembler should store the full matrix with no diagonal shift
+/// (a shift would hide a zero-stiffness mode from the inertia).
+EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
+                              const EnergyMinimumOptions& options = {});
+
+}  // namespace kresling::solvers

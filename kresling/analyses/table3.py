@@ -1,0 +1,145 @@
+"""Table 3 side by side: our bending test, the MERLIN2 reference runs, and the thesis's model
+and experimental columns; and how much MERLIN2's duplicated topology moves the answer.
+
+Sources: ``kresling/data/merlin2/table3_reference.csv`` (MERLIN2 runs of the thesis's
+Appendix B script, see its README) and ``kresling/data/thesis_table3_bending_stiffness.csv``
+(read through :func:`kresling.fits.thesis_tables.table3`, which also recomputes the
+experimental ratios from the printed means: for n = 8, Lc = 30 the printed 4.91 is not
+3.50 / 0.80 = 4.38).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from kresling import data
+from kresling.analyses.bending import BendingComparison, bending_stiffness
+from kresling.geometry import Design
+from kresling.model.kresling_specimen import SpecimenParameters
+
+__all__ = ["TABLE3_DESIGNS", "Table3Comparison", "table3_comparison", "merlin2_reference",
+           "topology_effect"]
+
+#: The designs of Table 3 as (n, Lc [mm], lambda): the three paper samples and the optimum.
+TABLE3_DESIGNS = ((8, 30.0, 0.8), (8, 15.0, 0.8), (4, 30.0, 0.7), (10, 15.0, 0.9))
+
+_KEYS = ("extended", "contracted", "ratio")
+
+
+def merlin2_reference() -> dict:
+    """K_B of the MERLIN2 reference runs (5 mm protocol).
+
+    Returns
+    -------
+    dict
+        ``(n, Lc, lam)`` to ``{"extended", "contracted", "ratio"}`` [N*m/rad].
+    """
+    table = np.genfromtxt(data.path("merlin2/table3_reference.csv"), delimiter=",", names=True)
+    return {(int(r["n"]), float(r["Lc_mm"]), float(r["lambda"])):
+            dict(zip(_KEYS, (float(r["Kb_ext_Nm_per_rad"]), float(r["Kb_con_Nm_per_rad"]),
+                             float(r["ratio"])))) for r in table}
+
+
+@dataclass(frozen=True)
+class Table3Comparison:
+    """One design of Table 3 (K_B in N*m/rad; NaN where a source gives no value).
+
+    Attributes
+    ----------
+    design : Design
+    ours : BendingComparison
+        Our bending test (both states).
+    reference : dict
+        MERLIN2's ``extended``, ``contracted``, ``ratio``.
+    thesis_model : dict
+        The thesis's model column (same keys; only the ratio for the optimum).
+    experiment : dict
+        The thesis's experiment: ``extended``, ``extended_sd``, ``contracted``,
+        ``contracted_sd``, ``ratio`` (as printed), ``ratio_of_means`` (recomputed).
+    """
+
+    design: Design
+    ours: BendingComparison
+    reference: dict
+    thesis_model: dict
+    experiment: dict
+
+    @property
+    def ours_values(self) -> dict:
+        """Our ``extended``, ``contracted`` and ``ratio``."""
+        return {"extended": self.ours.extended.stiffness,
+                "contracted": self.ours.contracted.stiffness, "ratio": self.ours.ratio}
+
+    def row(self) -> dict:
+        """A flat dict for printing or CSV: the design, then ``<source>_<quantity>``."""
+        d = self.design
+        out = {"n": d.n, "Lc_mm": d.Lc, "lambda": d.lam}
+        for source, values in (("ours", self.ours_values), ("merlin2", self.reference),
+                               ("thesis_model", self.thesis_model)):
+            out.update({f"{source}_{k}": values[k] for k in _KEYS})
+        out.update({f"experiment_{k}": v for k, v in self.experiment.items()})
+        return out
+
+
+def table3_comparison(protocol: str = "5mm", parameters=None, designs=TABLE3_DESIGNS) -> list:
+    """Run the bending test on Table 3's designs and put every source beside it.
+
+    Parameters
+    ----------
+    protocol : {"5mm", "0.001rad"}
+        The reference runs and the thesis's Table 3 use "5mm".
+    parameters : SpecimenParameters, optional
+    designs : sequence of (n, Lc, lam)
+
+    Returns
+    -------
+    list of Table3Comparison
+    """
+    from kresling.fits.thesis_tables import table3
+
+    thesis = {(row.n, row.Lc, row.lam): row for row in table3() if row.material == "paper"}
+    reference = merlin2_reference()
+    nan = dict.fromkeys(_KEYS, math.nan)
+    out = []
+    for n, Lc, lam in designs:
+        design = Design(n, lam, Lc)
+        row = thesis.get((n, Lc, lam))
+        experiment = {} if row is None else {
+            "extended": row.extended.mean, "extended_sd": row.extended.sd,
+            "contracted": row.contracted.mean, "contracted_sd": row.contracted.sd,
+            "ratio": row.ratio_listed, "ratio_of_means": row.ratio_of_means.value}
+        out.append(Table3Comparison(
+            design=design, ours=bending_stiffness(design, protocol, parameters=parameters),
+            reference=reference.get((n, Lc, lam), nan),
+            thesis_model=dict(row.model) if row is not None else nan, experiment=experiment))
+    return out
+
+
+def topology_effect(designs=TABLE3_DESIGNS, protocol: str = "5mm") -> list:
+    """How much one bar and one hinge per edge (instead of MERLIN2's one per pair of
+    triangles sharing it) moves K_B.
+
+    Only the intermediate polygons' edges are shared by three triangles, so only stacks are
+    affected (MODEL.md: about 0.5 %, 8 % for n = 10 contracted; a single cell, as in the
+    snap-through test, not at all).
+
+    Returns
+    -------
+    list of dict
+        Per design: ``n``, ``Lc_mm``, ``lambda`` and the relative changes
+        ``extended``, ``contracted``, ``ratio`` (deduplicated / MERLIN2's - 1).
+    """
+    deduplicated = SpecimenParameters(duplicate_shared_edges=False)
+    out = []
+    for n, Lc, lam in designs:
+        design = Design(n, lam, Lc)
+        base = bending_stiffness(design, protocol)
+        other = bending_stiffness(design, protocol, parameters=deduplicated)
+        out.append({"n": n, "Lc_mm": Lc, "lambda": lam,
+                    "extended": other.extended.stiffness / base.extended.stiffness - 1,
+                    "contracted": other.contracted.stiffness / base.contracted.stiffness - 1,
+                    "ratio": other.ratio / base.ratio - 1})
+    return out
