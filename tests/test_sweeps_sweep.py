@@ -9,7 +9,7 @@ import pytest
 
 import sweep_fakes
 from kresling import Design
-from kresling.analyses import bending_stiffness
+from kresling.analyses import bending_stiffness, linear_bending_stiffness, snap_through
 from kresling.sweeps import METRICS, Analysis, Metric, design_grid, sweep
 
 GRID = design_grid(size=5)  # 5 x 5 x 4: the exactness grid
@@ -61,6 +61,28 @@ def test_a_5mm_metric_equals_the_5mm_analysis():
     result = sweep([design], ["kb_ratio_5mm"], workers=1, progress=False)
     assert result.columns[4:7] == ("kb_ratio_5mm", "kb_ext_5mm", "kb_con_5mm")
     assert result["kb_ratio_5mm"][0] == bending_stiffness(design, "5mm").ratio
+
+
+def test_snap_through_and_linearised_metrics_equal_their_analyses():
+    grid = design_grid((4, 10), 3)
+    result = sweep(grid, ["snap_force", "energy_barrier", "bistable", "kb_ratio_linear"],
+                   workers=2, progress=False)
+    assert result.columns[4:11] == ("snap_force", "snap_displacement", "energy_barrier",
+                                    "bistable", "kb_ratio_linear", "kb_ext_linear",
+                                    "kb_con_linear")
+    assert result.ok.all()
+    for i, design in enumerate(grid):
+        snap = snap_through(design)
+        for column in ("snap_force", "snap_displacement", "energy_barrier"):
+            assert result[column][i] == getattr(snap, column) or \
+                (math.isnan(result[column][i]) and math.isnan(getattr(snap, column)))
+        assert result["bistable"][i] == float(snap.bistable)
+        assert result["iterations"][i] == snap.iterations.sum()  # the linear model iterates not
+        assert result["kb_con_linear"][i] == linear_bending_stiffness(design, 0)
+    # The monostable corner of n = 10 has no snap force: NaN, and still status "ok".
+    corner = result.where(n=10, Lc=60.0, lam=0.7)
+    assert math.isnan(corner["snap_force"][0]) and corner["bistable"][0] == 0.0
+    assert corner["status"][0] == "ok"
 
 
 def test_failed_designs_are_recorded_and_the_sweep_goes_on():

@@ -17,7 +17,9 @@ from dataclasses import dataclass, field
 from functools import partial
 from typing import Any, Callable, Optional
 
-from kresling.analyses import PROTOCOLS, BendingTester
+from kresling.analyses import (PROTOCOLS, BendingTester, LinearBendingTester,
+                               SnapThroughTester)
+from kresling.analyses.snap_through import DEFAULT_STEPS as SNAP_STEPS
 from kresling.geometry import Design
 
 __all__ = ["Analysis", "Evaluation", "Metric", "METRICS", "resolve_metrics", "require_even_n"]
@@ -118,7 +120,35 @@ def _bending_analysis(protocol: str, suffix: str) -> Analysis:
                     even_n=True, settings=dict(PROTOCOLS[protocol], cells=4))
 
 
+def _linear_bending(tester: LinearBendingTester, design: Design) -> Evaluation:
+    extended, contracted = tester.run(design, 1), tester.run(design, 0)
+    names = ("kb_ratio_linear", "kb_ext_linear", "kb_con_linear")
+    if not (math.isfinite(extended) and math.isfinite(contracted)):
+        return Evaluation(dict.fromkeys(names, math.nan), 0,
+                          "the linearised specimen is a mechanism (K_B is NaN)")
+    return Evaluation(dict(zip(names, (extended / contracted, extended, contracted))))
+
+
+_SNAP_COLUMNS = ("snap_force", "snap_displacement", "energy_barrier", "bistable")
+
+
+def _snap_through(tester: SnapThroughTester, design: Design) -> Evaluation:
+    r = tester.run(design)
+    iterations = int(r.iterations.sum())
+    if not r.completed:
+        return Evaluation(dict.fromkeys(_SNAP_COLUMNS, math.nan), iterations, r.message)
+    # A monostable cell has no peak: its snap force is NaN with status ok (a result, not a
+    # failure); bistable is 1.0 or 0.0.
+    values = (r.snap_force, r.snap_displacement, r.energy_barrier, float(r.bistable))
+    return Evaluation(dict(zip(_SNAP_COLUMNS, values)), iterations)
+
+
 _PSI = Analysis("facet_angles", ("psi_ratio", "psi_ext", "psi_con"), _psi)
+_LINEAR = Analysis("bending_linear", ("kb_ratio_linear", "kb_ext_linear", "kb_con_linear"),
+                   _linear_bending, LinearBendingTester, even_n=True,
+                   settings={"cells": 4, "model": "linearised at the stable state"})
+_SNAP = Analysis("snap_through", _SNAP_COLUMNS, _snap_through, SnapThroughTester,
+                 settings={"steps": SNAP_STEPS, "cells": 1})
 _BENDING_SMALL = _bending_analysis("0.001rad", "")
 _BENDING_5MM = _bending_analysis("5mm", "_5mm")
 
@@ -130,8 +160,18 @@ METRICS = {
                "with K_B of each state [N*m/rad]"),
         Metric("kb_ratio_5mm", _BENDING_5MM, _BENDING_5MM.columns, "K_B ratio (5 mm)",
                "K_B ratio and K_B of each state [N*m/rad] for the 5 mm protocol (Table 3)"),
+        Metric("kb_ratio_linear", _LINEAR, _LINEAR.columns, "K_B ratio (linearised)",
+               "K_B ratio and K_B of each state [N*m/rad] of the model linearised at the "
+               "stable state (Appendix A)"),
         Metric("psi_ratio", _PSI, _PSI.columns, "facet-angle ratio Psi_ext / Psi_con",
                "facet-angle ratio Psi_ext/Psi_con, with Psi of each state [rad]"),
+        Metric("snap_force", _SNAP, ("snap_force", "snap_displacement"),
+               "snap-through force [N]", "first local maximum of the force driving one cell "
+               "from extended to contracted [N], and its travel [mm] (NaN: no maximum)"),
+        Metric("energy_barrier", _SNAP, ("energy_barrier",), "energy barrier [N*mm]",
+               "strain energy at the unstable state [N*mm] (NaN: monostable)"),
+        Metric("bistable", _SNAP, ("bistable",), "bistable (1) or not (0)",
+               "1 if the released cell rests at a second stable state, else 0"),
     )
 }
 

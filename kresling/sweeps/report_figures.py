@@ -29,9 +29,13 @@ def add_figures(section: Section, table, out_dir: Path, sensitivity_figure) -> N
     ax = plot_max_by_n(table, "kb_ratio")
     _save(section, ax.figure, out_dir / "figure_3_13_max_ratio_by_n.png",
           "Figure 3.13: the largest K_B ratio (0.001 rad) of each n, and where it is.")
-    if "snap_force" in table:
-        _save(section, plot_maps(table, "snap_force"), out_dir / "figure_3_17_snap_force.png",
-              "Figure 3.17: snap-through force over Lc x lambda for each n.")
+    _save(section, plot_maps(table, "snap_force"), out_dir / "figure_3_17_snap_force.png",
+          "Figure 3.17: snap-through force (first local maximum of the force driving one cell "
+          "from extended to contracted) over Lc x lambda for each n; blank where the force "
+          "has no maximum.")
+    _save(section, plot_maps(table, "energy_barrier"), out_dir / "energy_barrier.png",
+          "Beyond the thesis: the energy barrier (strain energy at the unstable state) over "
+          "Lc x lambda for each n; blank where the cell is monostable.")
     _save(section, sensitivity_figure, out_dir / "sensitivity_at_optimum.png",
           "Beyond the thesis: the K_B ratio along Lc and along lambda from the optimum "
           "(n = 10, Lc = 15 mm, lambda = 0.9), relative to its value there; dots mark where "
@@ -56,7 +60,8 @@ def _tables(section: Section, table, out_dir: Path) -> None:
     shutil.copyfile(source, results)
     section.add_table(results, "Every design of the sweep: parameters, K_B of each state and "
                                "their ratio (0.001 rad), Psi of each state and their ratio, "
-                               "status, Newton iterations and compute time.")
+                               "snap force and its travel, energy barrier, bistable, status, "
+                               "Newton iterations and compute time.")
 
 
 def _save(section: Section, figure, path: Path, caption: str) -> None:
