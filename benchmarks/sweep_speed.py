@@ -97,7 +97,8 @@ def against_merlin2(per_n: dict) -> None:
     for n in sorted(per_increment):
         merlin = 2 * 10 * float(np.mean(per_increment[n]))
         ours = per_n["kb_ratio"][n]
-        print(f"  n={n:<2d}: MERLIN2 ~{merlin:.2f} s, ours {1e3 * ours:.2f} ms: ~{merlin / ours:.0f}x")
+        print(f"  n={n:<2d}: MERLIN2 ~{merlin:.2f} s, ours {1e3 * ours:.2f} ms: "
+              f"~{merlin / ours:.0f}x")
 
 
 def full_map(per_n: dict, workers: int, measure: bool) -> None:
@@ -113,7 +114,8 @@ def full_map(per_n: dict, workers: int, measure: bool) -> None:
     if measure:
         for w in (1, workers):
             seconds, table = timed_sweep(design_grid(), "kb_ratio", w)
-            print(f"measured, {w} worker(s): {seconds:.1f} s ({len(table) / seconds:.0f} designs/s)")
+            print(f"measured, {w} worker(s): {seconds:.1f} s "
+                  f"({len(table) / seconds:.0f} designs/s)")
         start = time.perf_counter()
         sweep(design_grid(), ["kb_ratio", "psi_ratio", "snap_force"], workers=workers,
               progress=False)

@@ -18,9 +18,10 @@ def coarse():
 
 
 def test_every_n_peaks_at_the_highest_lambda_and_lowest_Lc(coarse):
+    psi = c.maxima_by_n(coarse, "psi_ratio")
     for n, best in c.maxima_by_n(coarse, "kb_ratio").items():
         assert (best["Lc"], best["lam"]) == (15.0, 0.9) == c.corner(coarse, n)
-        assert (c.maxima_by_n(coarse, "psi_ratio")[n]["Lc"], c.maxima_by_n(coarse, "psi_ratio")[n]["lam"]) == (15.0, 0.9)
+        assert (psi[n]["Lc"], psi[n]["lam"]) == (15.0, 0.9)
 
 
 def test_maximum_rises_with_n_and_levels_off(coarse):

@@ -111,7 +111,8 @@ def test_metrics_sharing_an_analysis_run_it_once():
         return evaluate(tester, design)
 
     analysis = Analysis("counting", ("psi_ratio", "psi_ext", "psi_con"), counting)
-    ratio, extended = Metric("ratio", analysis, ("psi_ratio",)), Metric("ext", analysis, ("psi_ext",))
+    ratio = Metric("ratio", analysis, ("psi_ratio",))
+    extended = Metric("ext", analysis, ("psi_ext",))
     result = sweep(design_grid((6,), 2), [ratio, extended], workers=1, progress=False)
     assert len(calls) == 4
     assert result.columns[4:6] == ("psi_ratio", "psi_ext")

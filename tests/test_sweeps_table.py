@@ -65,7 +65,8 @@ def test_figures_draw_and_mark_the_best():
     star = [line for line in ax.lines if line.get_marker() == "*"][0]
     best = table.best("kb_ratio", n=4)
     assert (star.get_xdata()[0], star.get_ydata()[0]) == (best["Lc"], best["lam"])
-    assert len([a for a in plot_maps(table, "kb_ratio").axes if a.get_visible()]) == 4  # 2 maps + bars
+    visible = [a for a in plot_maps(table, "kb_ratio").axes if a.get_visible()]
+    assert len(visible) == 4  # two maps and their colour bars
     assert len(plot_ratio_maps(table, 6, ("kb_ratio", "iterations")).axes) == 4
     line = plot_max_by_n(table, "kb_ratio").lines[0]
     assert line.get_xdata().tolist() == [4, 6]

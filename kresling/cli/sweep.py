@@ -12,7 +12,7 @@ import logging
 import sys
 from pathlib import Path
 
-from kresling.cli._output import print_table
+from kresling.cli._output import log_to_stderr, print_table
 
 
 def register(subparsers) -> None:
@@ -69,7 +69,8 @@ def run(args) -> int:
     if client is not None:
         executor = client
         workers = workers or max(1, sum(client.nthreads().values()))
-    with _log_to_stderr(logging.INFO if args.verbose else logging.WARNING):
+    level = logging.INFO if args.verbose else logging.WARNING
+    with log_to_stderr("kresling.sweeps", "sweep", level):
         try:
             table = sweep(grid, metrics, workers=workers, executor=executor, out=args.out,
                           progress=args.progress, chunk_size=args.chunk_size)
@@ -137,24 +138,6 @@ def _client(address: str):
     try:
         from distributed import Client
     except ImportError:
-        raise ImportError("--scheduler needs dask.distributed: pip install 'kresling[dask]'") from None
+        raise ImportError("--scheduler needs dask.distributed: "
+                          "pip install 'kresling[dask]'") from None
     return Client(address)
-
-
-class _log_to_stderr:
-    """Show the sweep's log records (level and above) on stderr while the command runs."""
-
-    def __init__(self, level):
-        self.level = level
-        self.logger = logging.getLogger("kresling.sweeps")
-        self.handler = logging.StreamHandler(sys.stderr)
-        self.handler.setFormatter(logging.Formatter("[sweep] %(message)s"))
-
-    def __enter__(self):
-        self.previous = self.logger.level
-        self.logger.addHandler(self.handler)
-        self.logger.setLevel(self.level)
-
-    def __exit__(self, *exc):
-        self.logger.removeHandler(self.handler)
-        self.logger.setLevel(self.previous)

@@ -218,6 +218,8 @@ def _active(u, values, constraints, tol=1e-6) -> tuple:
              for end, hit in (("min", x <= tol), ("max", x >= 1 - tol)) if hit]
     for column, (lo, hi) in constraints.items():
         for end, bound in (("min", lo), ("max", hi)):
-            if values and bound is not None and abs(values[column] - bound) <= 1e-4 * max(abs(bound), 1):
+            close = values and bound is not None and \
+                abs(values[column] - bound) <= 1e-4 * max(abs(bound), 1)
+            if close:
                 names.append(f"{column} {end}")
     return tuple(names)

@@ -97,7 +97,8 @@ def _corner_part(section: Section, table) -> str:
                       f"{where}: highest lambda, lowest Lc", unit="mm"),
                 Check(f"n = {n}: lambda of the largest {metric}", best["lam"], lam,
                       f"{where}: highest lambda, lowest Lc")]
-    forces = ", ".join(f"{r['snap_force']:.2f}" for r in c.maxima_by_n(table, "snap_force").values())
+    maxima = c.maxima_by_n(table, "snap_force").values()
+    forces = ", ".join(f"{r['snap_force']:.2f}" for r in maxima)
     return (f"For every n the largest K_B ratio and the largest snap-through force (figure "
             f"3.17: {forces} N for n = 4..10) are at the grid corner Lc = 15 mm, lambda = 0.9.")
 

@@ -84,7 +84,8 @@ class SweepTable:
         try:
             return self._columns[name]
         except KeyError:
-            raise KeyError(f"no column {name!r}; the columns are {', '.join(self.columns)}") from None
+            raise KeyError(f"no column {name!r}; the columns are "
+                           f"{', '.join(self.columns)}") from None
 
     def __contains__(self, name) -> bool:
         return name in self._columns
