@@ -91,7 +91,7 @@ def _print_summary(table, metrics, out: Path) -> None:
     failed = int((~table.ok).sum())
     print(f"{len(table)} designs: {a['computed']} computed, {a['loaded']} read back from "
           f"{out / 'results.csv'}, {failed} failed; {a['seconds']:.1f} s on {a['workers']} "
-          f"workers")
+          f"worker{'s' if a['workers'] > 1 else ''}")
     for metric in metrics:
         rows = []
         for n in sorted({int(n) for n in table["n"]}):
