@@ -44,8 +44,8 @@ def print_constrained_optima(workers) -> None:
     print("\nbeyond the grid: best K_B ratio of each n under designer's constraints")
     cases = {"free (thesis bounds)": {}, "lambda <= 0.85 (less tearing)": {"lam": (0.7, 0.85)},
              "K_con >= 0.3 N*m/rad (joint not too soft)": {"constraints": {"kb_con": (0.3, None)}},
-             "K_con >= 0.3 N*m/rad and snap force >= 8.5 N":
-                 {"constraints": {"kb_con": (0.3, None), "snap_force": (8.5, None)}},
+             "K_con >= 0.3 N*m/rad and snap force >= 8.6 N":
+                 {"constraints": {"kb_con": (0.3, None), "snap_force": (8.6, None)}},
              "K_ext >= 3.5 N*m/rad (stiff link)": {"constraints": {"kb_ext": (3.5, None)}}}
     for name, options in cases.items():
         cells = []
