@@ -135,3 +135,10 @@ def test_two_sweeps_cannot_write_one_directory(tmp_path):
             sweep(grid, ["psi_ratio"], out=tmp_path, progress=False)
     finally:
         store.close()
+
+
+def test_the_same_designs_made_another_way_resume(tmp_path):
+    grid = design_grid((4,), 3)
+    sweep(grid, ["psi_ratio"], out=tmp_path, progress=False)
+    as_list = list(grid)  # same values, described as a list in the manifest
+    assert sweep(as_list, ["psi_ratio"], out=tmp_path, progress=False).attrs["computed"] == 0

@@ -2,7 +2,7 @@
 
 A :class:`Metric` names the columns it adds to the results table and the :class:`Analysis`
 that produces them. An analysis runs once per design however many of its metrics are asked
-for (``kb_ratio`` and a hypothetical ``kb_ext`` would share the same two bending runs). An
+for (``snap_force``, ``energy_barrier`` and ``bistable`` share one snap-through run). An
 analysis that needs a simulation has a *tester*: an object built once per polygon size n
 (topology, sparsity pattern, symbolic factorisation) and reused for every design of that n.
 
