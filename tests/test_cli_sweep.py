@@ -60,3 +60,11 @@ def test_another_sweep_in_the_directory_is_refused(tmp_path):
     assert result.returncode == 2
     assert "holds a sweep with different parameters" in result.stderr
     assert "Traceback" not in result.stderr
+
+
+def test_building_the_parser_does_not_import_the_analyses():
+    # kresling.analyses takes about a second to import; every command builds the parser.
+    code = ("import sys, kresling.cli; kresling.cli.build_parser(); "
+            "print(sorted(m for m in ('kresling.analyses', 'scipy.optimize') if m in sys.modules))")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert result.stdout.strip() == "[]", result.stderr

@@ -145,3 +145,11 @@ def test_odd_n_refused_for_bending_metrics_only():
 def test_empty_designs_refused():
     with pytest.raises(ValueError, match="empty"):
         sweep([], ["psi_ratio"], progress=False)
+
+
+def test_the_registry_pins_the_analyses_defaults():
+    from kresling.analyses.snap_through import DEFAULT_STEPS
+    from kresling.sweeps.metrics import SNAP_STEPS
+
+    assert SNAP_STEPS == DEFAULT_STEPS
+    assert METRICS["kb_ratio"].analysis.settings == {"protocol": "0.001rad", "cells": 4}
