@@ -28,3 +28,14 @@ def test_dask_cluster_equals_threads(client, as_executor, tmp_path):
     resumed = sweep(grid, ["kb_ratio", "psi_ratio"], executor=executor, out=tmp_path / "sweep",
                     progress=False)
     assert resumed.attrs["computed"] == 0
+
+
+def test_cli_on_a_scheduler(client, tmp_path, capsys):
+    from kresling.cli import main
+
+    address = client.scheduler.address
+    assert main(["sweep", "--n", "6", "--grid", "3", "--metrics", "kb_ratio", "--scheduler",
+                 address, "--out", str(tmp_path), "--no-progress"]) == 0
+    printed = capsys.readouterr().out
+    assert "9 designs: 9 computed" in printed and "on 2 workers" in printed
+    assert "optimum (kb_ratio): n = 6, Lc = 15 mm, lam = 0.9" in printed

@@ -64,15 +64,12 @@ def run(args) -> int:
     if len(args.grid) > 2:
         raise ValueError(f"--grid takes one or two numbers, got {len(args.grid)}")
     grid = design_grid(args.n, args.grid, Lc=args.Lc, lam=args.lam, R=args.R)
-    executor, workers = args.executor, args.workers
     client = _client(args.scheduler) if args.scheduler else None
-    if client is not None:
-        executor = client
-        workers = workers or max(1, sum(client.nthreads().values()))
+    executor = client if client is not None else args.executor
     level = logging.INFO if args.verbose else logging.WARNING
     with log_to_stderr("kresling.sweeps", "sweep", level):
         try:
-            table = sweep(grid, metrics, workers=workers, executor=executor, out=args.out,
+            table = sweep(grid, metrics, workers=args.workers, executor=executor, out=args.out,
                           progress=args.progress, chunk_size=args.chunk_size)
         except RuntimeError as error:
             print(f"kresling sweep: error: {error}", file=sys.stderr)

@@ -61,14 +61,16 @@ def make_executor(executor, workers) -> ExecutorHandle:
     ----------
     executor : None, "threads", "processes", Executor, or dask.distributed.Client
     workers : int or None
-        Parallel workers (default: every core). With an executor passed in, the number of
-        chunks kept in flight is twice this.
+        Parallel workers (default: every core, or every thread of a Dask cluster). With an
+        executor passed in, the number of chunks kept in flight is twice this.
 
     Raises
     ------
     ValueError
         For ``workers < 1`` or an executor of an unknown kind.
     """
+    if workers is None and callable(getattr(executor, "nthreads", None)):
+        workers = max(1, sum(executor.nthreads().values()))  # a dask.distributed.Client
     if workers is None:
         workers = default_workers()
     if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:

@@ -88,8 +88,12 @@ def sweep(designs, metrics=DEFAULT_METRICS, *, workers=None, executor=None, out=
     columns = (*DESIGN_COLUMNS, *plan.columns, *STATUS_COLUMNS)
     store = None
     if out is not None:
-        store = SweepStore.open(out, _manifest(metrics, plan, columns, design_set),
-                                check_row=_row_checker(design_set, columns))
+        try:
+            store = SweepStore.open(out, _manifest(metrics, plan, columns, design_set),
+                                    check_row=_row_checker(design_set, columns))
+        except BaseException:
+            handle.shutdown(interrupted=True)
+            raise
     done = {} if store is None else dict(store.rows)
     loaded = len(done)
     pending = [i for i in range(len(design_set)) if i not in done]
