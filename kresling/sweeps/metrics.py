@@ -53,7 +53,7 @@ class Analysis:
     Attributes
     ----------
     name : str
-        Unique; also the key of its testers in a worker's cache.
+        Unique; with ``settings``, the key of its testers in a worker's cache.
     columns : tuple of str
         Everything ``evaluate`` returns, in table order.
     evaluate : callable

@@ -50,7 +50,7 @@ def _tester(analysis, n: int):
     cache = getattr(_local, "testers", None)
     if cache is None:
         cache = _local.testers = {}
-    key = (analysis.name, n)
+    key = (analysis.name, repr(sorted(analysis.settings.items())), n)
     if key not in cache:
         cache[key] = analysis.make_tester(n)
     return cache[key]
