@@ -1,10 +1,13 @@
-"""Output helpers shared by the subcommands: JSON that never contains NaN, and aligned
-text tables."""
+"""Output helpers shared by the subcommands: JSON that never contains NaN, aligned text
+tables, and a library logger shown on stderr while a command runs."""
 
 from __future__ import annotations
 
 import json
+import logging
 import math
+import sys
+from contextlib import contextmanager
 
 import numpy as np
 
@@ -48,3 +51,20 @@ def _format(cell) -> str:
     if isinstance(cell, (float, np.floating)):
         return f"{float(cell):.10g}"
     return str(cell)
+
+
+@contextmanager
+def log_to_stderr(name: str, prefix: str, level=logging.INFO):
+    """Show the records of logger ``name`` (``level`` and above) on stderr, each line
+    starting with ``[prefix]``, for the duration of the block."""
+    logger = logging.getLogger(name)
+    handler = logging.StreamHandler(sys.stderr)
+    handler.setFormatter(logging.Formatter(f"[{prefix}] %(message)s"))
+    previous_level = logger.level
+    logger.addHandler(handler)
+    logger.setLevel(level)
+    try:
+        yield
+    finally:
+        logger.removeHandler(handler)
+        logger.setLevel(previous_level)

@@ -9,12 +9,10 @@ raised; 2 for bad arguments.
 
 from __future__ import annotations
 
-import logging
 import shlex
 import sys
-from contextlib import contextmanager
 
-from kresling.cli._output import print_table
+from kresling.cli._output import log_to_stderr, print_table
 
 _PROGRESS_LOGGER = "kresling.report.runner"
 
@@ -54,7 +52,7 @@ def run(args) -> int:
     matplotlib.use("Agg")  # files only: never open a window
     from kresling.report.build import build_report
 
-    with _progress_to_stderr():
+    with log_to_stderr(_PROGRESS_LOGGER, "reproduce"):
         report = build_report(args.out, quick=args.quick, only=args.only,
                               command=_command(args))
     rows = [(run.chapter.key, run.chapter.part, run.checks_text, f"{run.seconds:.1f}",
@@ -95,19 +93,3 @@ def _command(args) -> str:
     if args.only:
         words += ["--only", *args.only]
     return shlex.join(words)
-
-
-@contextmanager
-def _progress_to_stderr():
-    """Show the runner's progress lines on stderr for the duration of the run."""
-    logger = logging.getLogger(_PROGRESS_LOGGER)
-    handler = logging.StreamHandler(sys.stderr)
-    handler.setFormatter(logging.Formatter("[reproduce] %(message)s"))
-    previous_level = logger.level
-    logger.addHandler(handler)
-    logger.setLevel(logging.INFO)
-    try:
-        yield
-    finally:
-        logger.removeHandler(handler)
-        logger.setLevel(previous_level)

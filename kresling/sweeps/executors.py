@@ -1,0 +1,89 @@
+"""Where a sweep's chunks run: threads, a process pool, or any ``concurrent.futures.Executor``
+(a ``dask.distributed`` cluster through ``client.get_executor()``, or the client itself).
+
+Threads are the default: the C++ bending test releases the GIL, so threads use every core
+without starting processes or pickling results. Processes isolate a crash in the C++ core
+(a pool the sweep owns is rebuilt when a worker dies).
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+from concurrent.futures import Executor, ProcessPoolExecutor, ThreadPoolExecutor
+
+__all__ = ["ExecutorHandle", "default_workers", "make_executor"]
+
+KINDS = ("threads", "processes")
+
+
+def default_workers() -> int:
+    """The cores this process may run on."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # pragma: no cover - not Linux
+        return os.cpu_count() or 1
+
+
+class ExecutorHandle:
+    """An executor and whether the sweep owns it (may shut it down and rebuild it)."""
+
+    def __init__(self, kind: str | None, workers: int, executor: Executor | None = None):
+        self.kind = kind
+        self.workers = workers
+        self.owned = executor is None
+        self.executor = executor if executor is not None else self._new()
+
+    def _new(self) -> Executor:
+        if self.kind == "processes":
+            # spawn: workers start clean (no threads or locks inherited from the parent).
+            return ProcessPoolExecutor(self.workers,
+                                       mp_context=multiprocessing.get_context("spawn"))
+        return ThreadPoolExecutor(self.workers, thread_name_prefix="kresling-sweep")
+
+    def rebuild(self) -> bool:
+        """Replace a broken pool the sweep owns; False if it cannot (not ours)."""
+        if not self.owned:
+            return False
+        self.executor.shutdown(wait=False, cancel_futures=True)
+        self.executor = self._new()
+        return True
+
+    def shutdown(self, interrupted: bool = False) -> None:
+        if self.owned:
+            self.executor.shutdown(wait=not interrupted, cancel_futures=True)
+
+
+def make_executor(executor, workers) -> ExecutorHandle:
+    """Resolve ``sweep``'s ``executor`` and ``workers`` arguments.
+
+    Parameters
+    ----------
+    executor : None, "threads", "processes", Executor, or dask.distributed.Client
+    workers : int or None
+        Parallel workers (default: every core, or every thread of a Dask cluster). With an
+        executor passed in, the number of chunks kept in flight is twice this.
+
+    Raises
+    ------
+    ValueError
+        For ``workers < 1`` or an executor of an unknown kind.
+    """
+    if workers is None and callable(getattr(executor, "nthreads", None)):
+        workers = max(1, sum(executor.nthreads().values()))  # a dask.distributed.Client
+    if workers is None:
+        workers = default_workers()
+    if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
+        raise ValueError(f"workers = {workers!r} is invalid: must be an integer >= 1")
+    if executor is None or isinstance(executor, str):
+        kind = executor or "threads"
+        if kind not in KINDS:
+            raise ValueError(f"executor = {executor!r} is invalid: must be one of "
+                             f"{', '.join(KINDS)}, or a concurrent.futures.Executor")
+        return ExecutorHandle(kind, workers)
+    if not isinstance(executor, Executor) and callable(getattr(executor, "get_executor", None)):
+        executor = executor.get_executor()  # a dask.distributed.Client
+    if not isinstance(executor, Executor):
+        raise ValueError(f"executor = {executor!r} is invalid: must be 'threads', 'processes', "
+                         f"a concurrent.futures.Executor or a dask.distributed.Client")
+    return ExecutorHandle(None, workers, executor)

@@ -1,0 +1,204 @@
+"""A sweep's directory on disk: written as it goes, resumable after any interruption.
+
+``DIR/manifest.json`` says what the sweep is (designs, metrics, analysis settings); it is
+written before the first result. ``DIR/results.csv`` gets the rows in completion order, a
+chunk at a time, each chunk flushed and fsynced before the sweep counts it as done. When the
+sweep ends the file is rewritten in design order (atomically) and the manifest marked
+complete.
+
+Opening a directory again reads back every complete row (a line cut short by a crash is
+dropped, and the file truncated to the last whole line), so only the missing designs are
+computed. A directory holding a different sweep is refused rather than mixed. A lock file
+keeps two processes from writing one directory at once.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import logging
+import os
+from datetime import datetime, timezone
+from pathlib import Path
+
+from kresling.sweeps.table import format_row, parse_value
+
+try:  # POSIX; without it the directory is simply not locked
+    import fcntl
+except ImportError:  # pragma: no cover
+    fcntl = None
+
+__all__ = ["SweepStore", "RESULTS", "MANIFEST"]
+
+logger = logging.getLogger(__name__)
+
+RESULTS, MANIFEST, _LOCK = "results.csv", "manifest.json", ".lock"
+# Manifest entries that must agree for a directory to be resumed.
+_IDENTITY = ("format", "metrics", "columns", "analyses", "designs")
+
+
+class SweepStore:
+    """The results directory of one sweep (use :meth:`open`)."""
+
+    def __init__(self, directory: Path, manifest: dict, rows: dict, lock):
+        self.directory = directory
+        self.manifest = manifest
+        #: Rows read back from disk, by design index (each a tuple in column order).
+        self.rows = rows
+        self._lock = lock
+
+    @property
+    def results_path(self) -> Path:
+        return self.directory / RESULTS
+
+    @classmethod
+    def open(cls, directory, manifest: dict, check_row=None) -> "SweepStore":
+        """Create ``directory`` for a new sweep, or reopen it to resume the same sweep.
+
+        Parameters
+        ----------
+        directory : str or Path
+        manifest : dict
+            What the sweep is; ``manifest["columns"]`` is the CSV header.
+        check_row : callable, optional
+            ``check_row(row)`` raises ValueError if a row read back does not belong to this
+            sweep's designs.
+
+        Raises
+        ------
+        ValueError
+            If the directory holds a different sweep, results without a manifest, a damaged
+            line before the last, or is being written by another process.
+        """
+        directory = Path(directory)
+        directory.mkdir(parents=True, exist_ok=True)
+        lock = _acquire(directory / _LOCK)
+        try:
+            manifest_path, results_path = directory / MANIFEST, directory / RESULTS
+            if manifest_path.exists():
+                _check_same(directory, json.loads(manifest_path.read_text()), manifest)
+                manifest = dict(json.loads(manifest_path.read_text()), complete=False)
+            elif results_path.exists():
+                raise ValueError(f"{directory} holds {RESULTS} but no {MANIFEST}: not a "
+                                 f"sweep directory this package wrote; use another directory")
+            else:
+                manifest = dict(manifest, created=_now(), complete=False)
+            _write_atomic(manifest_path, json.dumps(manifest, indent=2))
+            rows = _read_rows(results_path, manifest["columns"], check_row)
+            if not results_path.exists():
+                _write_atomic(results_path, format_row(manifest["columns"]))
+        except BaseException:
+            _release(lock)
+            raise
+        return cls(directory, manifest, rows, lock)
+
+    def append(self, rows) -> None:
+        """Append ``rows`` (tuples in column order) and make them durable."""
+        if not rows:
+            return
+        with open(self.results_path, "a", newline="") as f:
+            f.write("".join(format_row(row) for row in rows))
+            f.flush()
+            os.fsync(f.fileno())
+
+    def finish(self, ordered_rows, summary: dict) -> None:
+        """Rewrite the results in design order, mark the manifest complete, unlock."""
+        text = format_row(self.manifest["columns"]) + "".join(format_row(r) for r in ordered_rows)
+        _write_atomic(self.results_path, text)
+        self.manifest = dict(self.manifest, complete=True, finished=_now(), **summary)
+        _write_atomic(self.directory / MANIFEST, json.dumps(self.manifest, indent=2))
+        self.close()
+
+    def close(self) -> None:
+        """Release the directory's lock (rows already appended stay)."""
+        _release(self._lock)
+        self._lock = None
+
+
+def _identity(manifest: dict, key: str):
+    value = manifest.get(key)
+    if key == "designs" and isinstance(value, dict):  # the values, not how they were made
+        return value.get("count"), value.get("sha256")
+    return value
+
+
+def _check_same(directory: Path, found: dict, wanted: dict) -> None:
+    differ = [key for key in _IDENTITY if _identity(found, key) != _identity(wanted, key)]
+    if differ:
+        shown = "; ".join(f"{key}: {_short(found.get(key))} there, {_short(wanted.get(key))} "
+                          f"here" for key in differ)
+        raise ValueError(f"{directory} holds a sweep with different parameters ({shown}); "
+                         f"use another directory, or delete it to start again")
+    if found.get("kresling") != wanted.get("kresling"):
+        logger.warning("%s was written by kresling %s; resuming with %s", directory,
+                       found.get("kresling"), wanted.get("kresling"))
+
+
+def _short(value) -> str:
+    if isinstance(value, dict) and "sha256" in value:  # the designs: say what they are
+        spec = value.get("spec", {})
+        if spec.get("kind") == "grid":
+            return (f"{value['count']} designs (grid n {spec['n']}, size {spec['size']}, Lc "
+                    f"{spec['Lc']}, lam {spec['lam']}, R {spec['R']}; {value['sha256'][:8]})")
+        return f"{value.get('count')} designs (a list; {value['sha256'][:8]})"
+    text = json.dumps(value, sort_keys=True)
+    return text if len(text) <= 120 else text[:117] + "..."
+
+
+def _read_rows(path: Path, columns, check_row) -> dict:
+    """Rows already on disk, by index; truncates a final line cut short by a crash."""
+    if not path.exists():
+        return {}
+    data = path.read_bytes()
+    whole = data[: data.rfind(b"\n") + 1]
+    lines = whole.decode("utf-8").splitlines()
+    if not lines or next(csv.reader(lines[:1])) != list(columns):
+        raise ValueError(f"{path} does not start with the header this sweep writes")
+    rows = {}
+    for number, fields in enumerate(csv.reader(lines[1:]), start=2):
+        if len(fields) != len(columns):
+            if number < len(lines):
+                raise ValueError(f"{path}, line {number}: {len(fields)} fields, expected "
+                                 f"{len(columns)} (damaged file)")
+            whole = whole[: whole.rstrip(b"\n").rfind(b"\n") + 1]  # drop a partial last row
+            break
+        row = tuple(parse_value(name, text) for name, text in zip(columns, fields))
+        if check_row is not None:
+            check_row(row)
+        rows.setdefault(row[columns.index("index")], row)
+    if len(whole) != len(data):
+        logger.warning("%s: dropped an incomplete last line (%d bytes) left by an interrupted "
+                       "run", path, len(data) - len(whole))
+        with open(path, "r+b") as f:
+            f.truncate(len(whole))
+    return rows
+
+
+def _write_atomic(path: Path, text: str) -> None:
+    temporary = path.with_name(path.name + ".tmp")
+    with open(temporary, "w", newline="") as f:
+        f.write(text)
+        f.flush()
+        os.fsync(f.fileno())
+    os.replace(temporary, path)
+
+
+def _acquire(path: Path):
+    handle = open(path, "a")
+    if fcntl is not None:
+        try:
+            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            handle.close()
+            raise ValueError(f"{path.parent} is being written by another sweep (locked); wait "
+                             f"for it or use another directory") from None
+    return handle
+
+
+def _release(handle) -> None:
+    if handle is not None:
+        handle.close()
+
+
+def _now() -> str:
+    return datetime.now(timezone.utc).isoformat(timespec="seconds")

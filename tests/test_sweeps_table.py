@@ -1,0 +1,85 @@
+"""SweepTable: exact CSV round trip, selection, maps for plots; and the figures."""
+
+import math
+
+import matplotlib
+import numpy as np
+import pytest
+
+from kresling.sweeps import SweepTable
+from kresling.sweeps.plots import plot_map, plot_maps, plot_max_by_n, plot_ratio_maps
+
+matplotlib.use("Agg")
+
+
+def made_up(seed=7):
+    rng = np.random.default_rng(seed)
+    rows = [(n, Lc, lam) for n in (4, 6) for Lc in (15.0, 30.0, 60.0) for lam in (0.7, 0.9)]
+    n, Lc, lam = map(np.array, zip(*rows))
+    ratio = rng.uniform(1, 20, len(rows)) * (lam / Lc)
+    status = np.array(["ok"] * len(rows), dtype=object)
+    status[3] = "failed"
+    ratio[3] = math.nan
+    return SweepTable({"n": n, "Lc": Lc, "lam": lam, "R": np.full(len(rows), 30.0),
+                       "kb_ratio": ratio, "status": status,
+                       "reason": np.where(status == "ok", "", "a, \"quoted\" reason"),
+                       "iterations": np.arange(len(rows)), "seconds": rng.uniform(0, 1, len(rows)),
+                       "index": np.arange(len(rows))})
+
+
+def test_csv_round_trip_is_exact(tmp_path):
+    table = made_up()
+    table.to_csv(tmp_path / "t.csv")
+    back = SweepTable.read_csv(tmp_path / "t.csv")
+    assert back.columns == table.columns
+    for column in table.columns:
+        a, b = table[column], back[column]
+        assert a.dtype == b.dtype
+        assert [str(x) for x in a.tolist()] == [str(x) for x in b.tolist()]  # NaN included
+
+
+def test_selection_best_and_grid():
+    table = made_up()
+    assert len(table.where(n=4)) == 6 and len(table.where(n=4, lam=0.9)) == 3
+    best = table.best("kb_ratio", n=4)
+    ok4 = table.where(n=4).take(table.where(n=4).ok)
+    assert best["kb_ratio"] == ok4["kb_ratio"].max()
+    Lc, lam, values = table.grid("kb_ratio", 4)
+    assert Lc.tolist() == [15.0, 30.0, 60.0] and lam.tolist() == [0.7, 0.9]
+    assert values.shape == (2, 3)
+    assert np.isnan(values[1, 1])  # row 3 (n=4, Lc=30, lam=0.9) failed
+    assert values[0, 2] == table.where(n=4, Lc=60.0, lam=0.7)["kb_ratio"][0]
+    assert "1 failed" in repr(table)
+    with pytest.raises(KeyError, match="no column 'nope'"):
+        table["nope"]
+
+
+def test_columns_of_different_lengths_are_refused():
+    with pytest.raises(ValueError, match="different lengths"):
+        SweepTable({"n": [4, 6], "Lc": [15.0]})
+
+
+def test_figures_draw_and_mark_the_best():
+    table = made_up()
+    ax = plot_map(table, "kb_ratio", 4)
+    star = [line for line in ax.lines if line.get_marker() == "*"][0]
+    best = table.best("kb_ratio", n=4)
+    assert (star.get_xdata()[0], star.get_ydata()[0]) == (best["Lc"], best["lam"])
+    visible = [a for a in plot_maps(table, "kb_ratio").axes if a.get_visible()]
+    assert len(visible) == 4  # two maps and their colour bars
+    assert len(plot_ratio_maps(table, 6, ("kb_ratio", "iterations")).axes) == 4
+    line = plot_max_by_n(table, "kb_ratio").lines[0]
+    assert line.get_xdata().tolist() == [4, 6]
+    with pytest.raises(ValueError, match="at least 2 x 2"):
+        plot_map(table.where(lam=0.9), "kb_ratio", 4)
+    matplotlib.pyplot.close("all")
+
+
+@pytest.mark.parametrize("module", ["kresling.sweeps", "kresling.sweeps.designs",
+                                    "kresling.sweeps.table", "kresling.sweeps.sweep"])
+def test_docstring_examples(module):
+    import doctest
+    import importlib
+
+    result = doctest.testmod(importlib.import_module(module))
+    assert result.attempted > 0 and result.failed == 0
