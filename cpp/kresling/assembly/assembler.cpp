@@ -47,24 +47,28 @@ void add_pattern(const std::array<Index, D>& dofs, const std::vector<Index>& row
 
 template <std::size_t D>
 void add_slots(const std::array<Index, D>& dofs, const std::vector<Index>& rows,
-               Storage storage, const SparseMatrix& m, std::vector<int>& slots) {
-  // Column-major within the element, matching Eigen's default storage of the local matrix.
-  for (Index b : dofs) {
-    for (Index a : dofs) {
-      slots.push_back(stored(rows[a], rows[b], storage) ? find_slot(m, rows[a], rows[b]) : -1);
+               Storage storage, const SparseMatrix& m, std::vector<ScatterEntry>& entries,
+               std::vector<int>& offsets) {
+  // Only the entries the matrix stores: a compact list instead of a branch per entry of
+  // the element matrix (half of which the lower-triangle storage skips).
+  for (std::size_t b = 0; b < D; ++b) {
+    for (std::size_t a = 0; a < D; ++a) {
+      if (stored(rows[dofs[a]], rows[dofs[b]], storage)) {
+        entries.push_back({find_slot(m, rows[dofs[a]], rows[dofs[b]]),
+                           static_cast<std::uint16_t>(b * D + a),
+                           static_cast<std::uint16_t>(a * D + b)});
+      }
     }
   }
+  offsets.push_back(static_cast<int>(entries.size()));
 }
 
 template <int D>
-void scatter(const Eigen::Matrix<double, D, D>& local, const int* slots, double* values) {
-  // Symmetrise on the way in: 0.5 (K + K^T), entry by entry.
-  for (int b = 0; b < D; ++b) {
-    for (int a = 0; a < D; ++a) {
-      const int slot = slots[b * D + a];
-      if (slot >= 0) values[slot] += 0.5 * (local(a, b) + local(b, a));
-    }
-  }
+void scatter(const Eigen::Matrix<double, D, D>& local, const ScatterEntry* begin,
+             const ScatterEntry* end, double* values) {
+  // Symmetrised on the way in: 0.5 (K(a, b) + K(b, a)); column-major local indices.
+  const double* k = local.data();
+  for (const ScatterEntry* e = begin; e != end; ++e) values[e->slot] += 0.5 * (k[e->local] + k[e->transposed]);
 }
 
 template <int D>
@@ -123,13 +127,13 @@ Assembler::Assembler(const model::Model& model, std::vector<Index> rows, double 
   matrix_.setFromTriplets(entries.begin(), entries.end());
   matrix_.makeCompressed();
 
-  bar_slots_.reserve(36 * model_->bars().size());
+  bar_offsets_.push_back(0);
   for (const auto& bar : model_->bars()) {
-    add_slots(element_dofs(bar.nodes), rows_, storage_, matrix_, bar_slots_);
+    add_slots(element_dofs(bar.nodes), rows_, storage_, matrix_, bar_entries_, bar_offsets_);
   }
-  hinge_slots_.reserve(144 * model_->hinges().size());
+  hinge_offsets_.push_back(0);
   for (const auto& h : model_->hinges()) {
-    add_slots(element_dofs(h.nodes), rows_, storage_, matrix_, hinge_slots_);
+    add_slots(element_dofs(h.nodes), rows_, storage_, matrix_, hinge_entries_, hinge_offsets_);
   }
   for (Index i = 0; i < size_; ++i) diagonal_slots_.push_back(find_slot(matrix_, i, i));
   connectivity_ = connectivity_of(*model_);
@@ -167,7 +171,10 @@ Energies Assembler::assemble(const VectorX& u, VectorX& force, bool with_matrix)
                                           bar.area, bar.rest_length, bar.law, with_matrix);
     energies.bars += r.energy;
     add_force<6>(r.force, element_dofs(bar.nodes), force);
-    if (with_matrix) scatter<6>(r.stiffness, &bar_slots_[36 * e], values);
+    if (with_matrix) {
+      scatter<6>(r.stiffness, bar_entries_.data() + bar_offsets_[e],
+                 bar_entries_.data() + bar_offsets_[e + 1], values);
+    }
   }
   const auto& hinges = model_->hinges();
   for (std::size_t e = 0; e < hinges.size(); ++e) {
@@ -179,7 +186,10 @@ Energies Assembler::assemble(const VectorX& u, VectorX& force, bool with_matrix)
                                             with_matrix);
     energies.hinges += r.energy;
     add_force<12>(r.force, element_dofs(h.nodes), force);
-    if (with_matrix) scatter<12>(r.stiffness, &hinge_slots_[144 * e], values);
+    if (with_matrix) {
+      scatter<12>(r.stiffness, hinge_entries_.data() + hinge_offsets_[e],
+                  hinge_entries_.data() + hinge_offsets_[e + 1], values);
+    }
   }
   if (with_matrix) {
     for (int slot : diagonal_slots_) values[slot] += shift_;

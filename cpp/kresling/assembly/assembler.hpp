@@ -10,6 +10,7 @@
 /// It is stored either whole or as its lower triangle only (what the factorisations read:
 /// half the scatter work). Hinges of zero stiffness contribute nothing and are skipped.
 
+#include <cstdint>
 #include <vector>
 
 #include <Eigen/SparseCore>
@@ -26,6 +27,14 @@ struct Energies {
   double bars = 0.0;
   double hinges = 0.0;
   double total() const { return bars + hinges; }
+};
+
+/// Where one entry of an element matrix goes: its slot in the matrix's value array and the
+/// positions (column-major) of the entry and its transpose in the element matrix.
+struct ScatterEntry {
+  int slot;
+  std::uint16_t local;
+  std::uint16_t transposed;
 };
 
 /// Which part of the symmetric tangent is stored.
@@ -70,8 +79,9 @@ class Assembler {
   double shift_ = 0.0;
   Storage storage_ = Storage::Full;
   SparseMatrix matrix_;
-  std::vector<int> bar_slots_;    // 36 per bar, -1 where a row or column is left out
-  std::vector<int> hinge_slots_;  // 144 per hinge
+  // The stored entries of each element matrix: element e's are [offsets[e], offsets[e+1]).
+  std::vector<ScatterEntry> bar_entries_, hinge_entries_;
+  std::vector<int> bar_offsets_, hinge_offsets_;
   std::vector<int> diagonal_slots_;
 };
 

@@ -14,57 +14,85 @@ namespace {
 
 constexpr double kTwoPi = 6.28318530717958647692;
 
-std::string element_name(const char* kind, std::size_t index, const Index* nodes, int count) {
-  std::string s = std::string(kind) + " " + std::to_string(index) + " (nodes";
-  for (int k = 0; k < count; ++k) s += (k ? ", " : " ") + std::to_string(nodes[k]);
-  return s + ")";
-}
+// An element as messages name it; the name is only formatted when a check fails (the
+// checks run for every element of every model a sweep builds).
+struct ElementRef {
+  const char* kind;
+  std::size_t index;
+  const Index* nodes;
+  int count;
 
-void check_nodes(const char* kind, std::size_t index, const Index* nodes, int count,
-                 Index num_nodes) {
-  for (int k = 0; k < count; ++k) {
-    if (nodes[k] < 0 || nodes[k] >= num_nodes) {
-      throw std::invalid_argument(element_name(kind, index, nodes, count) + ": node " +
-                                  std::to_string(nodes[k]) + " is out of range [0, " +
-                                  std::to_string(num_nodes) + ")");
+  std::string name() const {
+    std::string s = std::string(kind) + " " + std::to_string(index) + " (nodes";
+    for (int k = 0; k < count; ++k) s += (k ? ", " : " ") + std::to_string(nodes[k]);
+    return s + ")";
+  }
+};
+
+void check_nodes(const ElementRef& e, Index num_nodes) {
+  for (int k = 0; k < e.count; ++k) {
+    if (e.nodes[k] < 0 || e.nodes[k] >= num_nodes) {
+      throw std::invalid_argument(e.name() + ": node " + std::to_string(e.nodes[k]) +
+                                  " is out of range [0, " + std::to_string(num_nodes) + ")");
     }
     for (int j = 0; j < k; ++j) {
-      if (nodes[j] == nodes[k]) {
-        throw std::invalid_argument(element_name(kind, index, nodes, count) +
-                                    ": a node appears twice");
-      }
+      if (e.nodes[j] == e.nodes[k]) throw std::invalid_argument(e.name() + ": a node appears twice");
     }
   }
 }
 
-void check_bar(const Bar& bar, std::size_t i, const NodeMatrix& X, double scale) {
-  const std::string name = element_name("bar", i, bar.nodes.data(), 2);
-  check_nodes("bar", i, bar.nodes.data(), 2, X.rows());
-  require_positive(name + ": area", bar.area);
-  require_positive(name + ": rest length", bar.rest_length);
-  require_positive(name + ": modulus", bar.law.modulus);
-  const double l = (X.row(bar.nodes[1]) - X.row(bar.nodes[0])).norm();
-  if (!(l > 1e-12 * scale)) {
-    throw std::invalid_argument(name + ": zero length (its two nodes coincide)");
-  }
+// require_positive / require_finite with the element's name built only on failure.
+void positive(const ElementRef& e, const char* what, double value, bool allow_zero = false) {
+  if (std::isfinite(value) && (allow_zero ? value >= 0.0 : value > 0.0)) return;
+  require_positive(e.name() + ": " + what, value, allow_zero);
 }
 
 double extent(const NodeMatrix& X) {
   return std::max((X.colwise().maxCoeff() - X.colwise().minCoeff()).norm(), 1e-300);
 }
 
-void check_hinge(const Hinge& h, std::size_t i, const NodeMatrix& X) {
-  const std::string name = element_name("hinge", i, h.nodes.data(), 4);
-  check_hinge_geometry(X, h.nodes, i);
-  require_positive(name + ": stiffness", h.stiffness, /*allow_zero=*/true);
-  require_positive(name + ": length", h.length);
-  require_finite(name + ": rest angle", h.rest_angle);
-  if (h.rest_angle < 0.0 || h.rest_angle >= kTwoPi) {
-    throw_invalid(name + ": rest angle", h.rest_angle, "in [0, 2 pi)");
+void check_bar(const Bar& bar, std::size_t i, const NodeMatrix& X, double scale) {
+  const ElementRef e{"bar", i, bar.nodes.data(), 2};
+  check_nodes(e, X.rows());
+  positive(e, "area", bar.area);
+  positive(e, "rest length", bar.rest_length);
+  positive(e, "modulus", bar.law.modulus);
+  const double l = (X.row(bar.nodes[1]) - X.row(bar.nodes[0])).norm();
+  if (!(l > 1e-12 * scale)) {
+    throw std::invalid_argument(e.name() + ": zero length (its two nodes coincide)");
+  }
+}
+
+void check_hinge_geometry(const NodeMatrix& X, const std::array<Index, 4>& nodes,
+                          std::size_t index, double scale) {
+  const ElementRef e{"hinge", index, nodes.data(), 4};
+  check_nodes(e, X.rows());
+  const Vector3 a = X.row(nodes[0]), b = X.row(nodes[1]);
+  const Vector3 axis = b - a;
+  const double axis_length = axis.norm();
+  if (!(axis_length > 1e-12 * scale)) throw std::invalid_argument(e.name() + ": zero-length axis");
+  for (int w = 2; w < 4; ++w) {
+    const Vector3 x = X.row(nodes[w]);
+    const double distance = (x - a).cross(axis).norm() / axis_length;
+    if (!(distance > 1e-9 * scale)) {
+      throw std::invalid_argument(e.name() + ": wing node " + std::to_string(nodes[w]) +
+                                  " lies on the axis line (collinear hinge triangle)");
+    }
+  }
+}
+
+void check_hinge(const Hinge& h, std::size_t i, const NodeMatrix& X, double scale) {
+  const ElementRef e{"hinge", i, h.nodes.data(), 4};
+  check_hinge_geometry(X, h.nodes, i, scale);
+  positive(e, "stiffness", h.stiffness, /*allow_zero=*/true);
+  positive(e, "length", h.length);
+  if (!(std::isfinite(h.rest_angle) && h.rest_angle >= 0.0 && h.rest_angle < kTwoPi)) {
+    require_finite(e.name() + ": rest angle", h.rest_angle);
+    throw_invalid(e.name() + ": rest angle", h.rest_angle, "in [0, 2 pi)");
   }
   if (h.law.kind == elements::SpringLawKind::EnhancedLinear) {
     if (!(h.law.theta1 > 0.0 && h.law.theta1 < h.law.theta2 && h.law.theta2 < kTwoPi)) {
-      throw std::invalid_argument(name + ": spring limits (" + format_number(h.law.theta1) +
+      throw std::invalid_argument(e.name() + ": spring limits (" + format_number(h.law.theta1) +
                                   ", " + format_number(h.law.theta2) +
                                   ") are invalid: must satisfy 0 < theta1 < theta2 < 2 pi");
     }
@@ -75,22 +103,7 @@ void check_hinge(const Hinge& h, std::size_t i, const NodeMatrix& X) {
 
 void check_hinge_geometry(const NodeMatrix& X, const std::array<Index, 4>& nodes,
                           std::size_t index) {
-  const std::string name = element_name("hinge", index, nodes.data(), 4);
-  check_nodes("hinge", index, nodes.data(), 4, X.rows());
-  const double scale = extent(X);
-  const Vector3 a = X.row(nodes[0]), b = X.row(nodes[1]);
-  const Vector3 axis = b - a;
-  if (!(axis.norm() > 1e-12 * scale)) {
-    throw std::invalid_argument(name + ": zero-length axis");
-  }
-  for (int w = 2; w < 4; ++w) {
-    const Vector3 x = X.row(nodes[w]);
-    const double distance = (x - a).cross(axis).norm() / axis.norm();
-    if (!(distance > 1e-9 * scale)) {
-      throw std::invalid_argument(name + ": wing node " + std::to_string(nodes[w]) +
-                                  " lies on the axis line (collinear hinge triangle)");
-    }
-  }
+  check_hinge_geometry(X, nodes, index, extent(X));
 }
 
 Model::Model(NodeMatrix nodes, std::vector<Bar> bars, std::vector<Hinge> hinges,
@@ -117,7 +130,7 @@ Model::Model(NodeMatrix nodes, std::vector<Bar> bars, std::vector<Hinge> hinges,
   // Length scale for the degeneracy checks: the model's extent.
   const double scale = extent(nodes_);
   for (std::size_t i = 0; i < bars_.size(); ++i) check_bar(bars_[i], i, nodes_, scale);
-  for (std::size_t i = 0; i < hinges_.size(); ++i) check_hinge(hinges_[i], i, nodes_);
+  for (std::size_t i = 0; i < hinges_.size(); ++i) check_hinge(hinges_[i], i, nodes_, scale);
 }
 
 NodeMatrix Model::deformed(const VectorX& u) const {
