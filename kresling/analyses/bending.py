@@ -81,6 +81,12 @@ class BendingResult:
     def state_name(self) -> str:
         return "extended" if self.state == 1 else "contracted"
 
+    @property
+    def stable(self) -> bool:
+        """True if no increment ended on an equilibrium with a negative stiffness direction
+        (every step's free tangent positive definite, or its inertia unknown)."""
+        return bool((self.negative_eigenvalues <= 0).all())
+
 
 @dataclass(frozen=True)
 class BendingComparison:

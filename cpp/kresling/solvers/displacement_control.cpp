@@ -89,22 +89,45 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
   // The last accepted points of the path, for the extrapolated starting guess.
   std::vector<double> path_t{0.0};
   std::vector<VectorX> path_u{u};
+  int previous_negative = 0;  // stability of the last accepted equilibrium
+  auto solve_from = [&](VectorX& trial, double t_new) {
+    for (Index i : imposed) trial[i] = start[i] + t_new * prescribed[i];
+    return newton_equilibrium(*assembler_, *solver_, trial, no_load, options_.newton,
+                              options_.reject_iterations);
+  };
+  auto accepted = [&](const NewtonOutcome& o) {
+    return o.converged && o.iterations < options_.reject_iterations;
+  };
   march(steps, options_.max_bisections, result,
         [&](double t, double t_new, std::string& failure) {
           VectorX trial = u;
+          NewtonOutcome outcome;
           if (options_.extrapolation > 0) {
             extrapolate(path_t, path_u, options_.extrapolation, t_new, trial);
+            outcome = solve_from(trial, t_new);
+            // Past a bifurcation an extrapolated guess can land on an unstable branch where
+            // the previous equilibrium leads on along a stable one (the path MERLIN2's start
+            // follows): when stability is lost, retry from there and keep the more stable.
+            if (accepted(outcome) && outcome.negative_eigenvalues > previous_negative) {
+              VectorX plain = u;
+              const NewtonOutcome retry = solve_from(plain, t_new);
+              if (accepted(retry) && retry.negative_eigenvalues >= 0 &&
+                  retry.negative_eigenvalues < outcome.negative_eigenvalues) {
+                trial = plain;
+                outcome = retry;
+              }
+            }
+          } else {
+            outcome = solve_from(trial, t_new);
           }
-          for (Index i : imposed) trial[i] = start[i] + t_new * prescribed[i];
-          const NewtonOutcome outcome = newton_equilibrium(
-              *assembler_, *solver_, trial, no_load, options_.newton, options_.reject_iterations);
-          if (!(outcome.converged && outcome.iterations < options_.reject_iterations)) {
+          if (!accepted(outcome)) {
             failure = outcome.failure.empty()
                           ? "Newton needed " + std::to_string(outcome.iterations) + " iterations"
                           : outcome.failure;
             return false;
           }
           u = trial;
+          if (outcome.negative_eigenvalues >= 0) previous_negative = outcome.negative_eigenvalues;
           result.steps.push_back(record_step(*assembler_, u, t_new, outcome, imposed, -1.0));
           path_t.push_back(t_new);
           path_u.push_back(u);

@@ -28,7 +28,9 @@ struct DisplacementControlOptions {
   /// Starting guess of each increment's free DOFs: 0 = the previous equilibrium (MERLIN2's
   /// Newton sequence, iteration for iteration); 1 = linear, 2 = quadratic extrapolation
   /// along the path through the last accepted equilibria. The equilibrium found is the same
-  /// (to the Newton tolerance); a good guess only saves iterations.
+  /// (to the Newton tolerance); a good guess only saves iterations. Where several
+  /// equilibria exist (past a bifurcation), an increment whose extrapolated start converges
+  /// to a less stable one than the last is retried from the last equilibrium.
   int extrapolation = 0;
 };
 
