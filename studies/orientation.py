@@ -10,7 +10,8 @@ from pathlib import Path
 
 from kresling import Design
 from kresling.analyses import linear_bending_stiffness
-from kresling.analyses.orientation import orientation_study, plot_orientation_study
+from kresling.analyses.orientation import orientation_study
+from kresling.analyses.plots import plot_orientation_study
 
 
 def main(argv=None) -> int:

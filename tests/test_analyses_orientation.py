@@ -9,7 +9,8 @@ import pytest
 
 from kresling import Design
 from kresling.analyses import LinearBendingTester
-from kresling.analyses.orientation import orientation_study, plot_orientation_study
+from kresling.analyses.orientation import orientation_study
+from kresling.analyses.plots import plot_orientation_study
 
 
 def test_symmetries_of_the_bending_axis_angle():

@@ -1,17 +1,15 @@
 """``kresling bend`` and ``kresling snap``: the interface the issue's checks use."""
 
 import json
-import subprocess
-import sys
 
 import pytest
 
 from kresling.cli import main
+from cli_helpers import run_kresling
 
 
 def run_cli(*args, cwd):
-    return subprocess.run([sys.executable, "-m", "kresling", *args], capture_output=True,
-                          text=True, cwd=cwd, timeout=300)
+    return run_kresling(*args, cwd=cwd)
 
 
 def test_bend_json_is_table_3(tmp_path):

@@ -1,20 +1,18 @@
 """The ``kresling design`` command: table, JSON, and errors without tracebacks."""
 
 import json
-import subprocess
-import sys
 
 import pytest
 
 from kresling.cli import main
+from cli_helpers import run_kresling
 
 KEYS = ("P", "gamma", "V", "M", "Vg", "Mg", "theta_g", "alpha0", "alpha_e", "Le",
         "Psi_ext", "Psi_con")
 
 
 def run_cli(*args, cwd):
-    return subprocess.run([sys.executable, "-m", "kresling", *args], capture_output=True,
-                          text=True, cwd=cwd, timeout=120)
+    return run_kresling(*args, cwd=cwd)
 
 
 def test_json_has_every_quantity(tmp_path):

@@ -2,20 +2,18 @@
 errors on stderr without a traceback."""
 
 import json
-import subprocess
-import sys
 import xml.etree.ElementTree as ET
 
 import pytest
 
 from kresling.cli import main
+from cli_helpers import run_kresling
 
 DESIGN = ["--n", "10", "--lam", "0.9", "--Lc", "15", "--R", "30"]
 
 
 def run_cli(*args, cwd):
-    return subprocess.run([sys.executable, "-m", "kresling", "pattern", *args],
-                          capture_output=True, text=True, cwd=cwd, timeout=120)
+    return run_kresling("pattern", *args, cwd=cwd)
 
 
 def test_issue_command_writes_the_laminate_svg(tmp_path):

@@ -2,17 +2,15 @@
 
 import json
 import math
-import subprocess
-import sys
 
 import pytest
 
 from kresling.cli import main
+from cli_helpers import run_kresling
 
 
 def run_cli(*args, cwd):
-    return subprocess.run([sys.executable, "-m", "kresling", "manipulator", *args],
-                          capture_output=True, text=True, cwd=cwd, timeout=120)
+    return run_kresling("manipulator", *args, cwd=cwd)
 
 
 def test_json_markers_tendons_and_counts(tmp_path):

@@ -8,7 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from kresling.analyses.bending import bending_stiffness, bending_test
-from kresling.analyses.orientation import plot_orientation_study
+from kresling.analyses.plots import plot_orientation_study
 from kresling.analyses.plots import plot_snap_through, plot_stiffness_by_n, plot_table3_design
 from kresling.analyses.snap_through import snap_through
 from kresling.analyses.specimen_views import plot_specimen, write_specimen_fold

@@ -20,10 +20,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling.analyses.linear_bending import LinearBendingTester
-from kresling.analyses.plots import plot_orientation_study
 from kresling.geometry import Design
 
-__all__ = ["OrientationStudy", "orientation_study", "plot_orientation_study"]
+__all__ = ["OrientationStudy", "orientation_study"]
 
 
 @dataclass(frozen=True)

@@ -21,7 +21,7 @@ from kresling.geometry import Design
 from kresling.model.kresling_specimen import SpecimenParameters
 
 __all__ = ["TABLE3_DESIGNS", "Table3Comparison", "table3_comparison", "merlin2_reference",
-           "topology_effect"]
+           "topology_effect", "model_curves"]
 
 #: The designs of Table 3 as (n, Lc [mm], lambda): the three paper samples and the optimum.
 TABLE3_DESIGNS = ((8, 30.0, 0.8), (8, 15.0, 0.8), (4, 30.0, 0.7), (10, 15.0, 0.9))
@@ -153,3 +153,21 @@ def topology_effect(designs=TABLE3_DESIGNS, protocol: str = "5mm") -> list:
                     "stable_extended": other.extended.stable,
                     "stable_contracted": other.contracted.stable})
     return out
+
+
+def model_curves(designs=TABLE3_DESIGNS, protocol: str = "5mm") -> dict:
+    """Our bending test's moment-angle curves of the Table 3 designs, both states.
+
+    Returns
+    -------
+    dict
+        ``(n, Lc, lam)`` to ``{"extended": (angle, moment), "contracted": (angle, moment)}``
+        (rad, N*m): the form ``kresling.fits.reproduce`` takes as the model to compare
+        the experiments with.
+    """
+    curves = {}
+    for n, Lc, lam in designs:
+        result = bending_stiffness(Design(n, lam, Lc), protocol)
+        curves[(n, float(Lc), lam)] = {r.state_name: (r.angle, r.moment)
+                                       for r in (result.extended, result.contracted)}
+    return curves

@@ -40,7 +40,12 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     try:
         return int(args.func(args) or 0)
-    except (ValueError, FileNotFoundError) as error:
+    except BrokenPipeError:
+        # The reader went away (e.g. `kresling design | head`): not an error of ours.
+        sys.stdout = open(os.devnull, "w")
+        return 0
+    except (ValueError, OSError) as error:
+        # Bad input, or a file that cannot be read or written (missing, a directory, ...).
         print(f"kresling {args.command}: error: {error}", file=sys.stderr)
         return 2
     except ImportError as error:
@@ -50,10 +55,6 @@ def main(argv=None) -> int:
     except KeyboardInterrupt:
         print(f"kresling {args.command}: interrupted", file=sys.stderr)
         return 130
-    except BrokenPipeError:
-        # The reader went away (e.g. `kresling design | head`): not an error of ours.
-        sys.stdout = open(os.devnull, "w")
-        return 0
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -74,7 +74,7 @@ CHAPTERS = (
     Chapter("geometry", "Chapter 2.1", "Generalized Kresling geometry",
             "kresling.report.geometry_section"),
     Chapter("experiments", "Chapter 3.2-3.3", "Experimental data: crease stiffness and "
-            "bending tests", "kresling.fits"),
+            "bending tests", "kresling.report.experiments_section"),
     Chapter("analyses", "Chapter 3.1, 3.3-3.4", "Bending stiffness of the bar-and-hinge "
             "model: Table 3, figures 3.5-3.7 and 3.14-3.16", "kresling.analyses"),
     Chapter("sweeps", "Chapter 3.4-3.5", "Parametric study: figures 3.9-3.13, 3.17 and the "

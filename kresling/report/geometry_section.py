@@ -10,7 +10,6 @@ traditional-Kresling limit. Nothing here depends on ``quick``: it is all closed 
 from __future__ import annotations
 
 import csv
-import itertools
 import logging
 import math
 from pathlib import Path

@@ -13,7 +13,6 @@ import logging
 import shutil
 from pathlib import Path
 
-import numpy as np
 
 from kresling.analyses import bending_stiffness
 from kresling.geometry import Design
