@@ -8,12 +8,9 @@ from kresling.cli import main
 from cli_helpers import run_kresling
 
 
-def run_cli(*args, cwd):
-    return run_kresling(*args, cwd=cwd)
-
 
 def test_bend_json_is_table_3(tmp_path):
-    result = run_cli("bend", "--n", "8", "--lam", "0.8", "--Lc", "30", "--R", "30", "--json",
+    result = run_kresling("bend", "--n", "8", "--lam", "0.8", "--Lc", "30", "--R", "30", "--json",
                      cwd=tmp_path)
     assert result.returncode == 0, result.stderr
     values = json.loads(result.stdout)
@@ -25,7 +22,7 @@ def test_bend_json_is_table_3(tmp_path):
 
 
 def test_snap_json(tmp_path):
-    result = run_cli("snap", "--n", "4", "--lam", "0.7", "--Lc", "30", "--json", cwd=tmp_path)
+    result = run_kresling("snap", "--n", "4", "--lam", "0.7", "--Lc", "30", "--json", cwd=tmp_path)
     assert result.returncode == 0, result.stderr
     values = json.loads(result.stdout)
     assert values["snap_force"] == pytest.approx(1.536, abs=1e-3)
@@ -60,7 +57,7 @@ def test_tables_and_snap_plot(tmp_path, capsys):
     (["snap", "--n", "6", "--lam", "0.9", "--Lc", "-1"], "Lc = -1 is invalid"),
 ])
 def test_bad_input_is_one_line_on_stderr(tmp_path, args, message):
-    result = run_cli(*args, cwd=tmp_path)
+    result = run_kresling(*args, cwd=tmp_path)
     assert result.returncode == 2
     assert message in result.stderr and "Traceback" not in result.stderr
     assert result.stdout == ""

@@ -11,12 +11,9 @@ KEYS = ("P", "gamma", "V", "M", "Vg", "Mg", "theta_g", "alpha0", "alpha_e", "Le"
         "Psi_ext", "Psi_con")
 
 
-def run_cli(*args, cwd):
-    return run_kresling(*args, cwd=cwd)
-
 
 def test_json_has_every_quantity(tmp_path):
-    result = run_cli("design", "--n", "10", "--lam", "0.9", "--Lc", "15", "--R", "30", "--json",
+    result = run_kresling("design", "--n", "10", "--lam", "0.9", "--Lc", "15", "--R", "30", "--json",
                      cwd=tmp_path)
     assert result.returncode == 0, result.stderr
     values = json.loads(result.stdout)
@@ -42,7 +39,7 @@ def test_table(capsys):
     ],
 )
 def test_invalid_input_exits_nonzero_without_traceback(tmp_path, args, message):
-    result = run_cli("design", *args, "--json", cwd=tmp_path)
+    result = run_kresling("design", *args, "--json", cwd=tmp_path)
     assert result.returncode != 0
     assert message in result.stderr
     assert "Traceback" not in result.stderr
