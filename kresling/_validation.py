@@ -47,6 +47,16 @@ def as_integer_array(name: str, values) -> np.ndarray:
     return array.astype(np.int32)
 
 
+def as_positive_real(name: str, value) -> float:
+    """Return ``value`` as a float that is finite and > 0 (a tolerance, a step size)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise ValueError(f"{name} = {show(value)} is invalid: must be a finite number > 0")
+    value = float(value)
+    if not (np.isfinite(value) and value > 0):
+        raise ValueError(f"{name} = {value!r} is invalid: must be a finite number > 0")
+    return value
+
+
 def as_real(name: str, value) -> float:
     """Return ``value`` as a float; the core checks ranges and finiteness."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):

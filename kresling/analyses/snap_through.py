@@ -42,7 +42,7 @@ import numpy as np
 from kresling import _core
 from kresling.geometry import Design
 from kresling.model.kresling_specimen import SpecimenParameters
-from kresling.solvers._inputs import positive_int
+from kresling._validation import as_integer
 from kresling.solvers.displacement_control import displacement_control_options
 
 __all__ = ["SnapThroughResult", "SnapThroughTester", "snap_through", "DEFAULT_STEPS"]
@@ -160,7 +160,7 @@ class SnapThroughTester:
 
     def __init__(self, n, *, steps=DEFAULT_STEPS, parameters=None, extrapolation=2, **solver):
         self.n = int(n)
-        self.steps = positive_int("steps", steps)
+        self.steps = as_integer("steps", steps, minimum=1)
         self.parameters = parameters or SpecimenParameters()
         options = displacement_control_options(extrapolation=extrapolation, **solver)
         self._core = _core.analyses.SnapThroughTest(self.n, self.steps, self.parameters.to_core(),

@@ -18,16 +18,3 @@ def dof_vector(model, name, value, *, allow_none=False):
     if not np.isfinite(array).all():
         raise ValueError(f"{name} contains NaN or inf")
     return np.ascontiguousarray(array.ravel())
-
-
-def positive_int(name, value, minimum=1):
-    if isinstance(value, bool) or int(value) != value or value < minimum:
-        raise ValueError(f"{name} = {value!r} is invalid: must be an integer >= {minimum}")
-    return int(value)
-
-
-def positive_float(name, value):
-    value = float(value)
-    if not (np.isfinite(value) and value > 0):
-        raise ValueError(f"{name} = {value!r} is invalid: must be a finite number > 0")
-    return value

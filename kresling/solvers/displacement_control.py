@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 from kresling import _core
-from kresling.solvers._inputs import dof_vector, positive_float, positive_int
+from kresling.solvers._inputs import dof_vector
+from kresling._validation import as_integer, as_positive_real
 from kresling.solvers.path import PathResult
 
 
@@ -53,7 +54,8 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
         tolerance=tolerance, max_iterations=max_iterations, reject_iterations=reject_iterations,
         max_bisections=max_bisections, shift=shift, extrapolation=extrapolation)
     d = _core.solvers.displacement_control(
-        model._core, dof_vector(model, "prescribed", prescribed), positive_int("steps", steps),
+        model._core, dof_vector(model, "prescribed", prescribed),
+        as_integer("steps", steps, minimum=1),
         options, dof_vector(model, "initial", initial, allow_none=True))
     return PathResult._from_core(d)
 
@@ -64,10 +66,10 @@ def displacement_control_options(*, tolerance=1e-6, max_iterations=50, reject_it
     if extrapolation not in (0, 1, 2) or isinstance(extrapolation, bool):
         raise ValueError(f"extrapolation = {extrapolation!r} is invalid: must be 0, 1 or 2")
     o = _core.solvers.DisplacementControlOptions()
-    o.tolerance = positive_float("tolerance", tolerance)
-    o.max_iterations = positive_int("max_iterations", max_iterations)
-    o.reject_iterations = positive_int("reject_iterations", reject_iterations)
-    o.max_bisections = positive_int("max_bisections", max_bisections, minimum=0)
+    o.tolerance = as_positive_real("tolerance", tolerance)
+    o.max_iterations = as_integer("max_iterations", max_iterations, minimum=1)
+    o.reject_iterations = as_integer("reject_iterations", reject_iterations, minimum=1)
+    o.max_bisections = as_integer("max_bisections", max_bisections, minimum=0)
     o.shift = float(shift)
     o.extrapolation = int(extrapolation)
     return o

@@ -5,7 +5,8 @@ from __future__ import annotations
 import math
 
 from kresling import _core
-from kresling.solvers._inputs import dof_vector, positive_float, positive_int
+from kresling.solvers._inputs import dof_vector
+from kresling._validation import as_integer, as_positive_real
 from kresling.solvers.path import PathResult
 
 
@@ -29,9 +30,10 @@ def solve_force_control(model, forces, steps, *, tolerance=1e-6, max_iterations=
         ``constraint_force``: the support reactions at the supported DOFs.
     """
     d = _core.solvers.force_control(
-        model._core, dof_vector(model, "forces", forces), positive_int("steps", steps),
-        positive_float("tolerance", tolerance), positive_int("max_iterations", max_iterations),
-        positive_int("max_bisections", max_bisections, minimum=0), float(shift),
+        model._core, dof_vector(model, "forces", forces), as_integer("steps", steps, minimum=1),
+        as_positive_real("tolerance", tolerance),
+        as_integer("max_iterations", max_iterations, minimum=1),
+        as_integer("max_bisections", max_bisections, minimum=0), float(shift),
         dof_vector(model, "initial", initial, allow_none=True))
     return PathResult._from_core(d)
 
@@ -77,8 +79,9 @@ def solve_mgdcm(model, forces, *, initial_load_factor=0.01, max_increments=100,
                          f"[0, {model.num_dofs})")
     d = _core.solvers.mgdcm(
         model._core, dof_vector(model, "forces", forces), float(initial_load_factor),
-        positive_int("max_increments", max_increments), float(max_load_factor), int(monitor_dof),
-        float(max_displacement), float(max_step_factor), positive_float("tolerance", tolerance),
-        positive_int("max_iterations", max_iterations), float(shift),
+        as_integer("max_increments", max_increments, minimum=1), float(max_load_factor),
+        int(monitor_dof),
+        float(max_displacement), float(max_step_factor), as_positive_real("tolerance", tolerance),
+        as_integer("max_iterations", max_iterations, minimum=1), float(shift),
         dof_vector(model, "initial", initial, allow_none=True))
     return PathResult._from_core(d)
