@@ -106,10 +106,11 @@ class LinearBendingTester:
         K = (T.T @ tangent_stiffness(specimen.model) @ T).tocsc()
         free = np.setdiff1d(np.arange(K.shape[0]), imposed)
         e = np.ones(len(imposed))
-        Kfp_e = K[free][:, imposed] @ e
+        free_rows = K[free]  # sliced once, for both blocks
+        Kfp_e = free_rows[:, imposed] @ e
         try:
             # Sparse LU (SuperLU): a dense Cholesky of this size is slower under BLAS threads.
-            u_free = scipy.sparse.linalg.splu(K[free][:, free]).solve(Kfp_e)
+            u_free = scipy.sparse.linalg.splu(free_rows[:, free].tocsc()).solve(Kfp_e)
         except RuntimeError:                 # "Factor is exactly singular"
             u_free = np.full(len(free), math.nan)
         force = e @ (K[imposed][:, imposed] @ e) - Kfp_e @ u_free
