@@ -14,7 +14,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
-// NOTES section 1: the exact value the thesis's Appendix E code uses.
+// docs/thesis_equations.md, 'Geometry': the exact value the thesis's Appendix E code uses.
 TEST(Design, ExtendedHeightOfTheOptimum) {
   const Design d(10, 30.0, 0.9, 15.0);
   EXPECT_NEAR(d.derived().Le, 55.8194667799374, 1e-9);
@@ -26,8 +26,8 @@ TEST(Design, ExtendedHeightsListedInNotes) {
   EXPECT_NEAR(Design(4, 30.0, 0.7, 30.0).derived().Le, 41.068587, 1e-6);
 }
 
-// The golden MERLIN2 model (n=4, Lc=30, lambda=0.7, extended) lists the as-built angle of
-// its first polygon-edge hinge, which is Psi_ext (NOTES section 2).
+// A MERLIN2 reference model (n=4, Lc=30, lambda=0.7, extended) lists the as-built angle of
+// its first polygon-edge hinge, which is Psi_ext (docs/thesis_equations.md, 'Geometry').
 TEST(Design, FacetAngleMatchesMerlinGoldenHinge) {
   EXPECT_NEAR(Design(4, 30.0, 0.7, 30.0).derived().psi_ext, 1.2878022801111912, 1e-12);
 }

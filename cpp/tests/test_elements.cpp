@@ -103,7 +103,8 @@ TEST(Dihedral, AngleSweepsTheWholeTurn) {
 }
 
 TEST(Dihedral, SideRuleFollowsMerlin) {
-  // Within |n . r_ac| <= 1e-8 the angle is taken on the near side of pi (MODEL.md).
+  // Within |n . r_ac| <= 1e-8 the angle is taken on the near side of pi (docs/model.md,
+  // 'Hinges').
   const Vector3 a(0, 0, 0), b(0, 0, 1), c(1, 0, 0.3);
   const double tiny = 1e-10;  // |n . r_ac| = sin(tiny) * |r_db_perp| * |r_ac_perp| ~ 1e-10
   const Vector3 d(std::cos(kPi + tiny), std::sin(kPi + tiny), 0.7);

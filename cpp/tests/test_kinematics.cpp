@@ -31,7 +31,7 @@ Eigen::Matrix4d eqn26_literal(double s, double k, double p) {
 
 }  // namespace
 
-// The check: arc -> tendons -> arc to 1e-9 in all four quadrants of phi, N = 1 and
+// Round trip: arc -> tendons -> arc to 1e-9 in all four quadrants of phi, N = 1 and
 // N > 1. Tolerance: the map is well conditioned away from kappa = 0, so 1e-9 leaves a
 // factor of ~1e5 over double rounding of lengths ~30 mm.
 TEST(ConstantCurvature, ArcRoundTripInEveryQuadrantAndSegmentCount) {

@@ -16,9 +16,10 @@ using kresling::geometry::Design;
 
 // Design(n, R, lambda, Lc).
 
-// MODEL.md's reference run (n = 8, Lc = 30, lambda = 0.8): 4.34 N at 5.93 mm, then the force
-// dips slightly below zero. The peak converges to 4.3405 N at 5.924 mm (1600 steps); 100
-// steps with the parabolic refinement are within 1e-4 N and 0.002 mm of that.
+// The MERLIN2 reference run of docs/thesis_equations.md, 'Snap-through test' (n = 8,
+// Lc = 30, lambda = 0.8): 4.34 N at 5.93 mm, then the force dips slightly below zero. The
+// peak converges to 4.3405 N at 5.924 mm (1600 steps); 100 steps with the parabolic
+// refinement are within 1e-4 N and 0.002 mm of that.
 TEST(SnapThrough, ReferenceRunOfModelMd) {
   const SnapThroughResult r = snap_through(Design(8, 30.0, 0.8, 30.0));
   ASSERT_TRUE(r.completed) << r.message;

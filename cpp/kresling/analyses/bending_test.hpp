@@ -1,6 +1,7 @@
 #pragma once
 /// \file bending_test.hpp
-/// The thesis's three-point bending test (section 3.4, Appendix B; MODEL.md).
+/// The thesis's three-point bending test (section 3.4, Appendix B; docs/thesis_equations.md,
+/// 'Bending test').
 ///
 /// A stack of cells (default four: two modules, chirality + - + -), all in one state.
 /// Nodes 0, n/2 and the centre of the bottom and top polygons are fixed in x, y, z (each

@@ -1,6 +1,6 @@
 #pragma once
 /// \file snap_through.hpp
-/// Bistability strength (thesis section 3.5; MODEL.md "Snap-through").
+/// Bistability strength (thesis section 3.5; docs/thesis_equations.md, 'Snap-through test').
 ///
 /// One cell built stress-free in its extended state; the bottom polygon's n+1 nodes fixed in
 /// x, y, z; the top polygon's n+1 nodes driven down in z by Le - Lc in equal increments

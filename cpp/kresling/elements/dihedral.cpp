@@ -11,12 +11,13 @@ namespace {
 
 constexpr double kTwoPi = 6.28318530717958647692;
 
-// MODEL.md's (MERLIN2's) formula, kept exactly so that forces match the reference runs
-// to rounding: theta = sgn acos(m.n / |m||n|), sgn = sign(n . r_ac), taken as +1 when
-// |n . r_ac| <= 1e-8, then mapped to [0, 2 pi). (m x n is parallel to the axis with the
-// same sign as n . r_ac.) Near 0 and pi the arccosine is ill-conditioned: the angle carries
-// an absolute rounding error up to ~1e-8 rad there; atan2 would be exact, but would differ
-// from MERLIN2's internal forces by that much at nearly flat hinges (the polygon spokes).
+// MERLIN2's formula (docs/model.md, 'Hinges'), kept exactly so that forces match the
+// reference runs to rounding: theta = sgn acos(m.n / |m||n|), sgn = sign(n . r_ac), taken
+// as +1 when |n . r_ac| <= 1e-8, then mapped to [0, 2 pi). (m x n is parallel to the axis
+// with the same sign as n . r_ac.) Near 0 and pi the arccosine is ill-conditioned: the
+// angle carries an absolute rounding error up to ~1e-8 rad there; atan2 would be exact, but
+// would differ from MERLIN2's internal forces by that much at nearly flat hinges (the
+// polygon spokes).
 double merlin_angle(const Vector3& m, const Vector3& n, const Vector3& r_ac) {
   const double cosine = std::clamp(m.dot(n) / (m.norm() * n.norm()), -1.0, 1.0);
   const double theta = std::acos(cosine);

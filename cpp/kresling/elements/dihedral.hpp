@@ -12,9 +12,9 @@
 /// m = r_ac x e and n = e x r_db, the angle is arccos(m.n / |m||n|), on the far side of
 /// pi (2 pi minus it) when n . r_ac < -1e-8: pi when the two triangles are coplanar and
 /// open (flat sheet), towards 0 or 2 pi as the hinge closes one way or the other. This is
-/// MODEL.md's (MERLIN2's) convention, arccosine included, so that internal forces agree with
-/// the reference runs to rounding; near 0 and pi the arccosine limits the angle's absolute
-/// accuracy to about 1e-8 rad.
+/// MERLIN2's convention (docs/model.md, 'Hinges'), arccosine included, so that internal
+/// forces agree with the reference runs to rounding; near 0 and pi the arccosine limits the
+/// angle's absolute accuracy to about 1e-8 rad.
 
 #include "kresling/core/types.hpp"
 

@@ -40,7 +40,8 @@ SpringResponse enhanced_linear_spring(double theta, double theta0, double kp, do
 
 /// MERLIN2's "super-linear" bending law, M = kp sign(d) |d|^(4/3), energy 3/7 kp |d|^(7/3).
 /// Its reported stiffness is max(4/3 kp |d|^(1/3), 1e-3 kp): floored so that the tangent of
-/// an unbent panel is not singular (it is not the exact derivative for |d| < ~5e-11).
+/// an unbent panel is not singular (it is not the exact derivative for |d| < ~4.2e-10).
+/// See docs/model.md, 'Spring laws'.
 SpringResponse super_linear_bend_spring(double theta, double theta0, double kp);
 
 }  // namespace kresling::elements

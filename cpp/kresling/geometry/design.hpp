@@ -1,6 +1,7 @@
 #pragma once
 /// \file design.hpp
-/// Generalized Kresling cell geometry (thesis ch. 2, eqns 1-9; NOTES section 1).
+/// Generalized Kresling cell geometry (thesis ch. 2, eqns 1-9; docs/thesis_equations.md,
+/// 'Geometry').
 ///
 /// One cell: a bottom and a top regular n-gon of circumradius R, the top twisted by alpha
 /// and raised by L(alpha). Bottom vertex i sits at angle 2 pi i / n, top vertex i at
@@ -32,7 +33,7 @@ struct DesignParameters {
   int chirality = 1;   ///< +1 or -1 (the sign of lambda in the thesis's code)
 };
 
-/// Every derived quantity of NOTES section 1.
+/// Every derived quantity of docs/thesis_equations.md, 'Geometry'.
 struct DerivedQuantities {
   double phi = 0;      ///< pi / n
   double gamma = 0;    ///< half the polygon's internal angle, eqn 2

@@ -1,7 +1,7 @@
 #pragma once
 /// \file constant_curvature.hpp
-/// Jones's constant-curvature map for a section driven by three tendons (thesis eqns 27-29,
-/// NOTES section 4) and its inverse.
+/// Jones's constant-curvature map for a section driven by three tendons (thesis eqns 27-29;
+/// docs/thesis_equations.md, 'Kinematics') and its inverse.
 ///
 /// Tendon i (i = 1, 2, 3) runs parallel to the backbone at radius d, at angle
 /// sigma_i = 2 pi (i - 1) / 3 in the section's base frame (tendon 1 on +x, tendon 2 at +120

@@ -1,7 +1,7 @@
 #pragma once
 /// \file kresling_specimen.hpp
-/// Bar-and-hinge model of a stack of generalized Kresling cells (MODEL.md's reconstruction
-/// of the thesis's generator).
+/// Bar-and-hinge model of a stack of generalized Kresling cells (a reconstruction of the
+/// thesis's generator: docs/thesis_equations.md, 'Bending test').
 ///
 /// Level k (k = 0..cells) has n perimeter nodes at radius R and angles
 /// theta_k + 2 pi j / n, then one centre node: node k (n+1) + j, centre k (n+1) + n. Cell i
@@ -35,7 +35,8 @@ enum class EdgeFamily : std::uint8_t {
   PolygonSpoke = 3,
 };
 
-/// Stiffness assignment; defaults are the thesis's (Appendix B, MODEL.md).
+/// Stiffness assignment; defaults are the thesis's (Appendix B; docs/model.md,
+/// 'Material calibration').
 struct SpecimenParameters {
   double kf = 0.047;                   ///< crease stiffness per unit length [N/rad]
   double valley_factor = 1.0;          ///< valley hinges: factor * kf

@@ -1,6 +1,6 @@
 #pragma once
 /// \file topology.hpp
-/// From panels to bars and hinges (MODEL.md's topology rules, as MERLIN2 applies them).
+/// From panels to bars and hinges (docs/model.md, 'Topology': the rules as MERLIN2 applies them).
 ///
 /// Panels are split into triangles: a triangle stays; a quad is split on its shorter
 /// diagonal (N4B5) or around a new centre node (N5B8); a larger polygon is split recursively

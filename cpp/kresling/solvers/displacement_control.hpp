@@ -1,6 +1,6 @@
 #pragma once
 /// \file displacement_control.hpp
-/// Displacement control as MERLIN2 runs it (the thesis's mode, MODEL.md).
+/// Displacement control as MERLIN2 runs it (the thesis's mode; docs/model.md, 'Solvers').
 ///
 /// The prescribed displacement vector is reached in `steps` equal increments; only its
 /// non-zero components are imposed (zero components stay free). Each increment moves the

@@ -11,7 +11,8 @@
 
 namespace kresling::solvers {
 
-/// Newton iteration controls (MODEL.md: ||du_free||_2 <= 1e-6, at most 50 iterations).
+/// Newton iteration controls (docs/model.md, 'Solvers': ||du_free||_2 <= 1e-6, at most 50
+/// iterations).
 struct NewtonOptions {
   double tolerance = 1e-6;   ///< on the 2-norm of the free-DOF correction [mm]
   int max_iterations = 50;
@@ -33,8 +34,9 @@ struct PathStep {
 struct PathResult {
   std::vector<PathStep> steps;
   /// DOFs whose forces `constraint_force` lists: the imposed DOFs under displacement
-  /// control (the force the structure exerts on the actuator, -f_int, MODEL.md's reported
-  /// force), the supported DOFs under force control (the support reactions, f_int).
+  /// control (the force the structure exerts on the actuator, -f_int, the reported force of
+  /// docs/model.md, 'Solvers'), the supported DOFs under force control (the support
+  /// reactions, f_int).
   std::vector<Index> constraint_dofs;
   bool completed = false;
   /// Why the path ended early (empty when completed).
