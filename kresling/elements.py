@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from kresling import _core
-from kresling.model.model import BAR_LAWS, SPRING_LAWS
+from kresling.laws import BAR_LAWS, FOLD_LIMITS, SPRING_LAWS
 
 __all__ = ["dihedral_angle", "dihedral_angle_derivatives", "bar_response", "hinge_response",
            "spring_law"]
@@ -24,7 +24,7 @@ def _point(name, x):
 
 
 def dihedral_angle(a, b, c, d) -> float:
-    """Dihedral angle in [0, 2 pi): pi when flat (MODEL.md's convention) [rad]."""
+    """Dihedral angle in [0, 2 pi): pi when flat (docs/model.md, 'Hinges') [rad]."""
     return _core.elements.dihedral_angle(*(_point(n, x) for n, x in zip("abcd", (a, b, c, d))))
 
 
@@ -46,7 +46,7 @@ def bar_response(x1, x2, *, rest_length, modulus, area=1.0, law="ogden"):
 
 
 def hinge_response(a, b, c, d, *, stiffness, rest_angle, length, law="enhanced_linear",
-                   limits=(np.radians(5.0), np.radians(355.0))):
+                   limits=FOLD_LIMITS):
     """Energy, internal force (12,), tangent (12, 12), angle and moment of one hinge.
 
     ``stiffness`` is per unit length [N/rad]; the moment is ``length * M(angle)`` [N*mm].
@@ -60,7 +60,7 @@ def hinge_response(a, b, c, d, *, stiffness, rest_angle, length, law="enhanced_l
 
 
 def spring_law(theta, *, rest_angle, stiffness, law="enhanced_linear",
-               limits=(np.radians(5.0), np.radians(355.0))):
+               limits=FOLD_LIMITS):
     """Moment, dM/dtheta and energy per unit hinge length at angle(s) ``theta`` [rad].
 
     Returns three arrays shaped like ``theta``.

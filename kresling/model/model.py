@@ -5,15 +5,9 @@ from __future__ import annotations
 import numpy as np
 
 from kresling import _core
-
-#: Bar laws by name (MODEL.md): "ogden" is MERLIN2's Ogden law with exponents (5, 1).
-BAR_LAWS = {"linear": 0, "ogden": 1}
-#: Spring laws by name: "enhanced_linear" (MERLIN2's, with limits), "linear",
-#: "super_linear_bend" (M ~ |dtheta|^(4/3)).
-SPRING_LAWS = {"linear": 0, "enhanced_linear": 1, "super_linear_bend": 2}
-
-#: MERLIN2's default limits of the enhanced linear law for fold hinges [rad] (5 and 355 deg).
-FOLD_LIMITS = (np.radians(5.0), np.radians(355.0))
+# The law tables live in kresling.laws (the element kernels name laws too); these names
+# stay importable from here and from kresling.model.
+from kresling.laws import BAR_LAWS, FOLD_LIMITS, SPRING_LAWS  # noqa: F401
 
 
 def _per_element(name, value, count, dtype=float):
