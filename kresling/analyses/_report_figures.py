@@ -34,7 +34,7 @@ def draw_figures(section: Section, out_dir: Path, table, studies, quick: bool) -
     of figure A-1."""
     from matplotlib.figure import Figure
 
-    from kresling.fits.thesis_tables import merlin2_model_curves
+    from kresling.data.tables import merlin2_model_curves
 
     curves = merlin2_model_curves()
     figure = Figure(figsize=(11.0, 8.5), layout="constrained")

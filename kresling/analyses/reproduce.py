@@ -124,7 +124,7 @@ def _write_rows(path: Path, rows) -> Path:
 
 
 def _history_error(entry) -> float:
-    from kresling.fits.thesis_tables import merlin2_model_curves
+    from kresling.data.tables import merlin2_model_curves
 
     curves = merlin2_model_curves()[(entry.design.n, entry.design.Lc, entry.design.lam)]
     worst = 0.0

@@ -1,11 +1,11 @@
 """Table 3 side by side: our bending test, the MERLIN2 reference runs, and the thesis's model
 and experimental columns; and how much MERLIN2's duplicated topology moves the answer.
 
-Sources: ``kresling/data/merlin2/table3_reference.csv`` (MERLIN2 runs of the thesis's
-Appendix B script, see its README) and ``kresling/data/thesis_table3_bending_stiffness.csv``
-(read through :func:`kresling.fits.thesis_tables.table3`, which also recomputes the
-experimental ratios from the printed means: for n = 8, Lc = 30 the printed 4.91 is not
-3.50 / 0.80 = 4.38).
+Sources, read through :mod:`kresling.data.tables`: ``kresling/data/merlin2/table3_reference.csv``
+(MERLIN2 runs of the thesis's Appendix B script, see its README) and
+``kresling/data/thesis_table3_bending_stiffness.csv``. The experimental ratio is also
+recomputed from the printed means: for n = 8, Lc = 30 the printed 4.91 is not
+3.50 / 0.80 = 4.38.
 """
 
 from __future__ import annotations
@@ -13,34 +13,19 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
-
-from kresling import data
 from kresling.analyses.bending import BendingComparison, bending_stiffness
+from kresling.data.tables import TABLE3_DESIGNS, merlin2_table3_reference, thesis_table3
 from kresling.geometry import Design
 from kresling.model.kresling_specimen import SpecimenParameters
 
 __all__ = ["TABLE3_DESIGNS", "Table3Comparison", "table3_comparison", "merlin2_reference",
            "topology_effect", "model_curves"]
 
-#: The designs of Table 3 as (n, Lc [mm], lambda): the three paper samples and the optimum.
-TABLE3_DESIGNS = ((8, 30.0, 0.8), (8, 15.0, 0.8), (4, 30.0, 0.7), (10, 15.0, 0.9))
-
 _KEYS = ("extended", "contracted", "ratio")
 
-
-def merlin2_reference() -> dict:
-    """K_B of the MERLIN2 reference runs (5 mm protocol).
-
-    Returns
-    -------
-    dict
-        ``(n, Lc, lam)`` to ``{"extended", "contracted", "ratio"}`` [N*m/rad].
-    """
-    table = np.genfromtxt(data.path("merlin2/table3_reference.csv"), delimiter=",", names=True)
-    return {(int(r["n"]), float(r["Lc_mm"]), float(r["lambda"])):
-            dict(zip(_KEYS, (float(r["Kb_ext_Nm_per_rad"]), float(r["Kb_con_Nm_per_rad"]),
-                             float(r["ratio"])))) for r in table}
+#: K_B of the MERLIN2 reference runs: ``(n, Lc, lam)`` to ``{"extended", "contracted",
+#: "ratio"}`` [N*m/rad] (the shipped data, :func:`kresling.data.tables.merlin2_table3_reference`).
+merlin2_reference = merlin2_table3_reference
 
 
 @dataclass(frozen=True)
@@ -98,23 +83,25 @@ def table3_comparison(protocol: str = "5mm", parameters=None, designs=TABLE3_DES
     -------
     list of Table3Comparison
     """
-    from kresling.fits.thesis_tables import table3
-
-    thesis = {(row.n, row.Lc, row.lam): row for row in table3() if row.material == "paper"}
-    reference = merlin2_reference()
+    thesis = {(row["n"], row["Lc"], row["lam"]): row for row in thesis_table3()
+              if row["material"] == "paper"}
+    reference = merlin2_table3_reference()
     nan = dict.fromkeys(_KEYS, math.nan)
     out = []
     for n, Lc, lam in designs:
         design = Design(n, lam, Lc)
         row = thesis.get((n, Lc, lam))
         experiment = {} if row is None else {
-            "extended": row.extended.mean, "extended_sd": row.extended.sd,
-            "contracted": row.contracted.mean, "contracted_sd": row.contracted.sd,
-            "ratio": row.ratio_listed, "ratio_of_means": row.ratio_of_means.value}
+            "extended": row["K1_exp_mean"], "extended_sd": row["K1_exp_sd"],
+            "contracted": row["K0_exp_mean"], "contracted_sd": row["K0_exp_sd"],
+            "ratio": row["ratio_exp"], "ratio_of_means": row["K1_exp_mean"] / row["K0_exp_mean"]}
+        model = nan if row is None else {"extended": row["K1_model"],
+                                         "contracted": row["K0_model"],
+                                         "ratio": row["ratio_model"]}
         out.append(Table3Comparison(
             design=design, ours=bending_stiffness(design, protocol, parameters=parameters),
-            reference=reference.get((n, Lc, lam), nan),
-            thesis_model=dict(row.model) if row is not None else nan, experiment=experiment))
+            reference=reference.get((n, Lc, lam), nan), thesis_model=model,
+            experiment=experiment))
     return out
 
 
@@ -162,8 +149,8 @@ def model_curves(designs=TABLE3_DESIGNS, protocol: str = "5mm") -> dict:
     -------
     dict
         ``(n, Lc, lam)`` to ``{"extended": (angle, moment), "contracted": (angle, moment)}``
-        (rad, N*m): the form ``kresling.fits.reproduce`` takes as the model to compare
-        the experiments with.
+        (rad, N*m): the form the experimental fits take as the model to compare the
+        experiments with (:func:`kresling.fits.thesis_tables.experiment_vs_model`).
     """
     curves = {}
     for n, Lc, lam in designs:

@@ -4,29 +4,27 @@ Table 1 (crease stiffness per run) is read with the same reader a user's table g
 through. Table 3 lists, per design, the experimental K_B (mean ± SD of three trials) in
 both states, their ratio, and the model's values; its ratios are recomputed here from its
 means, and each listed ratio is checked against the range that rounding of the printed
-means allows.
+means allows. The printed numbers themselves come from :mod:`kresling.data.tables`.
 """
 
 from __future__ import annotations
 
-import csv
 import itertools
 from dataclasses import dataclass
 
 import numpy as np
+from scipy import stats
 
 from kresling import data
+from kresling.data.tables import (TABLE1_HALF_UNIT, TABLE3_HALF_UNIT, merlin2_model_curves,
+                                  thesis_table3)
 from kresling.fits.bending import model_stiffness
 from kresling.fits.crease import CreaseStiffness
 from kresling.fits.crease_files import read_stiffness_table
 from kresling.fits.statistics import Ratio, Summary, ratio_of_means
 
 __all__ = ["table1", "largest_sd_under_rounding", "Table3Row", "table3", "experiment_vs_model",
-           "merlin2_model_curves"]
-
-#: Half a unit of the last digit Tables 1 and 3 print (three and two decimals).
-TABLE1_HALF_UNIT = 0.0005
-TABLE3_HALF_UNIT = 0.005
+           "merlin2_model_curves", "TABLE1_HALF_UNIT", "TABLE3_HALF_UNIT"]
 
 
 def table1(confidence: float = 0.95) -> CreaseStiffness:
@@ -101,14 +99,8 @@ class Table3Row:
         return f"n={self.n}, Lc={self.Lc:g} mm, lambda={self.lam:g} ({self.material})"
 
 
-def _number(text: str) -> float:
-    return float(text) if text.strip() else float("nan")
-
-
 def _state(mean: float, sd: float) -> Summary:
     """Table 3's "mean ± SD of three trials" as a Summary (SE and CI follow from n = 3)."""
-    from scipy import stats
-
     se = sd / np.sqrt(3.0)
     half = float(stats.t.ppf(0.975, 2)) * se
     return Summary(3, mean, sd, se, (mean - half, mean + half), 0.95)
@@ -122,19 +114,17 @@ def table3() -> list:
     list of Table3Row
     """
     rows = []
-    with open(data.path("thesis_table3_bending_stiffness.csv"), newline="") as handle:
-        for raw in csv.DictReader(handle):
-            value = {key: _number(text) for key, text in raw.items() if key != "material"}
-            extended = _state(value["K1_exp_mean_Nm_per_rad"], value["K1_exp_sd"])
-            contracted = _state(value["K0_exp_mean_Nm_per_rad"], value["K0_exp_sd"])
-            h = TABLE3_HALF_UNIT
-            rounding = ((extended.mean - h) / (contracted.mean + h),
-                        (extended.mean + h) / (contracted.mean - h))
-            model = {"extended": value["K1_model_Nm_per_rad"],
-                     "contracted": value["K0_model_Nm_per_rad"], "ratio": value["ratio_model"]}
-            rows.append(Table3Row(int(value["n"]), value["Lc_mm"], value["lambda"],
-                                  raw["material"], extended, contracted, value["ratio_exp"],
-                                  ratio_of_means(extended, contracted), rounding, model))
+    for value in thesis_table3():
+        extended = _state(value["K1_exp_mean"], value["K1_exp_sd"])
+        contracted = _state(value["K0_exp_mean"], value["K0_exp_sd"])
+        h = TABLE3_HALF_UNIT
+        rounding = ((extended.mean - h) / (contracted.mean + h),
+                    (extended.mean + h) / (contracted.mean - h))
+        model = {"extended": value["K1_model"], "contracted": value["K0_model"],
+                 "ratio": value["ratio_model"]}
+        rows.append(Table3Row(value["n"], value["Lc"], value["lam"], value["material"],
+                              extended, contracted, value["ratio_exp"],
+                              ratio_of_means(extended, contracted), rounding, model))
     return rows
 
 
@@ -171,23 +161,3 @@ def experiment_vs_model(model_curves=None) -> list:
             "K0_model_curve": K0, "ratio_model_curve": K1 / K0,
         })
     return lines
-
-
-def merlin2_model_curves() -> dict:
-    """Moment-angle curves of the MERLIN2 reference runs shipped with the package.
-
-    Returns
-    -------
-    dict
-        ``(n, Lc, lam)`` to ``{"extended": (angle, moment), "contracted": (...)}``, arrays
-        of shape (350,) in rad and N*m: the model curve of the four paper designs of
-        Table 3 until the package's own bending analysis supplies one.
-    """
-    curves = {}
-    for (n, Lc, lam) in ((8, 30, 0.8), (8, 15, 0.8), (4, 30, 0.7), (10, 15, 0.9)):
-        for state in ("extended", "contracted"):
-            name = f"merlin2/fd_n{n}_Lc{Lc}_lam{lam}_{state}.csv"
-            table = np.genfromtxt(data.path(name), delimiter=",", names=True)
-            curves.setdefault((n, float(Lc), lam), {})[state] = (table["angle_rad"],
-                                                                 table["moment_Nm"])
-    return curves
