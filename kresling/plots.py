@@ -1,7 +1,9 @@
-"""Figures of a single cell: its two stable states in 3D and the truss kinematic path.
+"""Figures of a single cell (its two stable states in 3D and the truss kinematic path) and
+the plotting helpers the packages above share (the moment-angle axes of the thesis's
+figures 3.5-3.7, drawn by both the bending analyses and the experimental fits).
 
 Functions draw into a given Matplotlib axes (or a new figure) and return the axes; they
-never call ``plt.show``. Matplotlib is imported lazily so that ``import kresling`` stays fast.
+never call ``plt.show``.
 """
 
 from __future__ import annotations
@@ -10,7 +12,7 @@ import numpy as np
 
 from kresling.geometry import Design, state_index
 
-__all__ = ["plot_cell", "plot_kinematic_path"]
+__all__ = ["plot_cell", "plot_kinematic_path", "label_moment_angle_axes"]
 
 
 def plot_cell(design: Design, state, ax=None, *, color="tab:blue", alpha=0.35):
@@ -92,4 +94,17 @@ def plot_kinematic_path(design: Design, ax=None, samples: int = 200):
     ax.right_ax = right
     ax.legend(loc="center left", fontsize=8)
     ax.set_title("truss kinematics between the stable states (eqns 8-9)")
+    return ax
+
+
+def label_moment_angle_axes(ax, title: str = ""):
+    """Axis labels, limits from the origin, legend and title of a moment-angle plot (the
+    style of the thesis's figures 3.5-3.7); returns ``ax``."""
+    ax.set_xlabel("deflection angle δ [rad]")
+    ax.set_ylabel("moment M [N·m]")
+    ax.set_xlim(left=0.0)
+    ax.set_ylim(bottom=0.0)
+    ax.legend(fontsize=7, loc="upper left")
+    if title:
+        ax.set_title(title, fontsize=9)
     return ax

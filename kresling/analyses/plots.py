@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from kresling.fits.plots import label_moment_angle_axes
+from kresling.plots import label_moment_angle_axes
 
 __all__ = ["plot_moment_angle", "plot_table3_design", "plot_stiffness_by_n", "plot_snap_through",
            "plot_orientation_study"]

@@ -13,6 +13,8 @@ import numpy as np
 
 from kresling.fits.bending import STATES, BendingStiffness, mean_curve, state_name
 from kresling.fits.crease import CreaseStiffness
+# Shared with the bending analyses' figures; still importable from here.
+from kresling.plots import label_moment_angle_axes
 
 __all__ = ["plot_bending_test", "plot_crease_runs", "label_moment_angle_axes"]
 
@@ -77,19 +79,6 @@ def plot_bending_test(result: BendingStiffness, model=None, ax=None, *, title: s
             ax.plot(model_angle, model_moment, color=color, ls="--", lw=1.2,
                     label=f"{_LABELS[state]}: model")
     return label_moment_angle_axes(ax, title)
-
-
-def label_moment_angle_axes(ax, title: str = ""):
-    """Axis labels, limits from the origin, legend and title of a moment-angle plot (the
-    style of the thesis's figures 3.5-3.7); returns ``ax``."""
-    ax.set_xlabel("deflection angle δ [rad]")
-    ax.set_ylabel("moment M [N·m]")
-    ax.set_xlim(left=0.0)
-    ax.set_ylim(bottom=0.0)
-    ax.legend(fontsize=7, loc="upper left")
-    if title:
-        ax.set_title(title, fontsize=9)
-    return ax
 
 
 def plot_crease_runs(result: CreaseStiffness, ax=None, *, title: str = ""):
