@@ -4,7 +4,10 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "kresling/model/calibration.hpp"
 #include "kresling/model/model.hpp"
+#include "kresling/model/panel_centre.hpp"
+#include "kresling/model/panel_elements.hpp"
 #include "kresling/model/topology.hpp"
 
 namespace py = pybind11;
@@ -70,6 +73,23 @@ model::Model make_model(const Eigen::Ref<const NodeMatrix>& nodes, IndexArray ba
   }
   std::vector<std::uint8_t> mask(fixed.data(), fixed.data() + fixed.size());
   return model::Model(NodeMatrix(nodes), std::move(bars), std::move(hinges), std::move(mask));
+}
+
+
+// Rows of fixed-size index arrays as an (n, width) int64 array.
+template <std::size_t Width>
+py::array_t<Index> index_rows(const std::vector<std::array<Index, Width>>& v) {
+  py::array_t<Index> a({static_cast<py::ssize_t>(v.size()), static_cast<py::ssize_t>(Width)});
+  auto w = a.template mutable_unchecked<2>();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    for (std::size_t k = 0; k < Width; ++k) w(i, k) = v[i][k];
+  }
+  return a;
+}
+
+template <typename T>
+py::array_t<T> vector_array(const std::vector<T>& v) {
+  return py::array_t<T>(static_cast<py::ssize_t>(v.size()), v.data());
 }
 
 }  // namespace
@@ -147,6 +167,52 @@ void bind_model(py::module_& m) {
         return out;
       },
       py::arg("nodes"), py::arg("panels"), py::arg("split"), py::arg("duplicate_shared_edges"));
+  py::class_<model::PanelElements>(m, "PanelElements",
+                                   "Bars and hinges of panels by MERLIN2's rules (read-only).")
+      .def_property_readonly("nodes", [](const model::PanelElements& e) { return e.nodes; })
+      .def_property_readonly("panel_centre",
+                             [](const model::PanelElements& e) { return vector_array(e.panel_centre); })
+      .def_property_readonly("triangles",
+                             [](const model::PanelElements& e) { return index_rows(e.triangles); })
+      .def_property_readonly("bends", [](const model::PanelElements& e) { return index_rows(e.bends); })
+      .def_property_readonly("bend_panel",
+                             [](const model::PanelElements& e) { return vector_array(e.bend_panel); })
+      .def_property_readonly("folds", [](const model::PanelElements& e) { return index_rows(e.folds); })
+      .def_property_readonly("boundary",
+                             [](const model::PanelElements& e) { return index_rows(e.boundary); })
+      .def_property_readonly("bars", [](const model::PanelElements& e) { return index_rows(e.bars()); });
+
+  m.def(
+      "build_panel_elements",
+      [](const Eigen::Ref<const NodeMatrix>& vertices, const std::vector<std::vector<Index>>& panels,
+         int split) {
+        if (split != 0 && split != 1) throw std::invalid_argument("split: unknown code");
+        return model::build_panel_elements(NodeMatrix(vertices), panels,
+                                           static_cast<model::PanelSplit>(split));
+      },
+      py::arg("vertices"), py::arg("panels"), py::arg("split"));
+
+  py::class_<model::SheetMaterial>(m, "SheetMaterial")
+      .def(py::init<>())
+      .def_readwrite("youngs_modulus", &model::SheetMaterial::youngs_modulus)
+      .def_readwrite("poisson_ratio", &model::SheetMaterial::poisson_ratio)
+      .def_readwrite("thickness", &model::SheetMaterial::thickness)
+      .def_readwrite("length_scale", &model::SheetMaterial::length_scale);
+
+  py::class_<model::SheetStiffness>(m, "SheetStiffness")
+      .def_property_readonly("bar_area",
+                             [](const model::SheetStiffness& s) { return vector_array(s.bar_area); })
+      .def_property_readonly("fold_stiffness",
+                             [](const model::SheetStiffness& s) { return vector_array(s.fold_stiffness); })
+      .def_property_readonly("bend_stiffness",
+                             [](const model::SheetStiffness& s) { return vector_array(s.bend_stiffness); })
+      .def_readonly("length_scale", &model::SheetStiffness::length_scale);
+
+  m.def("calibrate_sheet", &model::calibrate_sheet, py::arg("elements"), py::arg("panels"),
+        py::arg("material"), py::arg("merlin2_compat"));
+  m.def("quad_centre", &model::quad_centre);
+  m.def("polygon_optimal_centre", &model::polygon_optimal_centre);
+  m.def("polygon_centre_objective", &model::polygon_centre_objective);
 }
 
 }  // namespace kresling::python

@@ -3,6 +3,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <memory>
+
 #include "bindings.hpp"
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/solvers/displacement_control.hpp"
@@ -57,6 +59,24 @@ py::dict path_to_dict(const PathResult& r, Index num_dofs) {
   return out;
 }
 
+// A Python callable `stop(load_factor, displacement) -> bool` as a solver's stopping rule.
+// The solvers run without the GIL: the call takes it back, and so does the release of the
+// callable when the last copy of the rule goes.
+StopRule stop_rule(const py::object& callable) {
+  if (callable.is_none()) return {};
+  if (!PyCallable_Check(callable.ptr())) {
+    throw std::invalid_argument("stop: must be None or a callable");
+  }
+  std::shared_ptr<py::object> f(new py::object(callable), [](py::object* o) {
+    py::gil_scoped_acquire gil;
+    delete o;
+  });
+  return [f](const PathStep& s) {
+    py::gil_scoped_acquire gil;
+    return py::cast<bool>((*f)(s.load_factor, s.displacement));
+  };
+}
+
 NewtonOptions newton(double tolerance, int max_iterations) {
   if (!(tolerance > 0)) throw std::invalid_argument("tolerance must be > 0");
   if (max_iterations < 1) throw std::invalid_argument("max_iterations must be >= 1");
@@ -90,6 +110,9 @@ void bind_solvers(py::module_& m) {
         out["bar_force"] = s.bar_force;
         out["hinge_angle"] = s.hinge_angle;
         out["hinge_moment"] = s.hinge_moment;
+        out["bar_stress"] = s.bar_stress;
+        out["bar_energy"] = s.bar_energy;
+        out["hinge_energy"] = s.hinge_energy;
         return out;
       },
       py::arg("model"), py::arg("u"));
@@ -105,7 +128,10 @@ void bind_solvers(py::module_& m) {
       .def_readwrite("reject_iterations", &DisplacementControlOptions::reject_iterations)
       .def_readwrite("max_bisections", &DisplacementControlOptions::max_bisections)
       .def_readwrite("shift", &DisplacementControlOptions::shift)
-      .def_readwrite("extrapolation", &DisplacementControlOptions::extrapolation);
+      .def_readwrite("extrapolation", &DisplacementControlOptions::extrapolation)
+      .def_property(
+          "stop", [](const DisplacementControlOptions& o) { return static_cast<bool>(o.stop); },
+          [](DisplacementControlOptions& o, const py::object& f) { o.stop = stop_rule(f); });
 
   m.def(
       "displacement_control",
@@ -124,8 +150,10 @@ void bind_solvers(py::module_& m) {
   m.def(
       "force_control",
       [](const Model& model, const VectorX& forces, int steps, double tolerance,
-         int max_iterations, int max_bisections, double shift, const VectorX& initial) {
+         int max_iterations, int max_bisections, double shift, const VectorX& initial,
+         const py::object& stop) {
         ForceControlOptions o;
+        o.stop = stop_rule(stop);
         o.newton = newton(tolerance, max_iterations);
         o.max_bisections = max_bisections;
         o.shift = shift;
@@ -137,15 +165,17 @@ void bind_solvers(py::module_& m) {
         return path_to_dict(r, model.num_dofs());
       },
       py::arg("model"), py::arg("forces"), py::arg("steps"), py::arg("tolerance"),
-      py::arg("max_iterations"), py::arg("max_bisections"), py::arg("shift"), py::arg("initial"));
+      py::arg("max_iterations"), py::arg("max_bisections"), py::arg("shift"), py::arg("initial"),
+      py::arg("stop") = py::none());
 
   m.def(
       "mgdcm",
       [](const Model& model, const VectorX& forces, double initial_load_factor, int max_increments,
          double max_load_factor, Index monitor_dof, double max_displacement,
          double max_step_factor, double tolerance, int max_iterations, double shift,
-         const VectorX& initial) {
+         const VectorX& initial, const py::object& stop) {
         MgdcmOptions o;
+        o.stop = stop_rule(stop);
         o.newton = newton(tolerance, max_iterations);
         o.initial_load_factor = initial_load_factor;
         o.max_increments = max_increments;
@@ -164,7 +194,8 @@ void bind_solvers(py::module_& m) {
       py::arg("model"), py::arg("forces"), py::arg("initial_load_factor"),
       py::arg("max_increments"), py::arg("max_load_factor"), py::arg("monitor_dof"),
       py::arg("max_displacement"), py::arg("max_step_factor"), py::arg("tolerance"),
-      py::arg("max_iterations"), py::arg("shift"), py::arg("initial"));
+      py::arg("max_iterations"), py::arg("shift"), py::arg("initial"),
+      py::arg("stop") = py::none());
 
   m.def(
       "condensed_stiffness",

@@ -203,6 +203,8 @@ ElementState element_state(const model::Model& model, const VectorX& u) {
   const auto& bars = model.bars();
   s.bar_strain.resize(static_cast<Index>(bars.size()));
   s.bar_force.resize(static_cast<Index>(bars.size()));
+  s.bar_stress.resize(static_cast<Index>(bars.size()));
+  s.bar_energy.resize(static_cast<Index>(bars.size()));
   for (std::size_t e = 0; e < bars.size(); ++e) {
     const Vector3 x1 = x.row(bars[e].nodes[0]), x2 = x.row(bars[e].nodes[1]);
     const double L = bars[e].rest_length;
@@ -210,17 +212,23 @@ ElementState element_state(const model::Model& model, const VectorX& u) {
     const double stretch = (x2 - x1).norm() / L;
     s.bar_strain[e] = strain;
     // Axial (Cauchy-like) force: S is per reference area along the deformed direction.
-    s.bar_force[e] = bars[e].area * bars[e].law.evaluate(strain, stretch).stress * stretch;
+    const elements::StressResponse r = bars[e].law.evaluate(strain, stretch);
+    s.bar_force[e] = bars[e].area * r.stress * stretch;
+    s.bar_stress[e] = r.stress;
+    s.bar_energy[e] = bars[e].area * L * r.energy_density;
   }
   const auto& hinges = model.hinges();
   s.hinge_angle.resize(static_cast<Index>(hinges.size()));
   s.hinge_moment.resize(static_cast<Index>(hinges.size()));
+  s.hinge_energy.resize(static_cast<Index>(hinges.size()));
   for (std::size_t e = 0; e < hinges.size(); ++e) {
     const auto& h = hinges[e];
     const double theta = elements::dihedral_angle(x.row(h.nodes[0]), x.row(h.nodes[1]),
                                                   x.row(h.nodes[2]), x.row(h.nodes[3]));
     s.hinge_angle[e] = theta;
-    s.hinge_moment[e] = h.length * h.law.evaluate(theta, h.rest_angle, h.stiffness).moment;
+    const elements::SpringResponse r = h.law.evaluate(theta, h.rest_angle, h.stiffness);
+    s.hinge_moment[e] = h.length * r.moment;
+    s.hinge_energy[e] = h.length * r.energy;
   }
   return s;
 }

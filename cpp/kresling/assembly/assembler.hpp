@@ -89,8 +89,11 @@ class Assembler {
 struct ElementState {
   VectorX bar_strain;     ///< Green-Lagrange strain per bar
   VectorX bar_force;      ///< axial force per bar, A S(E) l / L (tension positive)
+  VectorX bar_stress;     ///< second Piola-Kirchhoff stress S(E) per bar
+  VectorX bar_energy;     ///< stored energy per bar, A L W(E)
   VectorX hinge_angle;    ///< dihedral angle per hinge [rad]
   VectorX hinge_moment;   ///< L0 M(theta) per hinge
+  VectorX hinge_energy;   ///< stored energy per hinge
 };
 ElementState element_state(const model::Model& model, const VectorX& u);
 

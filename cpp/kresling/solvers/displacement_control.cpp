@@ -99,7 +99,7 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
     return o.converged && o.iterations < options_.reject_iterations;
   };
   march(steps, options_.max_bisections, result,
-        [&](double t, double t_new, std::string& failure) {
+        [&](double, double t_new, std::string& failure) {
           VectorX trial = u;
           NewtonOutcome outcome;
           if (options_.extrapolation > 0) {
@@ -137,6 +137,7 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
           }
           return true;
         },
+        [&] { return options_.stop && options_.stop(result.steps.back()); },
         [&](int k, double t, const std::string& reason) {
           return "increment " + std::to_string(k) + " (of " + std::to_string(steps) + ", at " +
                  format_number(t) + " of the prescribed motion) failed after " +

@@ -32,6 +32,7 @@ struct DisplacementControlOptions {
   /// equilibria exist (past a bifurcation), an increment whose extrapolated start converges
   /// to a less stable one than the last is retried from the last equilibrium.
   int extrapolation = 0;
+  StopRule stop;  ///< ends the path early (completed) when it returns true
 };
 
 /// A reusable displacement-control solver. Solving models of identical connectivity under

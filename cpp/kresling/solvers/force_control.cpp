@@ -63,6 +63,7 @@ PathResult solve_force_control(const model::Model& model, const VectorX& forces,
           result.steps.push_back(record_step(assembler, u, l_new, outcome, result.constraint_dofs, 1.0));
           return true;
         },
+        [&] { return options.stop && options.stop(result.steps.back()); },
         [&](int k, double lambda, const std::string& reason) {
           return "no equilibrium found beyond load factor " + format_number(lambda) +
                  " (load step " + std::to_string(k) + " of " + std::to_string(steps) + ", " +
@@ -166,7 +167,8 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
       const bool load_reached = std::abs(lambda) > options.max_load_factor;
       const bool motion_reached = options.monitor_dof >= 0 &&
                                   std::abs(u[options.monitor_dof]) > options.max_displacement;
-      if (load_reached || motion_reached) {
+      const bool rule_reached = options.stop && options.stop(result.steps.back());
+      if (load_reached || motion_reached || rule_reached) {
         result.completed = true;
         return result;
       }
@@ -181,7 +183,8 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
       return result;
     }
   }
-  const bool has_criterion = std::isfinite(options.max_load_factor) || options.monitor_dof >= 0;
+  const bool has_criterion = std::isfinite(options.max_load_factor) || options.monitor_dof >= 0 ||
+                             static_cast<bool>(options.stop);
   result.completed = !has_criterion;
   if (has_criterion) {
     result.message = "the step budget (" + std::to_string(options.max_increments) +

@@ -15,6 +15,7 @@ struct ForceControlOptions {
   NewtonOptions newton;
   int max_bisections = 10;  ///< a failed load step is halved up to this many times
   double shift = 1e-8;
+  StopRule stop;            ///< ends the path (completed) when it returns true
 };
 
 /// Newton equilibrium under loads lambda * forces, lambda = 1/steps, 2/steps, ..., 1.
@@ -38,6 +39,7 @@ struct MgdcmOptions {
   /// Cap on the step factor's growth (|b_lambda| <= this), for a finely resolved path.
   double max_step_factor = std::numeric_limits<double>::infinity();
   double shift = 1e-8;
+  StopRule stop;  ///< a further stopping criterion (completed when it returns true)
 };
 
 /// MGDCM path following under the reference load `forces`: two solves per iteration with

@@ -12,10 +12,11 @@ namespace kresling::solvers {
 
 /// `attempt(t_from, t_to, failure)` tries to reach `t_to` from the accepted state at
 /// `t_from`; it records the step and returns true, or sets `failure` and returns false.
+/// `stop()` is asked after every accepted attempt: true ends the march there (completed).
 /// `describe(k, t, reason)` words the message when increment k fails at parameter t for
 /// good (reason: why its full-size attempt failed). Returns result.completed.
-template <typename Attempt, typename Describe>
-bool march(int steps, int max_bisections, PathResult& result, Attempt&& attempt,
+template <typename Attempt, typename Stop, typename Describe>
+bool march(int steps, int max_bisections, PathResult& result, Attempt&& attempt, Stop&& stop,
            Describe&& describe) {
   const double nominal = 1.0 / steps;
   const double smallest = nominal / double(1 << max_bisections);
@@ -31,6 +32,10 @@ bool march(int steps, int max_bisections, PathResult& result, Attempt&& attempt,
       if (attempt(t, t_new, failure)) {
         t = t_new;
         dt = target - t;  // back to the rest of the nominal increment
+        if (stop()) {
+          result.completed = true;
+          return true;
+        }
         continue;
       }
       if (first_failure.empty()) first_failure = failure;

@@ -4,6 +4,7 @@
 /// ended. Numerical outcomes (a Newton failure, an exhausted step budget, a singular
 /// tangent) end the path with a reason; they are never thrown.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,10 @@ struct PathStep {
   /// 0 = stable equilibrium; -1 = unknown (the tangent needed an LU factorisation).
   int negative_eigenvalues = -1;
 };
+
+/// A caller's stopping rule, asked after every accepted step: true ends the path there
+/// (completed). An empty rule never stops.
+using StopRule = std::function<bool(const PathStep&)>;
 
 struct PathResult {
   std::vector<PathStep> steps;

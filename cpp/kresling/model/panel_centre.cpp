@@ -1,0 +1,142 @@
+#include "kresling/model/panel_centre.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include <Eigen/Dense>
+
+namespace kresling::model {
+
+namespace {
+
+// Non-adjacent corner pairs (i < j), the diagonals the centre objective runs over.
+std::vector<std::pair<std::size_t, std::size_t>> diagonals(std::size_t m) {
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t j = 0; j < m; ++j) {
+    for (std::size_t i = 0; i + 2 <= j; ++i) {
+      if (i == 0 && j == m - 1) continue;
+      pairs.emplace_back(i, j);
+    }
+  }
+  return pairs;
+}
+
+// The point on line a + s (b - a) closest to line c + t (d - c), or false if parallel.
+bool closest_on_line(const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d,
+                     Vector3& out) {
+  const Vector3 m = b - a, n = d - c, w = c - a;
+  // Least squares on [m, -n] (s, t) = w, through its 2 x 2 normal equations.
+  const double mm = m.dot(m), nn = n.dot(n), mn = m.dot(n);
+  const double det = mm * nn - mn * mn;
+  if (!(det > 1e-14 * mm * nn)) return false;
+  const double s = (w.dot(m) * nn - w.dot(n) * mn) / det;
+  out = a + s * m;
+  return true;
+}
+
+}  // namespace
+
+Vector3 quad_centre(const Vector3& p0, const Vector3& p1, const Vector3& p2, const Vector3& p3) {
+  const double l1 = (p2 - p0).norm(), l2 = (p3 - p1).norm();
+  if (!(l1 > 0.0 && l2 > 0.0)) {
+    throw std::invalid_argument("quad has a diagonal of zero length");
+  }
+  const Vector3 m = (p2 - p0) / l1, n = (p3 - p1) / l2;
+  // Solve [m, -n] (c1, c2) = p1 - p0 in the least-squares sense.
+  Eigen::Matrix<double, 3, 2> A;
+  A.col(0) = m;
+  A.col(1) = -n;
+  const Eigen::Matrix2d normal = A.transpose() * A;
+  if (!(std::abs(normal.determinant()) > 1e-14)) {
+    throw std::invalid_argument("quad has parallel diagonals");
+  }
+  const Eigen::Vector2d c = normal.ldlt().solve(A.transpose() * (p1 - p0));
+  // On the shorter diagonal: the quad then bends along it if it is warped.
+  return l1 < l2 ? Vector3(p0 + c[0] * m) : Vector3(p1 + c[1] * n);
+}
+
+double polygon_centre_objective(const std::vector<Vector3>& corners, const Vector3& x) {
+  double sum = 0.0;
+  for (const auto& [i, j] : diagonals(corners.size())) {
+    const Vector3 d = corners[j] - corners[i];
+    sum += (corners[j] - x).cross(corners[i] - x).norm() / d.squaredNorm();
+  }
+  return sum;
+}
+
+Vector3 polygon_optimal_centre(const std::vector<Vector3>& corners) {
+  const std::size_t m = corners.size();
+  if (m < 4) throw std::invalid_argument("polygon centre: needs at least 4 corners");
+  const auto pairs = diagonals(m);
+  // Starting points MERLIN2 uses: the shortest diagonal's midpoint and the corner mean.
+  std::size_t shortest = 0;
+  for (std::size_t k = 1; k < pairs.size(); ++k) {
+    const auto& [i, j] = pairs[k];
+    const auto& [a, b] = pairs[shortest];
+    if ((corners[j] - corners[i]).squaredNorm() < (corners[b] - corners[a]).squaredNorm()) {
+      shortest = k;
+    }
+  }
+  Vector3 mean = Vector3::Zero();
+  for (const auto& p : corners) mean += p;
+  mean /= static_cast<double>(m);
+  std::vector<Vector3> candidates = {
+      0.5 * (corners[pairs[shortest].first] + corners[pairs[shortest].second]), mean};
+  // Every crossing of two diagonal lines (exact minimiser for a planar polygon).
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    for (std::size_t q = p + 1; q < pairs.size(); ++q) {
+      Vector3 x;
+      if (closest_on_line(corners[pairs[p].first], corners[pairs[p].second],
+                          corners[pairs[q].first], corners[pairs[q].second], x)) {
+        candidates.push_back(x);
+      }
+    }
+  }
+  Vector3 best = candidates[0];
+  double best_value = polygon_centre_objective(corners, best);
+  for (const Vector3& x : candidates) {
+    const double value = polygon_centre_objective(corners, x);
+    if (value < best_value) best = x, best_value = value;
+  }
+
+  // A warped polygon: refine by iteratively reweighted least squares. Each term is
+  // |c + (p_i - p_j) x X| / |p_j - p_i|^2, the norm of an affine function of X.
+  double size = 0.0;
+  for (const auto& p : corners) size = std::max(size, (p - mean).norm());
+  Vector3 x = best;
+  for (int iteration = 0; iteration < 500; ++iteration) {
+    Matrix3 H = Matrix3::Zero();
+    Vector3 g = Vector3::Zero();
+    bool at_kink = false;
+    for (const auto& [i, j] : pairs) {
+      const Vector3 d = corners[i] - corners[j];
+      const Vector3 c = corners[j].cross(corners[i]);
+      const double r = (c + d.cross(x)).norm();
+      if (r < 1e-14 * size * size) {
+        at_kink = true;  // the minimiser sits on a diagonal line: keep the crossing
+        break;
+      }
+      const double w = 1.0 / (r * d.squaredNorm());
+      Matrix3 B;  // B y = d x y
+      B << 0, -d.z(), d.y(), d.z(), 0, -d.x(), -d.y(), d.x(), 0;
+      H += w * B.transpose() * B;
+      g += w * B.transpose() * c;
+    }
+    if (at_kink) break;
+    const Vector3 next = H.ldlt().solve(-g);
+    if (!next.allFinite()) break;
+    const double step = (next - x).norm();
+    if (polygon_centre_objective(corners, next) <= polygon_centre_objective(corners, x)) {
+      x = next;
+    } else {
+      break;
+    }
+    if (step <= 1e-15 * size) break;
+  }
+  return polygon_centre_objective(corners, x) < best_value ? x : best;
+}
+
+}  // namespace kresling::model
