@@ -14,7 +14,7 @@ import numpy as np
 from kresling.manipulator import (Manipulator, TendonDrive, configuration_name, forward_kinematics,
                                   joint_length_table, pseudo_linkage, solve_configuration,
                                   synthetic_markers, write_markers)
-from kresling.manipulator.reproduce import reproduce
+from kresling.report.sections.manipulator import reproduce
 
 
 def appendix_e(arm: Manipulator, drive: TendonDrive) -> None:

@@ -2,7 +2,7 @@
 and beyond it (continuous optimisation under constraints, sensitivity at the optimum).
 
 --quick (default) runs the 20 x 20 x 4 study that ``make demo`` shows through the report
-(``kresling.sweeps.reproduce``); --full the thesis's 100 x 100 x 4 (resumable: run it again
+(``kresling.report.sections.sweeps``); --full the thesis's 100 x 100 x 4 (resumable: run it again
 with the same --out after an interruption). Prints the checks, the maxima per n and the
 optimum; writes the figures and the sweep's results.csv under --out.
 
@@ -17,7 +17,7 @@ import matplotlib
 
 from kresling.sweeps import conclusions
 from kresling.sweeps.optimize import optimize_design
-from kresling.sweeps.reproduce import reproduce
+from kresling.report.sections.sweeps import reproduce
 from kresling.sweeps.table import SweepTable
 
 matplotlib.use("Agg")

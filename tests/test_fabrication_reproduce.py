@@ -4,7 +4,7 @@ import math
 
 import pytest
 
-from kresling.fabrication.reproduce import reproduce
+from kresling.report.sections.fabrication import reproduce
 from kresling.report import Section
 
 

@@ -4,7 +4,7 @@ import math
 
 import pytest
 
-from kresling.fits.reproduce import FIGURE_OF_ROW, reproduce
+from kresling.report.sections.experiments import FIGURE_OF_ROW, reproduce
 from kresling.fits.thesis_tables import (experiment_vs_model, largest_sd_under_rounding, table1,
                                          table3)
 

@@ -11,7 +11,8 @@ import kresling.manipulator as km
 from kresling import Design
 from kresling.manipulator import (Manipulator, arc_from_tendons, forward_kinematics,
                                   protocol_tendon_lengths, pseudo_linkage, tendons_from_arc)
-from kresling.manipulator.reproduce import appendix_e_markers, protocol_deviations
+from kresling.manipulator.protocol import protocol_deviations
+from kresling.report.sections.manipulator import appendix_e_markers
 
 L = 2 * 55.8194667799374  # eqn 30's L: a module is two cells of height Le
 

@@ -1,6 +1,6 @@
 """The manipulator's report section: every check passes and the figures are written."""
 
-from kresling.manipulator.reproduce import reproduce
+from kresling.report.sections.manipulator import reproduce
 
 
 def test_reproduce_quick(tmp_path):

@@ -6,7 +6,7 @@ import csv
 import pytest
 
 from kresling.geometry import Design
-from kresling.report.geometry_section import DESIGNS, bar_length_errors, reproduce
+from kresling.report.sections.geometry import DESIGNS, bar_length_errors, reproduce
 
 
 @pytest.fixture(scope="module")

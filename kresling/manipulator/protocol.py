@@ -9,15 +9,17 @@ bending in the plane of tendon 1 by ``2 asin(k / d)``.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from kresling import _core
-from kresling.manipulator.forward import MarkerViews
+from kresling.manipulator.forward import MarkerViews, forward_kinematics
 from kresling.manipulator.model import Manipulator
 
-__all__ = ["protocol_tendon_lengths", "ProtocolRun", "pseudo_linkage", "THESIS_STEPS"]
+__all__ = ["protocol_tendon_lengths", "ProtocolRun", "pseudo_linkage", "protocol_deviations",
+           "THESIS_STEPS"]
 
 #: The thesis's displacement steps (0 is the rest state, photographed too).
 THESIS_STEPS = tuple(range(0, 11))
@@ -101,3 +103,22 @@ def pseudo_linkage(model: Manipulator, configuration, steps=THESIS_STEPS) -> Pro
     lengths = np.atleast_2d(protocol_tendon_lengths(steps, model.rest_tendon_length))
     markers = _core.kinematics.markers_of_identical_modules(model._chain, configuration, lengths)
     return ProtocolRun(configuration, steps, lengths, markers)
+
+
+def protocol_deviations(model: Manipulator, steps=range(1, 11)) -> tuple[float, float]:
+    """Largest deviation of a flexible module's chord from the rest tendon length [mm] and of
+    its bend from ``2 asin(k / d)`` [rad], over every configuration and step."""
+    chord_error = bend_error = 0.0
+    for configuration in model.configurations:
+        if 0 not in configuration:
+            continue
+        for k in steps:
+            state = forward_kinematics(model, configuration,
+                                       protocol_tendon_lengths(k, model.rest_tendon_length))
+            for j in (j for j, s in enumerate(configuration) if s == 0):
+                chord = np.linalg.norm(state.markers[j + 1] - state.markers[j])
+                a, b = state.frames[j][:3, 2], state.frames[j + 1][:3, 2]
+                bend = math.atan2(np.linalg.norm(np.cross(a, b)), float(a @ b))
+                chord_error = max(chord_error, abs(chord - model.rest_tendon_length))
+                bend_error = max(bend_error, abs(bend - 2 * math.asin(k / model.tendon_radius)))
+    return chord_error, bend_error

@@ -1,8 +1,10 @@
-"""The reproduction report (``kresling reproduce``).
+"""The reproduction report (``kresling reproduce``): the top layer of the package, under the
+command line only (docs/architecture.md).
 
-Each part of the package contributes a :class:`Section` of checks against the thesis, with
-figures and tables; :func:`build_report` runs the chapters listed in :data:`CHAPTERS` (in
-thesis order) and writes ``report.html`` and ``report.json``.
+Each chapter of the thesis has a section in :mod:`kresling.report.sections` that runs the
+library and returns a :class:`Section` of checks against the thesis, with figures and tables;
+:func:`build_report` runs the chapters listed in :data:`CHAPTERS` (in thesis order) and
+writes ``report.html`` and ``report.json``. No library package imports this one.
 """
 
 from kresling.report.build import Report, build_report

@@ -1,10 +1,10 @@
-"""The chapters of the reproduction report, in thesis order, and where each one's code lives.
+"""The chapters of the reproduction report, in thesis order, and the function of each.
 
-A chapter names a module that provides ``reproduce(out_dir, quick=True) -> Section``, either
-defined in the module itself or in its submodule ``reproduce`` (``kresling.fits`` ->
-``kresling.fits.reproduce.reproduce``). Adding a part of the thesis to the report is one
-line in :data:`CHAPTERS`. A chapter whose module does not exist yet is reported as *not yet
-available*, never dropped.
+Every chapter's section is a module of :mod:`kresling.report.sections`, imported here
+plainly: adding a part of the thesis to the report is a section module and one line in
+:data:`CHAPTERS`. A :class:`Chapter` may also name a module outside the package by its dotted
+name (a study's own section, the tests' fakes); that one is imported only when the chapter
+runs, and is reported as *not yet available* while it does not exist, never dropped.
 """
 
 from __future__ import annotations
@@ -12,7 +12,10 @@ from __future__ import annotations
 import importlib
 import inspect
 from dataclasses import dataclass
-from typing import Callable
+from typing import Callable, Union
+
+from kresling.report.sections import (analyses, experiments, fabrication, geometry, manipulator,
+                                      sweeps)
 
 __all__ = ["Chapter", "CHAPTERS", "SectionNotAvailable", "select_chapters"]
 
@@ -30,38 +33,42 @@ class Chapter:
         Where it is in the thesis, e.g. ``"Chapter 2"``.
     title : str
         Title shown when the section cannot run (otherwise the section's own title is used).
-    module : str
-        Dotted name of the module that provides the section.
+    section : callable or str
+        The section's function, ``section(out_dir, quick=True) -> Section``; or the dotted
+        name of a module that provides it, imported when the chapter runs.
     function : str, default "reproduce"
-        Name of the function in ``module`` (or in ``module.<function>``).
+        For a module named by ``section``: the name of the function in it (or in its
+        submodule of that name).
     """
 
     key: str
     part: str
     title: str
-    module: str
+    section: Union[Callable, str]
     function: str = "reproduce"
 
     def load(self) -> Callable:
-        """Import and return the section's function.
+        """The section's function (imported first when ``section`` names a module).
 
         Raises
         ------
         SectionNotAvailable
-            If ``module`` (or its ``reproduce`` submodule) does not exist.
+            If the named module (or its ``function`` submodule) does not exist.
         ImportError, AttributeError
             If the module exists but fails to import or lacks the function: a bug, not a
             missing section.
         """
-        package = _import_if_present(self.module)
+        if callable(self.section):
+            return self.section
+        package = _import_if_present(self.section)
         if package is None:
-            raise SectionNotAvailable(f"module {self.module} does not exist yet")
+            raise SectionNotAvailable(f"module {self.section} does not exist yet")
         found = getattr(package, self.function, None)
         if callable(found) and not inspect.ismodule(found):
             return found
-        submodule = _import_if_present(f"{self.module}.{self.function}")
+        submodule = _import_if_present(f"{self.section}.{self.function}")
         if submodule is None:
-            raise SectionNotAvailable(f"{self.module} has no {self.function}() yet")
+            raise SectionNotAvailable(f"{self.section} has no {self.function}() yet")
         return getattr(submodule, self.function)
 
 
@@ -71,18 +78,17 @@ class SectionNotAvailable(LookupError):
 
 #: The report's chapters, in thesis order.
 CHAPTERS = (
-    Chapter("geometry", "Chapter 2.1", "Generalized Kresling geometry",
-            "kresling.report.geometry_section"),
+    Chapter("geometry", "Chapter 2.1", "Generalized Kresling geometry", geometry.reproduce),
     Chapter("experiments", "Chapter 3.2-3.3", "Experimental data: crease stiffness and "
-            "bending tests", "kresling.report.experiments_section"),
+            "bending tests", experiments.reproduce),
     Chapter("analyses", "Chapter 3.1, 3.3-3.4", "Bending stiffness of the bar-and-hinge "
-            "model: Table 3, figures 3.5-3.7 and 3.14-3.16", "kresling.analyses"),
+            "model: Table 3, figures 3.5-3.7 and 3.14-3.16", analyses.reproduce),
     Chapter("sweeps", "Chapter 3.4-3.5", "Parametric study: figures 3.9-3.13, 3.17 and the "
-            "optimum", "kresling.sweeps"),
+            "optimum", sweeps.reproduce),
     Chapter("fabrication", "Chapter 4.1, Appendix C", "Fabrication: cut files of the "
-            "optimal cell", "kresling.fabrication"),
+            "optimal cell", fabrication.reproduce),
     Chapter("manipulator", "Chapter 4.2-4.3, Appendix E", "Manipulator kinematics",
-            "kresling.manipulator"),
+            manipulator.reproduce),
 )
 
 

@@ -1,8 +1,9 @@
-"""What one part of the package contributes to the reproduction report.
+"""What one chapter contributes to the reproduction report.
 
-Every area (geometry, bending analyses, sweeps, fits, manipulator, fabrication) provides a
-function ``reproduce(out_dir: pathlib.Path, quick: bool = True) -> Section`` in its own
-module; the report collects the sections, renders them to HTML and times each one.
+Every chapter (geometry, experiments, bending analyses, sweeps, fabrication, manipulator) has
+a function ``reproduce(out_dir: pathlib.Path, quick: bool = True) -> Section`` in its module
+of :mod:`kresling.report.sections`; the report collects the sections, renders them to HTML
+and times each one.
 """
 
 from __future__ import annotations

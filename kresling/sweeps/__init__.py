@@ -10,7 +10,8 @@ facet-angle and snap-through analyses, in parallel and resumable, and what to do
 - :func:`optimize_design`: beyond the grid, the best design of an n by SLSQP under bounds
   and constraints on any metric; :func:`sensitivity`: how fast a metric falls away from it.
 - Submodules: ``plots`` (heat maps, figure 3.13), ``conclusions`` (the thesis's claims as
-  measurements on a table), ``reproduce`` (the report section).
+  measurements on a table). The report's section on them is
+  :mod:`kresling.report.sections.sweeps`.
 
 Examples
 --------

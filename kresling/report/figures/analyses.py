@@ -1,4 +1,4 @@
-"""Figures of the analyses section of the report (see :mod:`kresling.analyses.reproduce`):
+"""Figures of the analyses section of the report (see :mod:`kresling.report.sections.analyses`):
 3.5-3.7 and 3.15, 3.14, 3.16, A-1 and 3D views of the optimal specimen, plus its FOLD file.
 
 Figures are drawn on ``matplotlib.figure.Figure`` objects (no pyplot state)."""
@@ -7,11 +7,14 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from matplotlib.figure import Figure
+
 from kresling.analyses.bending import bending_stiffness, bending_test
-from kresling.analyses.plots import plot_orientation_study
-from kresling.analyses.plots import plot_snap_through, plot_stiffness_by_n, plot_table3_design
+from kresling.analyses.plots import (plot_orientation_study, plot_snap_through,
+                                     plot_stiffness_by_n, plot_table3_design)
 from kresling.analyses.snap_through import snap_through
 from kresling.analyses.specimen_views import plot_specimen, write_specimen_fold
+from kresling.data.tables import merlin2_model_curves
 from kresling.geometry import Design
 from kresling.model.kresling_specimen import kresling_specimen
 from kresling.report.section import Section
@@ -32,10 +35,6 @@ def draw_figures(section: Section, out_dir: Path, table, studies, quick: bool) -
     """Draw every figure into ``out_dir`` and add it to ``section``: ``table`` from
     :func:`~kresling.analyses.table3.table3_comparison`, ``studies`` the orientation studies
     of figure A-1."""
-    from matplotlib.figure import Figure
-
-    from kresling.data.tables import merlin2_model_curves
-
     curves = merlin2_model_curves()
     figure = Figure(figsize=(11.0, 8.5), layout="constrained")
     for ax, entry in zip(figure.subplots(2, 2).ravel(), table):
@@ -77,8 +76,6 @@ def draw_figures(section: Section, out_dir: Path, table, studies, quick: bool) -
 
 
 def _specimen_figure(section: Section, out_dir: Path) -> None:
-    from matplotlib.figure import Figure
-
     d = Design(10, 0.9, 15)
     figure = Figure(figsize=(12.0, 5.5), layout="constrained")
     contracted = kresling_specimen(d, [0] * 4)

@@ -7,6 +7,8 @@ import csv
 import shutil
 from pathlib import Path
 
+import matplotlib.pyplot as plt
+
 from kresling.report.section import Section
 from kresling.sweeps import conclusions as c
 from kresling.sweeps.designs import THESIS_N
@@ -19,8 +21,6 @@ _THESIS_FIGURE = dict(zip(THESIS_N, ("3.9", "3.10", "3.11", "3.12")))
 
 def add_figures(section: Section, table, out_dir: Path, sensitivity_figure) -> None:
     """Write every figure and table of the section into ``out_dir`` and list them."""
-    import matplotlib.pyplot as plt
-
     for n in THESIS_N:
         figure = plot_ratio_maps(table, n)
         _save(section, figure, out_dir / f"figure_{_THESIS_FIGURE[n].replace('.', '_')}_n{n}.png",

@@ -5,7 +5,8 @@ What it reproduces: Table 3's model column (against the MERLIN2 reference runs a
 printed thesis values), the optimum's K_B ratio 16.77, the experiment-model agreement the
 thesis claims, the independence of the ratio from kf, the trends of section 3.4 (K_B ratio,
 Psi ratio) and of figure 3.17 (snap force), the axisymmetry of Appendix A, and figures
-3.5-3.7 and 3.15, 3.14, 3.16 and A-1 with a 3D view of the optimal specimen.
+3.5-3.7 and 3.15, 3.14, 3.16 and A-1 with a 3D view of the optimal specimen (drawn by
+:mod:`kresling.report.figures.analyses`).
 """
 
 from __future__ import annotations
@@ -17,25 +18,27 @@ from pathlib import Path
 
 import numpy as np
 
-from kresling.analyses.bending import bending_stiffness
+from kresling.analyses.bending import bending_stiffness, bending_test
 from kresling.analyses.facet_angle import facet_angle_ratio, facet_angles
 from kresling.analyses.linear_bending import LinearBendingTester
 from kresling.analyses.orientation import orientation_study
 from kresling.analyses.snap_through import SnapThroughTester, snap_through
 from kresling.analyses.table3 import TABLE3_DESIGNS, table3_comparison, topology_effect
+from kresling.data.tables import merlin2_model_curves
 from kresling.geometry import Design
 from kresling.model.kresling_specimen import SpecimenParameters
+from kresling.report.figures.analyses import draw_figures
 from kresling.report.section import Check, Section
+from kresling.report.thesis_values import (EXPERIMENT_RATIO_ATOL, MERLIN2_HISTORY_ATOL,
+                                           MERLIN2_RTOL, RECONSTRUCTION, SNAP_REFERENCE,
+                                           TABLE3_HALF_UNIT, TOPOLOGY_EFFECT_N10_CONTRACTED)
 
 __all__ = ["reproduce"]
 
 logger = logging.getLogger(__name__)
 
 #: Half a unit of the last digit the thesis prints for K_B and its ratio (2 decimals).
-HALF_UNIT = 0.005
-#: The reconstructed generator under MERLIN2 reproduces the thesis's model column to 0.5 %
-#: (MODEL.md): the allowance, beyond rounding, against the printed values.
-RECONSTRUCTION = 0.005
+HALF_UNIT = TABLE3_HALF_UNIT
 
 
 def reproduce(out_dir, quick: bool = True) -> Section:
@@ -63,8 +66,6 @@ def reproduce(out_dir, quick: bool = True) -> Section:
     notes = [_table3_part(section, out_dir, table), _trend_part(section),
              _linear_part(section, studies), _snap_part(section, out_dir, quick),
              _topology_part(section, out_dir)]
-    from kresling.analyses._report_figures import draw_figures
-
     draw_figures(section, out_dir, table, studies, quick)
     section.summary = " ".join(notes)
     logger.info("analyses section: %d of %d checks passed",
@@ -80,27 +81,30 @@ def _table3_part(section: Section, out_dir: Path, table) -> str:
             unit = "" if key == "ratio" else "N*m/rad"
             section.checks.append(Check(
                 f"{name}, {label}, vs MERLIN2", ours[key], entry.reference[key],
-                "MERLIN2 reference run (5 mm, 350 steps)", rtol=1e-3, unit=unit,
-                note="issue 4's bar is 0.1 %; the reference prints 6 decimals, which we match"))
+                "MERLIN2 reference run (5 mm, 350 steps)", rtol=MERLIN2_RTOL, unit=unit,
+                note="the agreement asked of the reconstruction is 0.1 %; the reference "
+                     "prints 6 decimals, which we match"))
             if math.isfinite(entry.thesis_model[key]):
                 section.checks.append(Check(
                     f"{name}, {label}, vs the thesis", ours[key], entry.thesis_model[key],
                     "thesis Table 3 (model)" if d.n != 10 else "thesis section 3.4",
                     atol=HALF_UNIT, rtol=RECONSTRUCTION, unit=unit,
                     note="half a unit of the printed 2 decimals plus 0.5 %: the thesis's "
-                         "generator is reconstructed (MODEL.md)"))
+                         "generator is reconstructed (docs/thesis_equations.md, "
+                         "'Bending test')"))
         if entry.experiment and math.isfinite(entry.thesis_model["extended"]):
             # The thesis's "within nearly ±1" is about samples 1-3; for the optimum it notes
             # "a degree of disagreement" (16.77 against 11.79).
             section.checks.append(Check(
                 f"K_B ratio, {label}, model vs experiment", ours["ratio"],
                 entry.experiment["ratio"], "thesis Table 3 (experiment, printed ratio)",
-                atol=1.0, note="the thesis: 'within nearly ±1'; from the printed means the "
+                atol=EXPERIMENT_RATIO_ATOL, note="the thesis: 'within nearly ±1'; from the printed means the "
                                f"experimental ratio is {entry.experiment['ratio_of_means']:.2f}"))
     worst = max(_history_error(entry) for entry in table)
     section.checks.append(Check(
         "force histories vs MERLIN2, largest relative difference", worst, 0.0,
-        "MERLIN2 reference runs, all 350 steps of 8 runs", atol=1e-4, note="issue 4's bar"))
+        "MERLIN2 reference runs, all 350 steps of 8 runs", atol=MERLIN2_HISTORY_ATOL,
+        note="pointwise agreement asked of the reconstruction: 1e-4 relative"))
     path = _write_rows(out_dir / "table3.csv", [entry.row() for entry in table])
     section.add_table(path, "Table 3 side by side: ours, the MERLIN2 reference runs, the "
                             "thesis's model and experiment columns (K_B in N*m/rad).")
@@ -124,8 +128,6 @@ def _write_rows(path: Path, rows) -> Path:
 
 
 def _history_error(entry) -> float:
-    from kresling.data.tables import merlin2_model_curves
-
     curves = merlin2_model_curves()[(entry.design.n, entry.design.Lc, entry.design.lam)]
     worst = 0.0
     for name in ("extended", "contracted"):
@@ -178,8 +180,6 @@ def _trend_part(section: Section) -> str:
 
 
 def _linear_part(section: Section, studies) -> str:
-    from kresling.analyses.bending import bending_test
-
     d = Design(10, 0.9, 15)
     tester = LinearBendingTester(10)
     for state, name in ((1, "extended"), (0, "contracted")):
@@ -197,17 +197,20 @@ def _linear_part(section: Section, studies) -> str:
     return (f"Appendix A: the linearised model agrees with the 0.001 rad test to 1e-5, and "
             f"turning the bending axis changes the K_B ratio by at most {100 * worst:.2f} % "
             f"(axisymmetric, as the thesis found); turning only the pin line against the load "
-            f"would change it by 4-65 % (MODEL.md).")
+            f"would change it by 4-65 % (docs/thesis_equations.md, 'Bending test').")
 
 
 def _snap_part(section: Section, out_dir: Path, quick: bool) -> str:
     steps = 100 if quick else 400
     reference = snap_through(Design(8, 0.8, 30), steps=steps)
+    force, force_tol = SNAP_REFERENCE["force"]
+    travel, travel_tol = SNAP_REFERENCE["displacement"]
+    source = "MERLIN2 reference run (docs/thesis_equations.md, 'Bending test')"
     section.checks += [
-        Check("snap force, n=8 Lc=30 lambda=0.8", reference.snap_force, 4.34,
-              "MODEL.md reference run", atol=0.005, unit="N", note="half a unit of 4.34"),
-        Check("snap displacement, n=8 Lc=30 lambda=0.8", reference.snap_displacement, 5.93,
-              "MODEL.md reference run", atol=0.02, unit="mm",
+        Check("snap force, n=8 Lc=30 lambda=0.8", reference.snap_force, force, source,
+              atol=force_tol, unit="N", note="half a unit of 4.34"),
+        Check("snap displacement, n=8 Lc=30 lambda=0.8", reference.snap_displacement, travel,
+              source, atol=travel_tol, unit="mm",
               note="ours is the parabola through the peak sample; the reference run's peak "
                    "sample lies within its step (about 0.07 mm)"),
     ]
@@ -232,7 +235,7 @@ def _snap_part(section: Section, out_dir: Path, quick: bool) -> str:
             writer.writerow((n, Lc, lam) + tuple(getattr(r, k) for k in keys) + (r.bistability,))
     section.add_table(path, "Snap-through of the Table 3 designs: force [N], travel [mm], "
                             "energy barrier [N*mm], second stable state (height mm, tilt rad).")
-    return (f"Snap-through (one cell driven from Le to Lc, top free to twist): the MODEL.md "
+    return (f"Snap-through (one cell driven from Le to Lc, top free to twist): the MERLIN2 "
             f"reference design peaks at {reference.snap_force:.2f} N at "
             f"{reference.snap_displacement:.2f} mm and dips to {reference.minimum_force:.2f} N "
             f"(the thesis says its curve stays above zero; our model, like the reference run, "
@@ -245,13 +248,17 @@ def _topology_part(section: Section, out_dir: Path) -> str:
     section.add_table(path, "One bar and hinge per edge instead of MERLIN2's one per pair of "
                             "triangles: relative change of K_B and of the ratio (5 mm).")
     optimum = next(e for e in effect if e["n"] == 10)
+    change, tolerance = TOPOLOGY_EFFECT_N10_CONTRACTED
+    stops = ("its path stops there" if not optimum["completed_contracted"]
+             else "the path goes on")
     section.checks.append(Check(
         "de-duplicated topology: change of K_con, n=10 Lc=15 lambda=0.9",
-        abs(optimum["contracted"]), 0.08, "MODEL.md ('8 % for n = 10 contracted')",
-        atol=0.005, note="half a unit of the rounded 8 %; MERLIN2's Newton sequence, as MODEL.md's "
-                         "number came from MERLIN2. The de-duplicated specimen loses stability "
-                         f"near 4.9 mm ({'its path stops there' if not optimum['completed_contracted'] else 'the path goes on'}), "
-                         "so K_B is fitted to the part before"))
+        abs(optimum["contracted"]), change,
+        "MERLIN2 with one bar and hinge per edge ('8 % for n = 10 contracted'; docs/model.md, "
+        "'Topology')", atol=tolerance,
+        note="half a unit of the rounded 8 %; MERLIN2's Newton sequence, as the 8 % came "
+             "from MERLIN2. The de-duplicated specimen loses stability "
+             f"near 4.9 mm ({stops}), so K_B is fitted to the part before"))
     ext = max(abs(e["extended"]) for e in effect)
     con = max(abs(e["contracted"]) for e in effect)
     return (f"MERLIN2's duplicated bars and hinges on the intermediate polygons matter: one "

@@ -6,69 +6,33 @@ here the pattern is computed, and the checks show that it folds onto the 3D cell
 
 from __future__ import annotations
 
-import itertools
 import logging
 import math
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
+import matplotlib.pyplot as plt
 import numpy as np
 
+from kresling.fabrication.accuracy import closure_error, edge_length_errors, isometry_error
 from kresling.fabrication.export import pattern_fold_document, write_sheet
 from kresling.fabrication.fold import fold_angles, write_fold
 from kresling.fabrication.pattern import CreasePattern, crease_pattern
+from kresling.fabrication.plot import plot_sheet
 from kresling.fabrication.processes import Laminate, Paper
 from kresling.fabrication.sheet import module_sheet
 from kresling.fabrication.svg import write_svg
 from kresling.geometry import STATES, Design
 from kresling.report.section import Check, Section
+from kresling.report.thesis_values import FABRICATION_LENGTH_TOL, LAMINATE_GAP, OPTIMUM
 
 __all__ = ["reproduce", "edge_length_errors", "isometry_error", "closure_error"]
 
 logger = logging.getLogger(__name__)
 
-#: The thesis's optimal design (section 3.4), the one its manipulator is built from.
-OPTIMUM = dict(n=10, lam=0.9, Lc=15.0, R=30.0)
 #: Tolerance on lengths [mm]: the pattern is exact up to floating-point rounding.
-LENGTH_TOL = 1e-9
+LENGTH_TOL = FABRICATION_LENGTH_TOL
 SVG_MARGIN = 5.0
-
-
-def edge_length_errors(pattern: CreasePattern) -> dict:
-    """Worst flat length of each crease family against the 3D model's value.
-
-    Returns
-    -------
-    dict of str to (float, float)
-        ``kind -> (flat length farthest from the reference, reference)`` [mm] for valleys
-        (Vg, eqn 6), mountains and the seam (Mg, eqn 7) and tab creases (P, eqn 1).
-    """
-    d = pattern.design
-    out = {}
-    for kind, reference in (("valley", d.Vg), ("mountain", d.Mg), ("seam", d.Mg), ("tab", d.P)):
-        lengths = np.linalg.norm(np.diff(pattern.points[pattern.edges_of_kind(kind)], axis=1)[:, 0],
-                                 axis=1)
-        out[kind] = (float(lengths[np.argmax(np.abs(lengths - reference))]), reference)
-    return out
-
-
-def isometry_error(pattern: CreasePattern, state) -> float:
-    """Largest change of any distance between two corners of one face on folding [mm]."""
-    folded = pattern.folded(state)
-    worst = 0.0
-    for face in pattern.faces:
-        for a, b in itertools.combinations(face, 2):
-            flat = np.linalg.norm(pattern.points[a] - pattern.points[b])
-            worst = max(worst, abs(np.linalg.norm(folded[a] - folded[b]) - flat))
-    return float(worst)
-
-
-def closure_error(pattern: CreasePattern, state) -> float:
-    """Distance between the strip's last edge ``B_n T_n`` and its first ``B_0 T_0`` once
-    folded [mm] (0 when the strip closes)."""
-    folded = pattern.folded(state)
-    (b0, bn), (t0, tn) = folded[pattern.bottom[[0, -1]]], folded[pattern.top[[0, -1]]]
-    return float(max(np.linalg.norm(bn - b0), np.linalg.norm(tn - t0)))
 
 
 def _facet_angles(pattern: CreasePattern) -> np.ndarray:
@@ -87,10 +51,6 @@ def _write_png(sheet, path: Path) -> str:
         return "rendered from the SVG with cairosvg"
     except ImportError as error:
         logger.warning("%s; drawing %s with Matplotlib instead", error, path.name)
-        import matplotlib.pyplot as plt
-
-        from kresling.fabrication.plot import plot_sheet
-
         ax = plot_sheet(sheet)
         ax.figure.savefig(path, dpi=100, bbox_inches="tight")
         plt.close(ax.figure)
@@ -114,7 +74,8 @@ def reproduce(out_dir, quick: bool = True) -> Section:
     """
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
-    design = Design(**OPTIMUM)
+    n, Lc, lam = OPTIMUM
+    design = Design(n=n, lam=lam, Lc=Lc, R=30.0)
     pattern = crease_pattern(design)
     section = Section(
         title="Fabrication: cut files of the optimal cell (sections 2.2, 4.1, Appendix C)",
@@ -157,7 +118,7 @@ def reproduce(out_dir, quick: bool = True) -> Section:
         how = _write_png(sheet, png_path)
         section.add_figure(png_path, f"{sheet.title}: cut file ({how}); {'; '.join(sheet.notes)}")
     gap = Laminate().cut_sheet(pattern).layer("1-creases-and-base")
-    section.checks.append(Check("laminate valley gap width", _gap_width(gap), 1.0,
+    section.checks.append(Check("laminate valley gap width", _gap_width(gap), LAMINATE_GAP,
                                 "thesis 4.1, Appendix C step 2", atol=1e-9, unit="mm"))
     if not quick:
         write_fold(out_dir / "cell_n10.fold", pattern_fold_document(pattern, "laminate"))

@@ -1,10 +1,11 @@
 """The geometry section of the reproduction report (thesis chapter 2, eqns 1-9).
 
-Checks the numbers of NOTES section 1: the extended height ``Le`` of the optimal design and of
-the three paper specimens, the truss path's end points (``L(alpha0) = Lc``, ``L(alpha_e) =
-Le``, the mountain bar back at ``Mg``), that both stable states are stress-free, the facet
-angle Psi of the MERLIN2 golden model, the extended module length of eqn 30 and the
-traditional-Kresling limit. Nothing here depends on ``quick``: it is all closed form.
+Checks the closed-form geometry (docs/thesis_equations.md, 'Geometry'): the extended height
+``Le`` of the optimal design and of the three paper specimens, the truss path's end points
+(``L(alpha0) = Lc``, ``L(alpha_e) = Le``, the mountain bar back at ``Mg``), that both stable
+states are stress-free, the facet angle Psi of the MERLIN2 golden model, the extended module
+length of eqn 30 and the traditional-Kresling limit. Nothing here depends on ``quick``: it
+is all closed form.
 """
 
 from __future__ import annotations
@@ -15,28 +16,22 @@ import math
 from pathlib import Path
 
 import numpy as np
+from matplotlib.figure import Figure
 
 from kresling.geometry import STATES, Design
+from kresling.plots import plot_cell, plot_kinematic_path
 from kresling.report.section import Check, Section
+from kresling.report.thesis_values import (EXACT, HALF_UNIT_6TH, LE_DESIGNS,
+                                           LE_OPTIMUM_40_DIGITS, MODULE_LENGTH_EQN_30,
+                                           PSI_GOLDEN)
 
 __all__ = ["reproduce", "DESIGNS", "bar_length_errors"]
 
 logger = logging.getLogger(__name__)
 
-#: The optimal design and the three paper specimens of Table 3 (R = 30 mm) with their
-#: extended height: (n, lambda, Lc [mm]) -> (Le [mm], where the value comes from).
-DESIGNS = {
-    (10, 0.9, 15.0): (55.8194667799374, "thesis Appendix E (le)"),
-    (8, 0.8, 30.0): (55.317649, "NOTES section 1 (6 decimals)"),
-    (8, 0.8, 15.0): (48.836895, "NOTES section 1 (6 decimals)"),
-    (4, 0.7, 30.0): (41.068587, "NOTES section 1 (6 decimals)"),
-}
-#: Le of the optimum, the closed form evaluated in 40-digit arithmetic (mpmath) and rounded.
-LE_OPTIMUM_40_DIGITS = 55.81946677978192128656821413771396074332
-#: Psi of the golden model (n=4, Lc=30, lambda=0.7, extended): hinge 1 of MERLIN2's folds.csv.
-PSI_GOLDEN = 1.2878022801111912
-#: Tolerance on closed-form lengths [mm] and angles [rad]: floating-point rounding only.
-EXACT = 1e-9
+#: The designs checked, (n, lambda, Lc [mm]) -> (Le [mm], its source): see
+#: :data:`kresling.report.thesis_values.LE_DESIGNS`.
+DESIGNS = LE_DESIGNS
 
 
 def bar_length_errors(design: Design) -> dict:
@@ -100,7 +95,7 @@ def _height_checks() -> list:
         thesis_code = n == 10
         checks.append(Check(
             f"Le, n={n} lambda={lam:g} Lc={Lc:g} mm", Design(n, lam, Lc).Le, Le, source,
-            atol=EXACT if thesis_code else 5e-7, unit="mm",
+            atol=EXACT if thesis_code else HALF_UNIT_6TH, unit="mm",
             note=("the thesis's code value is a numerical root of m(alpha) = Mg; ours is the "
                   "closed form (exact to 1e-14 mm, next check): they differ by 1.6e-10 mm"
                   if thesis_code else "half a unit of the 6th decimal")))
@@ -109,8 +104,9 @@ def _height_checks() -> list:
         Check("Le, optimum, against 40-digit arithmetic", le, LE_OPTIMUM_40_DIGITS,
               "closed form in mpmath, 40 digits", atol=1e-12, unit="mm",
               note="double precision of the C++ core"),
-        Check("extended module length 2 Le, optimum", 2 * le, 111.6, "thesis eqn 30",
-              atol=0.05, unit="mm", note="half a unit of the printed digit"),
+        Check("extended module length 2 Le, optimum", 2 * le, MODULE_LENGTH_EQN_30[0],
+              "thesis eqn 30", atol=MODULE_LENGTH_EQN_30[1], unit="mm",
+              note="half a unit of the printed digit"),
     ]
     return checks
 
@@ -164,10 +160,6 @@ def _write_table(section: Section, path: Path) -> None:
 
 
 def _draw_figures(section: Section, out_dir: Path, design: Design) -> None:
-    from matplotlib.figure import Figure
-
-    from kresling.plots import plot_cell, plot_kinematic_path
-
     cells = Figure(figsize=(9.0, 4.5))
     for index, state in enumerate(("contracted", "extended")):
         plot_cell(design, state, cells.add_subplot(1, 2, index + 1, projection="3d"))

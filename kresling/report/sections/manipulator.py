@@ -7,44 +7,28 @@ import logging
 import math
 from pathlib import Path
 
+import matplotlib.pyplot as plt
 import numpy as np
 
 from kresling import data
+from kresling.manipulator import plots
 from kresling.manipulator.forward import forward_kinematics
 from kresling.manipulator.inverse import inverse_kinematics, solve_configuration
 from kresling.manipulator.joint_lengths import joint_length_table
 from kresling.manipulator.markers import compare_markers, read_markers
 from kresling.manipulator.model import Manipulator
 from kresling.manipulator.motors import TendonDrive
-from kresling.manipulator.protocol import protocol_tendon_lengths
+from kresling.manipulator.protocol import protocol_deviations
 from kresling.manipulator.synthetic import SHIPPED_FILE
 from kresling.manipulator.workspace import workspaces
-from kresling.report import Check, Section
+from kresling.report.section import Check, Section
+from kresling.report.thesis_values import L_EQN_30, LE_APPENDIX_E, TABLE5_MIDPOINT_ATOL
 
 __all__ = ["reproduce", "protocol_deviations", "appendix_e_markers"]
 
 logger = logging.getLogger(__name__)
 
 _APPENDIX_E = "thesis Appendix E, config [1 0 1] at L1 = 10 (k = 10)"
-
-
-def protocol_deviations(model: Manipulator, steps=range(1, 11)) -> tuple[float, float]:
-    """Largest deviation of a flexible module's chord from the rest tendon length [mm] and of
-    its bend from ``2 asin(k / d)`` [rad], over every configuration and step."""
-    chord_error = bend_error = 0.0
-    for configuration in model.configurations:
-        if 0 not in configuration:
-            continue
-        for k in steps:
-            state = forward_kinematics(model, configuration,
-                                       protocol_tendon_lengths(k, model.rest_tendon_length))
-            for j in (j for j, s in enumerate(configuration) if s == 0):
-                chord = np.linalg.norm(state.markers[j + 1] - state.markers[j])
-                a, b = state.frames[j][:3, 2], state.frames[j + 1][:3, 2]
-                bend = math.atan2(np.linalg.norm(np.cross(a, b)), float(a @ b))
-                chord_error = max(chord_error, abs(chord - model.rest_tendon_length))
-                bend_error = max(bend_error, abs(bend - 2 * math.asin(k / model.tendon_radius)))
-    return chord_error, bend_error
 
 
 def appendix_e_markers(model: Manipulator, k: float = 10.0) -> np.ndarray:
@@ -85,10 +69,6 @@ def _write_csv(path: Path, rows: list, columns) -> Path:
 
 def _figures(section: Section, out_dir: Path, model: Manipulator, measured, comparison,
              grid_points: int) -> None:
-    import matplotlib.pyplot as plt
-
-    from kresling.manipulator import plots
-
     figures = [
         ("fig4_12_configurations.png", plots.plot_configurations(model, 10),
          "Figure 4.12: every configuration at the protocol's full displacement (k = 10)."),
@@ -141,7 +121,7 @@ def reproduce(out_dir, quick: bool = True) -> Section:
                 f"(1 0 1), k = 10: marker {index + 1} ({label}) {name}", state.markers[index, axis],
                 by_hand[index, axis], _APPENDIX_E + ", worked by hand", atol=1e-9, unit="mm"))
     tip = forward_kinematics(model, "111").tip[2]
-    section.checks.append(Check("(1 1 1) tip height", tip, 3 * 111.6389, "thesis eqn 30, L = 111.6389",
+    section.checks.append(Check("(1 1 1) tip height", tip, 3 * L_EQN_30, "thesis eqn 30, L = 111.6389",
                                 atol=1.5e-4, unit="mm", note="3 x the thesis's 4-decimal L"))
     chord_error, bend_error = protocol_deviations(model)
     section.checks += [
@@ -160,7 +140,7 @@ def reproduce(out_dir, quick: bool = True) -> Section:
             f"Appendix E 'Counts {motor}' (tendon {tendon})", counts[motor - 1],
             -shortening * 1 * 0.001 * cpm, _APPENDIX_E, rtol=1e-12, unit="counts"))
     section.checks.append(Check("counts to snap one module", drive.snap_counts(model),
-                                (55.8194667799374 - 15) * 2 * 0.001 * cpm,
+                                (LE_APPENDIX_E - 15) * 2 * 0.001 * cpm,
                                 "Appendix E snapCounts", rtol=1e-9, unit="counts",
                                 note="our Le (kresling.Design) and Appendix E's differ by 1.6e-10 mm"))
 
@@ -175,7 +155,8 @@ def reproduce(out_dir, quick: bool = True) -> Section:
         middles = [0.5 * (r["min_mm"] + r["max_mm"]) for r in table5 if r["state"] == state_code]
         section.checks.append(Check(
             f"Table 5 mean module length, {label}", float(np.mean(middles)), expected,
-            "model (2 Le or the 30 mm chord) vs thesis Table 5 range midpoints", atol=1.5,
+            "model (2 Le or the 30 mm chord) vs thesis Table 5 range midpoints",
+            atol=TABLE5_MIDPOINT_ATOL,
             unit="mm", note="the thesis reports module lengths varying by up to ~3 mm"))
 
     measured = read_markers(data.path(SHIPPED_FILE))

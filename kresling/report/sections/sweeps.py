@@ -3,8 +3,9 @@
 Sweeps the thesis's design space (n = 4, 6, 8, 10; Lc 15-60 mm; lambda 0.7-0.9) on a 20 x 20
 grid per n (quick) or the thesis's 100 x 100, and checks the thesis's conclusions on it:
 where each n's maximum K_B ratio is, how the maximum grows with n, the optimum, the trends
-of the facet-angle ratio, and the 5 mm runs of figure 3.14. Draws figures 3.9-3.13, and goes
-beyond the grid with the continuous optimiser and the sensitivity at the optimum.
+of the facet-angle ratio, and the 5 mm runs of figure 3.14. Draws figures 3.9-3.13 (with
+:mod:`kresling.report.figures.sweeps`), and goes beyond the grid with the continuous
+optimiser and the sensitivity at the optimum.
 """
 
 from __future__ import annotations
@@ -13,10 +14,11 @@ import logging
 import shutil
 from pathlib import Path
 
-
 from kresling.analyses import bending_stiffness
 from kresling.geometry import Design
+from kresling.report.figures.sweeps import add_figures
 from kresling.report.section import Check, Section
+from kresling.report.thesis_values import OPTIMUM, SWEEP_CONSTRAINTS
 from kresling.sweeps import conclusions as c
 from kresling.sweeps.designs import THESIS_N, design_grid
 from kresling.sweeps.optimize import optimize_design
@@ -27,13 +29,12 @@ __all__ = ["reproduce", "OPTIMUM"]
 
 logger = logging.getLogger(__name__)
 
-#: The thesis's optimum (section 3.4): n, Lc [mm], lambda.
-OPTIMUM = (10, 15.0, 0.9)
 _STUDY = "thesis section 3.4"
+_TRENDS = "thesis sections 3.4-3.5 (figures 3.9-3.12, 3.17)"
 _METRICS = ("kb_ratio", "psi_ratio", "snap_force", "energy_barrier", "bistable")
-#: The constraints of the report's constrained optimum: a joint no softer than 0.3 N*m/rad
-#: (to carry the arm) that still needs at least 8 N to snap.
-CONSTRAINTS = {"kb_con": (0.3, None), "snap_force": (8.0, None)}
+#: The constraints of the report's constrained optimum (see
+#: :data:`kresling.report.thesis_values.SWEEP_CONSTRAINTS`).
+CONSTRAINTS = SWEEP_CONSTRAINTS
 
 
 def reproduce(out_dir, quick: bool = True, *, workers=None) -> Section:
@@ -54,8 +55,6 @@ def reproduce(out_dir, quick: bool = True, *, workers=None) -> Section:
     -------
     Section
     """
-    from kresling.sweeps.report_figures import add_figures
-
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     size = 20 if quick else 100
@@ -139,9 +138,9 @@ def _trend_part(section: Section, table) -> str:
         snap = metric == "snap_force"
         section.checks += [
             Check(f"fraction of grid neighbours where {metric} rises with lambda",
-                  c.monotone_fraction(table, metric, "lam", +1), 1.0, "NOTES trends"),
+                  c.monotone_fraction(table, metric, "lam", +1), 1.0, _TRENDS),
             Check(f"fraction of grid neighbours where {metric} falls with Lc",
-                  c.monotone_fraction(table, metric, "Lc", -1), 1.0, "NOTES trends",
+                  c.monotone_fraction(table, metric, "Lc", -1), 1.0, _TRENDS,
                   atol=0.05 if snap else 0.0,
                   note="near the monostable corner (lambda below about 0.75, Lc above about "
                        "40 mm, n >= 6) the first maximum flattens and rises again slightly "
