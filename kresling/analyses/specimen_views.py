@@ -27,6 +27,8 @@ import logging
 
 import numpy as np
 
+from kresling.io import fold_document, write_fold_document
+
 __all__ = ["specimen_faces", "specimen_edges", "specimen_fold", "write_specimen_fold",
            "plot_specimen"]
 
@@ -113,10 +115,8 @@ def specimen_fold(specimen, *, frames=(), title: str = "", cut_mountains: bool =
     Returns
     -------
     dict
-        Ready for :func:`kresling.fabrication.fold.write_fold`.
+        Ready for :func:`kresling.io.write_fold_document`.
     """
-    from kresling.fabrication.fold import fold_document
-
     edges, assignments = specimen_edges(specimen, cut_mountains=cut_mountains)
     X = specimen.model.nodes
     extra_frames = []
@@ -138,9 +138,7 @@ def specimen_fold(specimen, *, frames=(), title: str = "", cut_mountains: bool =
 
 def write_specimen_fold(path, specimen, **options):
     """Write :func:`specimen_fold` to ``path`` (JSON); returns the path."""
-    from kresling.fabrication.fold import write_fold
-
-    return write_fold(path, specimen_fold(specimen, **options))
+    return write_fold_document(path, specimen_fold(specimen, **options))
 
 
 def plot_specimen(specimen, displacement=None, *, scale: float = 1.0, ax=None,
