@@ -16,7 +16,6 @@ from kresling.view.surface import (crease_groups, family_style, line_trace, mesh
 
 __all__ = ["view_model", "view_path"]
 
-_SCENE_AXES = {f"{a}axis": dict(title=dict(text=f"{a} [mm]")) for a in "xyz"}
 _FIELD_WIDTH = 7  # px
 
 
