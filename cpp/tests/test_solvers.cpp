@@ -1,0 +1,222 @@
+// Nonlinear solvers against closed forms: the von Mises two-bar truss (limit points, passed
+// by MGDCM), Newton's reported status, and displacement control of a bar chain whose
+// answer is linear in position.
+//
+// The truss: bars of the linear (Saint Venant-Kirchhoff) law, S = C0 E, half-span a, rise h,
+// length L = sqrt(a^2 + h^2). With the apex at height z it carries
+//     P(z) = A C0 z (h^2 - z^2) / L^3,
+// with limit points at z = +-h / sqrt(3), P_max = 2 A C0 h^3 / (3 sqrt(3) L^3). The load acts
+// through a soft vertical spring bar (Ogden law, axial force A C0/4 (s^4 - 1), monotone in
+// the stretch s) on top of the apex, so that the loaded point snaps back.
+
+#include <cmath>
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+
+#include "kresling/assembly/assembler.hpp"
+#include "kresling/solvers/displacement_control.hpp"
+#include "kresling/solvers/force_control.hpp"
+#include "kresling/solvers/newton.hpp"
+
+using namespace kresling;
+using elements::BarLawKind;
+
+namespace {
+
+constexpr double kHalfSpan = 10.0, kRise = 1.0, kModulus = 1000.0, kArea = 1.0;
+constexpr double kSpringLength = 10.0, kSpringArea = 0.005;  // 0.5 N/mm < max |dP/dz| ~ 0.98
+const double kLength = std::hypot(kHalfSpan, kRise);
+const double kMaxLoad =
+    2 * kArea * kModulus * std::pow(kRise, 3) / (3 * std::sqrt(3.0) * std::pow(kLength, 3));
+constexpr Index kApexZ = 3 * 2 + 2, kTopZ = 3 * 3 + 2;
+// Newton stops at ||du|| <= 1e-6 mm and converges quadratically: the residual left is orders
+// below 1e-9 of the load scale P_max (~0.38 N), which still resolves any wrong term.
+constexpr double kEquilibriumTol = 1e-9;
+
+double truss_load(double z) {
+  return kArea * kModulus * z * (kRise * kRise - z * z) / std::pow(kLength, 3);
+}
+double spring_compression(double length) {
+  const double s = length / kSpringLength;
+  return -kSpringArea * kModulus / 4 * (std::pow(s, 4) - 1);
+}
+
+// Nodes: the two supports, the apex, the spring's top; apex and top move along z only.
+model::Model truss(double rise = kRise) {
+  NodeMatrix X(4, 3);
+  X << -kHalfSpan, 0, 0, kHalfSpan, 0, 0, 0, 0, rise, 0, 0, rise + kSpringLength;
+  const double L = std::hypot(kHalfSpan, rise);
+  const elements::BarLaw svk{BarLawKind::Linear, kModulus}, ogden{BarLawKind::Ogden, kModulus};
+  std::vector<model::Bar> bars = {{{0, 2}, kArea, L, svk},
+                                  {{1, 2}, kArea, L, svk},
+                                  {{2, 3}, kSpringArea, kSpringLength, ogden}};
+  return model::Model(X, bars, {}, {1, 1, 1, 1, 1, 1, 1, 1, 0, 1, 1, 0});
+}
+
+VectorX load_on(const model::Model& m, Index dof, double value) {
+  VectorX f = VectorX::Zero(m.num_dofs());
+  f[dof] = value;
+  return f;
+}
+
+}  // namespace
+
+TEST(Newton, ConvergedStatusAndEquilibriumOfTheTruss) {
+  const model::Model m = truss();
+  assembly::Assembler a(m, assembly::unmasked_dofs(m.fixed()), 1e-8, assembly::Storage::Lower);
+  solvers::TangentSolver solver;
+  VectorX u = VectorX::Zero(m.num_dofs());
+  const double P = 0.5 * kMaxLoad;
+  const auto out = solvers::newton_equilibrium(a, solver, u, load_on(m, kTopZ, -P), {});
+  ASSERT_TRUE(out.converged) << out.failure;
+  EXPECT_TRUE(out.failure.empty());
+  // Quadratic convergence from rest: a handful of iterations, at least one.
+  EXPECT_GE(out.iterations, 2);
+  EXPECT_LE(out.iterations, 8);
+  EXPECT_EQ(out.negative_eigenvalues, 0);  // the near branch below the limit load is stable
+  const double z = kRise + u[kApexZ];
+  EXPECT_GT(z, kRise / std::sqrt(3.0));
+  EXPECT_NEAR(truss_load(z), P, kEquilibriumTol * kMaxLoad);
+}
+
+TEST(Newton, NonConvergenceIsAStatusNotAnException) {
+  const model::Model m = truss();
+  assembly::Assembler a(m, assembly::unmasked_dofs(m.fixed()), 1e-8, assembly::Storage::Lower);
+  solvers::TangentSolver solver;
+  // Two iterations cannot reach 1e-6 mm from rest under 0.9 P_max (the first correction is
+  // ~0.3 mm and the problem is far from linear there).
+  for (int limit_by_argument : {0, 2}) {
+    VectorX u = VectorX::Zero(m.num_dofs());
+    solvers::NewtonOptions options;
+    if (limit_by_argument == 0) options.max_iterations = 2;
+    solvers::NewtonOutcome out;
+    const VectorX load = load_on(m, kTopZ, -0.9 * kMaxLoad);
+    EXPECT_NO_THROW(out = solvers::newton_equilibrium(a, solver, u, load, options,
+                                                     limit_by_argument));
+    EXPECT_FALSE(out.converged);
+    EXPECT_EQ(out.iterations, 2);
+    EXPECT_NE(out.failure.find("did not converge in 2 iterations"), std::string::npos)
+        << out.failure;
+  }
+  // A flat truss has no stiffness across its span at rest: the apex is a mechanism, which
+  // the diagonal shift turns into an unbounded correction, reported as such.
+  const model::Model flat = truss(0.0);
+  assembly::Assembler b(flat, assembly::unmasked_dofs(flat.fixed()), 1e-8,
+                        assembly::Storage::Lower);
+  solvers::TangentSolver flat_solver;
+  VectorX u = VectorX::Zero(flat.num_dofs());
+  const auto out = solvers::newton_equilibrium(b, flat_solver, u, load_on(flat, kApexZ, -1.0), {});
+  EXPECT_FALSE(out.converged);
+  EXPECT_EQ(out.iterations, 1);
+  EXPECT_NE(out.failure.find("mechanism"), std::string::npos) << out.failure;
+}
+
+TEST(ForceControl, TrussFollowsTheClosedFormThenSnapsThrough) {
+  // Load-stepped Newton cannot follow the falling branch: past P_max the apex snaps to the
+  // inverted branch (z < -h), where the closed form admits the load again.
+  const model::Model m = truss();
+  const double total = 1.2 * kMaxLoad;
+  const auto r = solvers::solve_force_control(m, load_on(m, kTopZ, -total), 12);
+  ASSERT_TRUE(r.completed) << r.message;
+  ASSERT_EQ(r.steps.size(), 12u);
+  for (const auto& step : r.steps) {
+    const double z = kRise + step.displacement[kApexZ], P = step.load_factor * total;
+    EXPECT_NEAR(truss_load(z), P, kEquilibriumTol * kMaxLoad);
+    if (P <= kMaxLoad) EXPECT_GT(z, kRise / std::sqrt(3.0)) << "P = " << P;
+    else EXPECT_LT(z, -kRise) << "P = " << P;
+  }
+}
+
+TEST(Mgdcm, PassesTheLimitPointsOfTheTrussInEquilibrium) {
+  const model::Model m = truss();
+  const VectorX F = load_on(m, kTopZ, -1.0);
+  solvers::MgdcmOptions o;
+  o.initial_load_factor = 0.01;
+  o.max_step_factor = 0.01;
+  o.max_increments = 5000;
+  o.monitor_dof = kApexZ;
+  o.max_displacement = 2.2 * kRise;
+  const auto r = solvers::solve_mgdcm(m, F, o);
+  ASSERT_TRUE(r.completed) << r.message;
+  EXPECT_LT(r.steps.back().displacement[kApexZ], -2.2 * kRise);
+
+  assembly::Assembler a(m, assembly::unmasked_dofs(m.fixed()), 0.0);
+  VectorX f;
+  std::size_t peak = 0, trough = 0;
+  bool top_rose = false, top_fell = false;
+  for (std::size_t i = 0; i < r.steps.size(); ++i) {
+    const auto& s = r.steps[i];
+    a.assemble(s.displacement, f, false);
+    const VectorX residual = solvers::gather_rows(a, s.load_factor * F - f);
+    ASSERT_LE(residual.norm(), kEquilibriumTol * kMaxLoad) << "step " << i;
+    const double z = kRise + s.displacement[kApexZ];
+    EXPECT_NEAR(truss_load(z), s.load_factor, kEquilibriumTol * kMaxLoad) << "step " << i;
+    const double top = kRise + kSpringLength + s.displacement[kTopZ];
+    EXPECT_NEAR(spring_compression(top - z), s.load_factor, kEquilibriumTol * kMaxLoad);
+    if (i == 0) continue;
+    const double dtop = s.displacement[kTopZ] - r.steps[i - 1].displacement[kTopZ];
+    top_fell |= dtop < 0;
+    top_rose |= dtop > 1e-6;
+    const double dl = s.load_factor - r.steps[i - 1].load_factor;
+    if (peak == 0 && dl < 0) peak = i - 1;
+    if (peak != 0 && trough == 0 && dl > 0) trough = i - 1;
+  }
+  // The load rises to the limit load, sampled to within the step (O(dz^2) below it), falls
+  // through zero to -P_max and rises again; the loaded point moves back up on the way (a
+  // snap-back, which displacement control of that point could not follow).
+  ASSERT_GT(peak, 0u);
+  ASSERT_GT(trough, peak);
+  EXPECT_LE(r.steps[peak].load_factor, kMaxLoad * (1 + 1e-9));
+  EXPECT_GE(r.steps[peak].load_factor, kMaxLoad * (1 - 1e-3));
+  EXPECT_GE(r.steps[trough].load_factor, -kMaxLoad * (1 + 1e-9));
+  EXPECT_LE(r.steps[trough].load_factor, -kMaxLoad * (1 - 1e-3));
+  EXPECT_TRUE(top_fell && top_rose);
+}
+
+TEST(DisplacementControl, BarChainStretchesUniformly) {
+  // Collinear bars of one law, modulus and area, different lengths, the far end driven
+  // along the line: equal forces mean equal stretches s, so every node moves in proportion
+  // to its distance from the support (exactly, at any strain), and the actuator feels
+  // -A S(E) s with E = (s^2 - 1) / 2.
+  // Node 5, held and unattached, only anchors the line: a rotation about the chain's own
+  // line moves none of its nodes, and the rigid-body check would count it as free.
+  NodeMatrix X(6, 3);
+  X << 0, 0, 0, 1.0, 0, 0, 2.5, 0, 0, 3.0, 0, 0, 5.0, 0, 0, 0, 1.0, 1.0;
+  std::vector<model::Bar> bars;
+  for (Index i = 0; i < 4; ++i) {
+    bars.push_back({{i, i + 1}, kArea, X(i + 1, 0) - X(i, 0), {BarLawKind::Linear, kModulus}});
+  }
+  std::vector<std::uint8_t> fixed(18, 1);
+  for (int i = 1; i < 5; ++i) fixed[3 * i] = 0;  // x free, y and z held
+  const model::Model m(X, bars, {}, fixed);
+  for (double end : {1.0, -1.0}) {  // stretched to s = 1.2, compressed to s = 0.8
+    VectorX prescribed = VectorX::Zero(18);
+    prescribed[12] = end;
+    const auto r = solvers::solve_displacement_control(m, prescribed, 10);
+    ASSERT_TRUE(r.completed) << r.message;
+    ASSERT_EQ(r.steps.size(), 10u);
+    ASSERT_EQ(r.constraint_dofs, std::vector<Index>{12});
+    for (std::size_t k = 0; k < r.steps.size(); ++k) {
+      const auto& step = r.steps[k];
+      // k * (1 / steps) against (k + 1) / 10: a rounding or two apart.
+      EXPECT_NEAR(step.load_factor, (k + 1) / 10.0, 1e-14);
+      const double s = 1 + step.load_factor * end / 5.0;
+      // Newton's last correction is at most 1e-6 mm and quadratic convergence leaves far
+      // less; 1e-9 mm (and the force it implies, C0 A / L 1e-9) resolves any error.
+      for (Index i = 1; i < 5; ++i) {
+        EXPECT_NEAR(step.displacement[3 * i], (s - 1) * X(i, 0), 1e-9) << "node " << i;
+      }
+      EXPECT_NEAR(step.constraint_force[0], -kArea * kModulus * (s * s - 1) / 2 * s,
+                  1e-9 * kModulus);
+    }
+  }
+}
+
+TEST(DisplacementControl, RefusesFreeRigidBodyMotions) {
+  const model::Model m = truss();
+  const model::Model loose(m.nodes(), m.bars(), {}, std::vector<std::uint8_t>(12, 0));
+  VectorX prescribed = VectorX::Zero(12);
+  prescribed[kTopZ] = -1.0;
+  EXPECT_THROW(solvers::solve_displacement_control(loose, prescribed, 5), std::invalid_argument);
+}
