@@ -8,7 +8,9 @@ never call ``plt.show``.
 
 from __future__ import annotations
 
+import matplotlib.pyplot as plt
 import numpy as np
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from kresling.geometry import Design, state_index
 
@@ -29,9 +31,6 @@ def plot_cell(design: Design, state, ax=None, *, color="tab:blue", alpha=0.35):
     -------
     Axes3D
     """
-    import matplotlib.pyplot as plt
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
-
     if ax is None:
         ax = plt.figure(figsize=(4.5, 4.5)).add_subplot(projection="3d")
     bottom, top = design.vertices(state)
@@ -77,8 +76,6 @@ def plot_kinematic_path(design: Design, ax=None, samples: int = 200):
     matplotlib.axes.Axes
         The axes of L and m; Psi is on a twin axis (``ax.right_ax``).
     """
-    import matplotlib.pyplot as plt
-
     if ax is None:
         ax = plt.figure(figsize=(6, 3.5)).add_subplot()
     alpha = np.linspace(design.alpha_e, design.alpha0, samples)

@@ -2,11 +2,12 @@
 snap-through force path (figure 3.16).
 
 Functions draw into given Matplotlib axes (or a new figure) and return them; they never call
-``plt.show``. Matplotlib is imported lazily.
+``plt.show``.
 """
 
 from __future__ import annotations
 
+import matplotlib.pyplot as plt
 import numpy as np
 
 from kresling.plots import label_moment_angle_axes
@@ -21,16 +22,12 @@ _LABELS = {"extended": "state (1), extended", "contracted": "state (0), contract
 def _axes(ax, size=(5.5, 4.0)):
     if ax is not None:
         return ax
-    import matplotlib.pyplot as plt
-
     return plt.figure(figsize=size, layout="constrained").add_subplot()
 
 
 def _axes_pair(axes, size=(9.5, 3.8)):
     if axes is not None:
         return axes
-    import matplotlib.pyplot as plt
-
     return plt.figure(figsize=size, layout="constrained").subplots(1, 2)
 
 

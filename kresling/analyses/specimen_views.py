@@ -25,7 +25,9 @@ from __future__ import annotations
 
 import logging
 
+import matplotlib.pyplot as plt
 import numpy as np
+from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
 from kresling.io import fold_document, write_fold_document
 
@@ -164,9 +166,6 @@ def plot_specimen(specimen, displacement=None, *, scale: float = 1.0, ax=None,
     -------
     Axes3D
     """
-    import matplotlib.pyplot as plt
-    from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
-
     if ax is None:
         ax = plt.figure(figsize=(5.0, 6.0), layout="constrained").add_subplot(projection="3d")
     X = specimen.model.nodes

@@ -16,7 +16,7 @@ logger = logging.getLogger(__name__)
 
 def _ezdxf():
     try:
-        import ezdxf
+        import ezdxf  # here, not at the top: an optional extra, needed only to write DXF
     except ImportError as error:
         raise ImportError("writing DXF needs ezdxf: pip install 'kresling[fabrication]'") from error
     return ezdxf

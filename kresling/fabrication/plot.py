@@ -1,12 +1,15 @@
 """Figures of the fabrication data: a cut sheet, and a crease pattern folded onto a state.
 
 Functions draw into a given Matplotlib axes (or a new figure) and return the axes; they
-never call ``plt.show``. Matplotlib is imported lazily.
+never call ``plt.show``.
 """
 
 from __future__ import annotations
 
+import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.ticker import MaxNLocator
+from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
 from kresling.fabrication.layers import CutSheet
 from kresling.fabrication.pattern import CreasePattern
@@ -35,8 +38,6 @@ def plot_sheet(sheet: CutSheet, ax=None, *, linewidth: float = 0.8):
     -------
     matplotlib.axes.Axes
     """
-    import matplotlib.pyplot as plt
-
     if ax is None:
         ax = plt.figure(figsize=(7, 5)).add_subplot()
     for layer in sheet.layers:
@@ -67,10 +68,6 @@ def plot_folded(pattern: CreasePattern, state, ax=None, *, alpha: float = 0.3):
     -------
     Axes3D
     """
-    import matplotlib.pyplot as plt
-    from matplotlib.ticker import MaxNLocator
-    from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
-
     if ax is None:
         ax = plt.figure(figsize=(4.5, 4.5)).add_subplot(projection="3d")
     xyz = pattern.folded(state)

@@ -102,7 +102,7 @@ def render_png(svg_text: str, path, *, dpi: float = 96.0) -> Path:
         If cairosvg (the ``fabrication`` extra) is not installed.
     """
     try:
-        import cairosvg
+        import cairosvg  # here, not at the top: an optional extra, needed only for PNG
     except (ImportError, OSError) as error:  # cairocffi raises OSError when libcairo is missing
         raise ImportError("rendering a PNG needs cairosvg and the cairo library: "
                           "pip install 'kresling[fabrication]' (and apt-get install libcairo2)"

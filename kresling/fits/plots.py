@@ -9,6 +9,7 @@ analysis) or a single K_B (N*m/rad), drawn as the line M = K_B delta.
 
 from __future__ import annotations
 
+import matplotlib.pyplot as plt
 import numpy as np
 
 from kresling.fits.bending import STATES, BendingStiffness, mean_curve, state_name
@@ -25,8 +26,6 @@ _LABELS = {"extended": "state (1), extended", "contracted": "state (0), contract
 def _new_axes(ax, size):
     if ax is not None:
         return ax
-    import matplotlib.pyplot as plt
-
     return plt.figure(figsize=size).add_subplot()
 
 

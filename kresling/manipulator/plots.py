@@ -3,11 +3,12 @@ against measured markers (4.13), the error per step (4.14) and normalised (4.15)
 workspace maps.
 
 Functions draw into a given Matplotlib axes (or a new figure) and return the axes or the
-figure; they never call ``plt.show``. Matplotlib is imported lazily.
+figure; they never call ``plt.show``.
 """
 
 from __future__ import annotations
 
+import matplotlib.pyplot as plt
 import numpy as np
 
 from kresling.manipulator.forward import forward_kinematics, to_plot_plane
@@ -20,8 +21,6 @@ __all__ = ["plot_configurations", "plot_marker_comparison", "plot_marker_errors"
 
 
 def _grid(count: int, width: float = 3.0, height: float = 3.4):
-    import matplotlib.pyplot as plt
-
     columns = min(count, 4)
     rows = -(-count // columns)
     fig, axes = plt.subplots(rows, columns, figsize=(width * columns, height * rows),
@@ -39,8 +38,6 @@ def plot_arm(model: Manipulator, configuration, tendon_lengths=None, ax=None, *,
     -------
     matplotlib.axes.Axes
     """
-    import matplotlib.pyplot as plt
-
     ax = plt.figure(figsize=(3.5, 4)).gca() if ax is None else ax
     state = forward_kinematics(model, configuration, tendon_lengths)
     backbone = to_plot_plane(state.backbone())
@@ -135,8 +132,6 @@ def plot_workspaces(workspaces: dict, ax=None):
     -------
     matplotlib.axes.Axes
     """
-    import matplotlib.pyplot as plt
-
     ax = plt.figure(figsize=(5, 5.5), layout="constrained").gca() if ax is None else ax
     for i, (name, space) in enumerate(workspaces.items()):
         points = to_plot_plane(space.points)

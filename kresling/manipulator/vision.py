@@ -31,7 +31,7 @@ logger = logging.getLogger(__name__)
 
 def _cv2():
     try:
-        import cv2
+        import cv2  # here, not at the top: an optional extra, needed only to read photos
     except ImportError as error:  # pragma: no cover - exercised only without the extra
         raise ImportError("marker extraction needs OpenCV: pip install 'kresling[vision]' "
                           "(opencv-python-headless)") from error

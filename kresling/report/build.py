@@ -19,6 +19,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from kresling import __version__
 from kresling.report.chapters import select_chapters
 from kresling.report.html_report import summary_table_html, write_html
 from kresling.report.json_report import report_document, write_json
@@ -55,8 +56,6 @@ class Report:
     @property
     def version(self) -> str:
         """Version of kresling that made the report."""
-        from kresling import __version__
-
         return __version__
 
     @property

@@ -10,6 +10,7 @@ those on a table, so the report and the tests judge them the same way.
 from __future__ import annotations
 
 import numpy as np
+from scipy import stats
 
 from kresling.sweeps.table import SweepTable
 
@@ -60,8 +61,6 @@ def monotone_fraction(table: SweepTable, metric: str, axis: str, sign: int) -> f
 
 def rank_correlation(table: SweepTable, a: str, b: str, n: int) -> float:
     """Spearman rank correlation of columns ``a`` and ``b`` over the ok designs of ``n``."""
-    from scipy import stats
-
     part = table.where(n=n)
     keep = part.ok & np.isfinite(part[a]) & np.isfinite(part[b])
     return float(stats.spearmanr(part[a][keep], part[b][keep]).statistic)

@@ -101,6 +101,8 @@ class Metric:
 def make_tester(kind: str, n: int, **options):
     """``kresling.analyses.<kind>(n, **options)``, e.g. ``make_tester("BendingTester", 8,
     protocol="5mm")``: the factory of the registry's analyses."""
+    # Here, not at the top: kresling.analyses takes about a second to import, and the
+    # command line imports this module for every command ('kresling --help' stays fast).
     from kresling import analyses
 
     return getattr(analyses, kind)(n, **options)

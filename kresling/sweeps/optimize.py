@@ -21,7 +21,7 @@ import numpy as np
 from kresling._validation import as_integer
 from kresling.geometry import Design
 from kresling.sweeps.designs import THESIS_LAM, design_grid
-from kresling.sweeps.metrics import require_even_n, resolve_metrics
+from kresling.sweeps.metrics import METRICS, require_even_n, resolve_metrics
 from kresling.sweeps.sweep import sweep
 from kresling.sweeps.worker import evaluate_design, make_plan
 
@@ -99,7 +99,9 @@ def optimize_design(n, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, R=30.0,
         For an unknown metric or constraint column, empty bounds, or an odd n with a
         bending metric; also if every design of the starting grid fails.
     """
-    from scipy import optimize  # imported here: ~0.3 s, and the CLI imports this package
+    # Here, not at the top: scipy.optimize takes ~0.3 s, and the command line imports this
+    # package for every command ('kresling --help' stays fast).
+    from scipy import optimize
 
     n = as_integer("n", n, minimum=3)
     constraints = dict(constraints or {})
@@ -150,8 +152,6 @@ def optimize_design(n, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, R=30.0,
 
 def _metrics_for(columns):
     """The registered metrics that produce ``columns``."""
-    from kresling.sweeps.metrics import METRICS
-
     found = []
     for column in columns:
         owner = next((m for m in METRICS.values() if column in m.columns), None)

@@ -2,11 +2,12 @@
 maximum against n (figure 3.13), with the optimum marked.
 
 Functions draw into given Matplotlib axes (or a new figure) and return them; they never
-call ``plt.show``. Matplotlib is imported lazily.
+call ``plt.show``.
 """
 
 from __future__ import annotations
 
+import matplotlib.pyplot as plt
 import numpy as np
 
 from kresling.sweeps.metrics import METRICS
@@ -38,8 +39,6 @@ def plot_map(table: SweepTable, metric: str, n: int, ax=None, *, mark_best=True,
     matplotlib Axes
         With a colour bar; failed designs are left blank.
     """
-    import matplotlib.pyplot as plt
-
     if ax is None:
         ax = plt.figure(figsize=(4.8, 3.8), layout="constrained").add_subplot()
     Lc, lam, values = table.grid(metric, n)
@@ -68,8 +67,6 @@ def plot_maps(table: SweepTable, metric: str, ns=None):
     -------
     matplotlib Figure
     """
-    import matplotlib.pyplot as plt
-
     ns = sorted({int(n) for n in table["n"]}) if ns is None else list(ns)
     columns = min(len(ns), 2)
     rows = -(-len(ns) // columns)
@@ -90,8 +87,6 @@ def plot_ratio_maps(table: SweepTable, n: int, metrics=("kb_ratio", "psi_ratio")
     -------
     matplotlib Figure
     """
-    import matplotlib.pyplot as plt
-
     figure, axes = plt.subplots(1, len(metrics), figsize=(4.8 * len(metrics), 3.8),
                                 layout="constrained", squeeze=False)
     for k, (ax, metric) in enumerate(zip(axes.flat, metrics)):
@@ -107,8 +102,6 @@ def plot_max_by_n(table: SweepTable, metric: str = "kb_ratio", ax=None):
     -------
     matplotlib Axes
     """
-    import matplotlib.pyplot as plt
-
     if ax is None:
         ax = plt.figure(figsize=(4.8, 3.6), layout="constrained").add_subplot()
     ns = sorted({int(n) for n in table["n"]})

@@ -149,7 +149,7 @@ class SweepTable:
     def to_pandas(self):
         """A pandas DataFrame of the table (needs pandas)."""
         try:
-            import pandas as pd
+            import pandas as pd  # here, not at the top: pandas is not a dependency
         except ImportError:
             raise ImportError("SweepTable.to_pandas needs pandas: pip install pandas") from None
         return pd.DataFrame(self._columns)
