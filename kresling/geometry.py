@@ -65,7 +65,7 @@ class Design:
 
     Notes
     -----
-    Derived quantities (attributes, mm and rad), NOTES section 1:
+    Derived quantities (attributes, mm and rad), docs/thesis_equations.md, 'Geometry':
 
     ``phi = pi/n``; ``gamma = pi (n-2) / (2n)`` (eqn 2); polygon side ``P`` (eqn 1);
     traditional creases ``V`` and ``M`` (eqns 3-4); generalized creases ``Vg``, ``Mg``

@@ -1,4 +1,6 @@
-"""Print the geometry values NOTES section 1 lists beside ours, with the difference.
+"""Print reference geometry values beside ours, with the difference: Le of the optimum as
+thesis Appendix E uses it, Le of the paper specimens as the MERLIN2 reference runs give it (to
+6 decimals) and Psi of the MERLIN2 golden model.
 
 Run: ``python studies/geometry_values.py``
 """
@@ -7,7 +9,8 @@ import math
 
 from kresling import Design
 
-# (n, lam, Lc, quantity, NOTES value, absolute tolerance: half a unit of its last printed digit)
+# (n, lam, Lc, quantity, reference value, absolute tolerance: half a unit of its last printed
+# digit)
 CHECKS = [
     (10, 0.9, 15.0, "Le", 55.8194667799374, 1e-9),
     (8, 0.8, 30.0, "Le", 55.317649, 5e-7),
@@ -19,7 +22,7 @@ CHECKS = [
 
 def main() -> int:
     failures = 0
-    print(f"{'design':22s} {'quantity':9s} {'NOTES':>20s} {'kresling':>20s} {'diff':>10s}  ok")
+    print(f"{'design':22s} {'quantity':9s} {'reference':>20s} {'kresling':>20s} {'diff':>10s}  ok")
     for n, lam, Lc, key, expected, tol in CHECKS:
         value = getattr(Design(n, lam, Lc), key)
         ok = abs(value - expected) <= tol

@@ -25,7 +25,7 @@ def main(argv=None) -> int:
         print(f"  n={s.design.n:<2d}  K_ext {100 * s.variation('extended'):.4f} %  K_con "
               f"{100 * s.variation('contracted'):.4f} %  ratio {100 * s.variation():.4f} %  "
               f"(ratio {s.ratio.mean():.3f})")
-    print("\nTurning only the pin line by pi/n against the load (MODEL.md: 4-65 %)")
+    print("\nTurning only the pin line by pi/n against the load (docs/thesis_equations.md, 'Bending test': 4-65 %)")
     for s in studies:
         d = s.design
         changes = [linear_bending_stiffness(d, state, pin_offset=math.pi / d.n) /

@@ -19,7 +19,7 @@ def reference_curve(n, Lc, lam, state):
 def test_table3_against_merlin2(row):
     n, Lc, lam = int(row["n"]), float(row["Lc_mm"]), float(row["lambda"])
     result = bending_stiffness(Design(n, lam, Lc))
-    # The bar is 0.1 %; the table prints six decimals, so agreement is checked to
+    # The required agreement is 0.1 %; the table prints six decimals, so agreement is checked to
     # half a unit of the last printed digit.
     half_unit = 0.5e-6 * (1 + 1e-9)
     assert result.extended.stiffness == pytest.approx(row["Kb_ext_Nm_per_rad"], abs=half_unit)
@@ -28,7 +28,7 @@ def test_table3_against_merlin2(row):
     for state, r in (("extended", result.extended), ("contracted", result.contracted)):
         curve = reference_curve(n, Lc, lam, state)
         assert r.completed and len(r.force) == 350
-        # The whole force history, pointwise (the bar: 1e-4 relative).
+        # The whole force history, pointwise (the required agreement: 1e-4 relative).
         assert np.abs(r.force / curve["force_N"] - 1).max() <= 1e-6
         assert np.abs(r.angle - curve["angle_rad"]).max() <= 1e-12
         assert np.abs(r.moment / curve["moment_Nm"] - 1).max() <= 1e-6

@@ -35,7 +35,8 @@ def test_gap_to_the_nonlinear_test_shrinks_with_the_deflection():
 
 
 def test_pin_line_turned_against_the_load_changes_the_stiffness():
-    # MODEL.md: turning the pin line by pi/n relative to the load moves K_B by 4-65 %.
+    # Turning the pin line by pi/n relative to the load moves K_B by 4-65 % (MERLIN2 runs;
+    # docs/thesis_equations.md, 'Bending test').
     for design, low, high in ((Design(10, 0.9, 15), 0.03, 0.10), (Design(4, 0.7, 30), 0.5, 0.7)):
         for state in (0, 1):
             ratio = linear_bending_stiffness(design, state, pin_offset=math.pi / design.n) / \

@@ -1,4 +1,4 @@
-"""The snap-through test (section 3.5): MODEL.md's reference run, the definitions of the
+"""The snap-through test (section 3.5): the MERLIN2 reference run, the definitions of the
 energy barrier and of bistability, figure 3.17's trends, reuse and bad input."""
 
 import doctest
@@ -13,8 +13,8 @@ from kresling.analyses import SnapThroughTester, snap_through
 from kresling.model import SpecimenParameters
 
 
-def test_reference_run_of_model_md():
-    # MODEL.md: n=8, Lc=30, lambda=0.8 peaks at 4.34 N at 5.93 mm, then dips slightly below
+def test_merlin2_reference_run():
+    # docs/thesis_equations.md, 'Bending test' (snap-through): n=8, Lc=30, lambda=0.8 peaks at 4.34 N at 5.93 mm, then dips slightly below
     # zero. Converged (1600 steps): 4.3405 N at 5.924 mm.
     r = snap_through(Design(8, 0.8, 30))
     assert r.completed and len(r.force) == 101 and r.force[0] == 0 and r.displacement[0] == 0

@@ -1,4 +1,4 @@
-"""``kresling bend`` and ``kresling snap``: the interface the issue's checks use."""
+"""``kresling bend`` and ``kresling snap``: JSON and tables, protocols, plots and bad input."""
 
 import json
 

@@ -1,4 +1,4 @@
-"""``kresling sweep``: results.csv with the issue's columns, the optimum printed, resuming,
+"""``kresling sweep``: results.csv with its documented columns, the optimum printed, resuming,
 figures, and errors without tracebacks."""
 
 import csv

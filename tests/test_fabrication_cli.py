@@ -16,7 +16,7 @@ def run_cli(*args, cwd):
     return run_kresling("pattern", *args, cwd=cwd)
 
 
-def test_issue_command_writes_the_laminate_svg(tmp_path):
+def test_the_documented_command_writes_the_laminate_svg(tmp_path):
     result = run_cli(*DESIGN, "--process", "laminate", "-o", "cell.svg", cwd=tmp_path)
     assert result.returncode == 0, result.stderr
     assert "wrote cell.svg" in result.stdout and result.stderr == ""

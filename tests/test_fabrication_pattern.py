@@ -2,7 +2,7 @@
 every face on folding, fold directions, and the tabs on the base polygon.
 
 Tolerances: the pattern is built from closed forms in double precision, so lengths agree to a
-few ulps of the cell's size (~1e-14 mm at R = 30 mm); 1e-9 mm is the issue's requirement.
+few ulps of the cell's size (~1e-14 mm at R = 30 mm); 1e-9 mm is the required accuracy.
 """
 
 import itertools

@@ -17,7 +17,8 @@ def test_reproduce_writes_the_cut_files_and_passes(tmp_path):
     assert {"valley crease length, flat pattern", "facet angle P-Vg, flat pattern",
             "strip closure gap, extended", "face isometry, contracted",
             "laminate valley gap width"} <= names
-    # Known answers: the tab crease turns by pi - Psi; n = 10 optimum (NOTES section 1).
+    # Known answers: the tab crease turns by pi - Psi; n = 10 optimum (Psi_ext of
+    # Design(10, 0.9, 15)).
     tab = next(c for c in section.checks if c.name == "tab crease fold angle, extended")
     assert tab.reference == pytest.approx(math.pi - 1.513498162614344, abs=1e-12)
     for name in ("cell_n10_laminate", "cell_n10_paper"):

@@ -46,7 +46,7 @@ def test_offset_leaves_too_few_points():
     assert "contracted trial" in str(error.value)
 
 
-# Tolerance 2 %: the issue's; the noise model's actual errors are ~0.2 %.
+# Tolerance 2 %, the required accuracy; the noise model's actual errors are ~0.2 %.
 @pytest.mark.parametrize("case", [
     dict(K=3.50, state="extended", module_length=110.6),                      # no offset
     dict(K=0.80, state="contracted", module_length=60.0),                      # past 0.03

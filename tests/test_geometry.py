@@ -1,4 +1,5 @@
-"""Known values of the generalized Kresling geometry (NOTES section 1, MERLIN2 golden model)."""
+"""Known values of the generalized Kresling geometry (thesis Appendix E, the MERLIN2 reference
+runs and golden model)."""
 
 import math
 import pickle
@@ -20,7 +21,7 @@ def test_extended_height_of_the_optimum():
     d = Design(n=10, lam=0.9, Lc=15, R=30)
     assert d.Le == pytest.approx(LE_THESIS, abs=1e-9)
     assert d.Le == pytest.approx(LE_EXACT, abs=1e-13)
-    # The extended module (two cells) of eqn 30 and of issue 4's check.
+    # The extended module (two cells) of eqn 30.
     assert 2 * d.Le == pytest.approx(111.639, abs=5e-4)
 
 
@@ -28,8 +29,8 @@ def test_extended_height_of_the_optimum():
     "n, lam, Lc, Le",
     [(8, 0.8, 30, 55.317649), (8, 0.8, 15, 48.836895), (4, 0.7, 30, 41.068587)],
 )
-def test_extended_heights_listed_in_notes(n, lam, Lc, Le):
-    # NOTES prints 6 decimals; the MERLIN2 reference table prints 8 (below).
+def test_extended_heights_to_six_decimals(n, lam, Lc, Le):
+    # The MERLIN2 reference runs' Le to 6 decimals; the table prints 8 (below).
     assert Design(n, lam, Lc).Le == pytest.approx(Le, abs=5e-7)
 
 

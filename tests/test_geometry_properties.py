@@ -46,7 +46,7 @@ def test_derived_quantities_are_consistent(d):
     assert d.Le >= d.Lc
     assert 0.0 < d.alpha_e <= d.alpha0 < math.pi  # equal in the limit lam -> 0.5
     assert abs(math.hypot(d.V, d.Lc) - d.Vg) <= tol
-    # Valley bar = chord between bottom i and top i+1 at twist alpha0 (NOTES node convention).
+    # Valley bar = chord between bottom i and top i+1 at twist alpha0 (docs/thesis_equations.md, 'Geometry').
     assert abs(2 * d.R * math.sin((d.alpha0 + 2 * d.phi) / 2) - d.V) <= tol
     assert abs(2 * d.R * math.sin(d.alpha0 / 2) - d.M) <= tol
     # Flat facet: law of cosines with theta_g closes the triangle (P, Vg, Mg).

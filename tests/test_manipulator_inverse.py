@@ -15,7 +15,7 @@ def test_fk_sampled_targets_are_reached_in_every_configuration():
         targets = np.array([forward_kinematics(arm, configuration, l).tip for l in lengths])
         solved = solve_configuration(arm, configuration, targets)
         assert solved["converged"].all(), configuration
-        # Round trip through forward kinematics, 1e-6 mm (the bound).
+        # Round trip through forward kinematics, 1e-6 mm (the required bound).
         reached = np.array([forward_kinematics(arm, configuration, l).tip
                             for l in solved["tendon_lengths"]])
         assert np.abs(reached - targets).max() < 1e-6

@@ -20,7 +20,7 @@ L = 2 * 55.8194667799374  # eqn 30's L: a module is two cells of height Le
 @pytest.mark.parametrize("N", [1, 2, 6])
 @pytest.mark.parametrize("phi", [0.35, 2.1, -2.8, -1.0])  # one per quadrant
 def test_arc_round_trip_in_every_quadrant(N, phi):
-    # 1e-9 (the issue's bound): the map is well conditioned for these bends.
+    # 1e-9 (the required bound): the map is well conditioned for these bends.
     arcs = np.array([[31.0, kappa, phi] for kappa in (1e-6, 3e-3, 1.8e-2)])
     back = arc_from_tendons(tendons_from_arc(arcs, 32.0, N), 32.0, N)
     np.testing.assert_allclose(back[:, :2], arcs[:, :2], rtol=0, atol=1e-9)

@@ -37,7 +37,7 @@ def test_markers_recovered_to_a_tenth_of_a_millimetre(camera, config):
     truth = pseudo_linkage(Manipulator(), config, [10]).plot_markers[0] + [150.0, 0.0]
     image = render_plane(homography, SIZE, markers=truth, edge_width=0.8)
     found = extract_markers(image, calibration, expected=4)
-    assert np.abs(found - truth).max() < 0.1  # mm, the bound (measured: <= 0.053)
+    assert np.abs(found - truth).max() < 0.1  # mm, the required bound (measured: <= 0.053)
 
 
 def test_mask_and_blobs():

@@ -1,7 +1,7 @@
 """Element-by-element and path agreement with MERLIN2's golden model.
 
 MERLIN2 writes its numbers in full precision, so agreement is limited only by rounding in
-the two codes' different operation orders: 1e-8 relative (the issue's bar) leaves orders of
+the two codes' different operation orders: 1e-8 relative (the required agreement) leaves orders of
 magnitude of headroom over what we measure (IF <= 3e-9, K <= 1e-15 relative to the largest
 entry).
 """

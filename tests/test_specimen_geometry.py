@@ -1,4 +1,4 @@
-"""The built specimens' geometry (issue 4): every bar has its design length in both states,
+"""The built specimens' geometry: every bar has its design length in both states,
 both states are stress-free, and the optimum's extended module is 111.639 mm."""
 
 import numpy as np

@@ -12,7 +12,7 @@ from kresling import Design
 from kresling.analyses import bending_stiffness, linear_bending_stiffness, snap_through
 from kresling.sweeps import METRICS, Analysis, Metric, design_grid, sweep
 
-GRID = design_grid(size=5)  # 5 x 5 x 4: the exactness grid
+GRID = design_grid(size=5)  # 5 x 5 x 4: the grid of the exactness checks
 VALUE_COLUMNS = ("kb_ratio", "kb_ext", "kb_con", "psi_ratio", "psi_ext", "psi_con")
 
 

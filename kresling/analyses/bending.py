@@ -1,4 +1,5 @@
-"""The three-point bending test (thesis section 3.4, Appendix B; MODEL.md).
+"""The three-point bending test (thesis section 3.4, Appendix B; docs/thesis_equations.md,
+'Bending test').
 
 Two modules (four cells, chirality + - + -) in one state; nodes 0, n/2 and the centre of
 the end polygons pinned; the middle polygon driven transversely. From the summed reaction
@@ -25,7 +26,8 @@ __all__ = ["PROTOCOLS", "BendingResult", "BendingComparison", "BendingTester", "
            "bending_stiffness"]
 
 #: The thesis's two loading protocols: Table 3 (5 mm in 350 steps) and the parametric
-#: study (0.001 rad, 10 steps: MODEL.md's choice; the thesis gives no step count).
+#: study (0.001 rad, 10 steps: our choice, docs/thesis_equations.md, 'Bending test'; the
+#: thesis gives no step count).
 PROTOCOLS = {
     "5mm": {"deflection": 5.0, "deflection_angle": 0.0, "steps": 350},
     "0.001rad": {"deflection": 0.0, "deflection_angle": 0.001, "steps": 10},

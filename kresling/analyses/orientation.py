@@ -9,7 +9,8 @@ The specimen is symmetric under a turn by 2 pi / n (every level is a regular n-g
 K_B(beta + pi) = K_B(beta), so one period is ``0 <= beta <= 2 pi / n`` (the thesis plotted
 ``[0, pi/n]``). Over it, K_B varies by under 0.25 % for the thesis's designs (n = 4 the
 most, n = 10 about 0.01 %): axisymmetric, as the thesis reports. What does matter is the pin
-line's angle *relative to* the load (``pin_offset``; MODEL.md: 4-65 % at pi/n).
+line's angle *relative to* the load (``pin_offset``: 4-65 % at pi/n; docs/thesis_equations.md,
+'Bending test').
 """
 
 from __future__ import annotations

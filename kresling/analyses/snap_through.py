@@ -2,7 +2,7 @@
 
 The thesis drives one cell from its extended to its contracted height and takes the first
 local maximum of the force as the measure of bistability; it gives no more of the protocol.
-Ours (MODEL.md's reading, in C++):
+Ours (docs/thesis_equations.md, 'Bending test', snap-through; in C++):
 
 - one cell, built stress-free in its extended state (its chirality does not matter: the
   mirror image responds identically);
@@ -24,10 +24,10 @@ polygon level; released, it may tilt: the optimum's level contracted equilibrium
 saddle, and it comes to rest tilted by about 16 degrees.
 
 The model is stress-free only in its extended state, so the force at the contracted height
-is not zero and the second stable state lies above ``Lc``. The thesis says
-its figure 3.16 curve (n = 8, Lc = 30, lambda = 0.8) stays above zero; ours dips to -0.11 N
-there (MODEL.md's reference run: 4.34 N at 5.93 mm, then slightly below zero): compare the
-trends of figure 3.17, not the sign of that dip. Those trends hold except near the
+is not zero and the second stable state lies above ``Lc``. The thesis says its figure 3.16
+curve (n = 8, Lc = 30, lambda = 0.8) stays above zero; ours dips to -0.11 N there (a MERLIN2
+run of the same reading: 4.34 N at 5.93 mm, then slightly below zero): compare the trends of
+figure 3.17, not the sign of that dip. Those trends hold except near the
 monostable corner (lambda below about 0.8 with Lc above about 45 mm for n = 8 and 10), where
 the first maximum flattens, rises again slightly with Lc and then disappears (NaN).
 """
@@ -202,7 +202,7 @@ def snap_through(design: Design, *, steps=DEFAULT_STEPS, parameters=None,
     --------
     >>> from kresling import Design
     >>> r = snap_through(Design(8, 0.8, 30))
-    >>> round(r.snap_force, 2), round(r.snap_displacement, 2)   # N, mm; MODEL.md: 4.34 at 5.93
+    >>> round(r.snap_force, 2), round(r.snap_displacement, 2)   # N, mm; MERLIN2: 4.34 at 5.93
     (4.34, 5.92)
     >>> r.bistable, round(r.stable_height, 1)
     (True, 33.9)

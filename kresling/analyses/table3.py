@@ -110,9 +110,10 @@ def topology_effect(designs=TABLE3_DESIGNS, protocol: str = "5mm") -> list:
     triangles sharing it) moves K_B.
 
     Only the intermediate polygons' edges are shared by three triangles, so only stacks are
-    affected (MODEL.md: about 0.5 %, 8 % for n = 10 contracted; a single cell, as in the
-    snap-through test, not at all). The runs use MERLIN2's Newton sequence (each increment
-    starts from the last equilibrium), as MODEL.md's numbers came from MERLIN2: the
+    affected (docs/model.md, 'Topology'; MERLIN2 runs gave about 0.5 %, 8 % for n = 10
+    contracted; a single cell, as in the snap-through test, not at all). The runs use
+    MERLIN2's Newton sequence (each increment starts from the last equilibrium), as those
+    numbers came from MERLIN2: the
     de-duplicated specimen is softer, and the n = 10 contracted one loses stability near
     4.9 mm, where an extrapolated start would carry the path on along an unstable branch.
 

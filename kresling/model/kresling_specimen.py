@@ -1,7 +1,7 @@
 """Bar-and-hinge models of generalized Kresling stacks (the thesis's specimens).
 
-The C++ core builds the nodes, panels and elements exactly as MODEL.md reconstructs the
-thesis's generator; this module is its Python face.
+The C++ core builds the nodes, panels and elements exactly as docs/thesis_equations.md
+('Bending test') reconstructs the thesis's generator; this module is its Python face.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""From panels to triangles, bars and hinges (MODEL.md's topology rules)."""
+"""From panels to triangles, bars and hinges (docs/model.md, 'Topology')."""
 
 from __future__ import annotations
 
