@@ -13,7 +13,7 @@ Examples
 >>> import kresling
 >>> d = kresling.Design(n=10, lam=0.9, Lc=15.0, R=30.0)
 >>> round(d.Le, 10)
-55.8194667799
+55.8194667798
 """
 
 import logging

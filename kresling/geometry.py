@@ -77,7 +77,7 @@ class Design:
     --------
     >>> d = Design(n=10, lam=0.9, Lc=15.0)
     >>> round(d.Le, 10), round(2 * d.Le, 3)
-    (55.8194667799, 111.639)
+    (55.8194667798, 111.639)
     >>> bool(abs(d.height_at(d.alpha_e) - d.Le) < 1e-12)
     True
     """

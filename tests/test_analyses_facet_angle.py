@@ -1,8 +1,5 @@
 """The facet angle Psi read from the built model (section 3.4, figure 3.8)."""
 
-import doctest
-import importlib
-
 import numpy as np
 import pytest
 
@@ -33,7 +30,3 @@ def test_section_3_4_trends_of_the_psi_ratio():
         by_lam = [facet_angle_ratio(Design(n, lam, 30)) for lam in np.linspace(0.7, 0.9, 5)]
         by_Lc = [facet_angle_ratio(Design(n, 0.8, Lc)) for Lc in np.linspace(15, 60, 5)]
         assert np.all(np.diff(by_lam) > 0) and np.all(np.diff(by_Lc) < 0)
-
-
-def test_docstring_examples():
-    assert doctest.testmod(importlib.import_module("kresling.analyses.facet_angle")).failed == 0

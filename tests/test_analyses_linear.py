@@ -1,7 +1,5 @@
 """The linearised bending stiffness (Appendix A's model) against the nonlinear test."""
 
-import doctest
-import importlib
 import math
 
 import pytest
@@ -61,7 +59,3 @@ def test_scales_with_kf():
 def test_bad_input(call, message):
     with pytest.raises(ValueError, match=message):
         call()
-
-
-def test_docstring_examples():
-    assert doctest.testmod(importlib.import_module("kresling.analyses.linear_bending")).failed == 0

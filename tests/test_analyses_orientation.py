@@ -1,7 +1,5 @@
 """Appendix A's orientation study with the linearised model: K_B is axisymmetric."""
 
-import doctest
-import importlib
 import math
 
 import numpy as np
@@ -59,7 +57,3 @@ def test_plot(tmp_path):
 def test_bad_quantity():
     with pytest.raises(ValueError, match="quantity = 'slope' is invalid"):
         orientation_study(Design(4, 0.8, 30), [0.0]).variation("slope")
-
-
-def test_docstring_examples():
-    assert doctest.testmod(importlib.import_module("kresling.analyses.orientation")).failed == 0

@@ -1,8 +1,6 @@
 """The snap-through test (section 3.5): the MERLIN2 reference run, the definitions of the
 energy barrier and of bistability, figure 3.17's trends, reuse and bad input."""
 
-import doctest
-import importlib
 import math
 
 import numpy as np
@@ -120,9 +118,3 @@ def test_odd_n_runs():
 def test_bad_input(call, message):
     with pytest.raises(ValueError, match=message):
         call()
-
-
-def test_docstring_examples():
-    # The module, not the function of the same name that kresling.analyses exports.
-    module = importlib.import_module("kresling.analyses.snap_through")
-    assert doctest.testmod(module).failed == 0

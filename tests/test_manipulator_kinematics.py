@@ -1,13 +1,11 @@
 """Constant-curvature map and forward kinematics through the Python API: round trips, the
 thesis's protocol and Appendix E, frame conventions, and bad input."""
 
-import doctest
 import math
 
 import numpy as np
 import pytest
 
-import kresling.manipulator as km
 from kresling import Design
 from kresling.manipulator import (Manipulator, arc_from_tendons, forward_kinematics,
                                   protocol_tendon_lengths, pseudo_linkage, tendons_from_arc)
@@ -109,14 +107,3 @@ def test_protocol_tendon_lengths():
 def test_bad_input_is_a_value_error(call, message):
     with pytest.raises(ValueError, match=message):
         call()
-
-
-@pytest.mark.parametrize("module", ["model", "constant_curvature", "forward", "motors", "inverse"])
-def test_docstring_examples(module):
-    module = __import__(f"kresling.manipulator.{module}", fromlist=["_"])
-    result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE)
-    assert result.failed == 0 and result.attempted > 0
-
-
-def test_package_docstring_example():
-    assert doctest.testmod(km).failed == 0

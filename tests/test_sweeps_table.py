@@ -73,13 +73,3 @@ def test_figures_draw_and_mark_the_best():
     with pytest.raises(ValueError, match="at least 2 x 2"):
         plot_map(table.where(lam=0.9), "kb_ratio", 4)
     matplotlib.pyplot.close("all")
-
-
-@pytest.mark.parametrize("module", ["kresling.sweeps", "kresling.sweeps.designs",
-                                    "kresling.sweeps.table", "kresling.sweeps.sweep"])
-def test_docstring_examples(module):
-    import doctest
-    import importlib
-
-    result = doctest.testmod(importlib.import_module(module))
-    assert result.attempted > 0 and result.failed == 0
