@@ -3,10 +3,12 @@
 The package reproduces, as software, the thesis *Bistable generalized Kresling origami as a
 stiffness-switching joint for a tendon-driven soft manipulator*. Data flows one way::
 
-    geometry -> model -> elements -> assembly -> solvers -> analyses
+    geometry -> model -> elements -> assembly -> solvers -> analyses -> sweeps
 
-with kinematics, experimental fits and fabrication beside that line. Units are mm, N and
-rad throughout unless a name says otherwise (bending stiffness is reported in N*m/rad).
+with the manipulator's kinematics, experimental fits and fabrication as leaves beside that
+line, and the reproduction report (``kresling.report``) on top of everything: the layers and
+what each may import are in docs/architecture.md. Units are mm, N and rad throughout unless
+a name says otherwise (bending stiffness is reported in N*m/rad).
 
 Examples
 --------

@@ -1,0 +1,205 @@
+"""Imports go one way: every import in the package is checked against the layer table of
+docs/architecture.md.
+
+Every module of ``kresling`` is parsed with ``ast``; every ``import x`` and ``from x import
+y`` in it, at the top of the module or inside a function or class (``if TYPE_CHECKING`` too),
+absolute or relative, is resolved to the layer it reaches. A layer is the top-level module or
+subpackage of ``kresling`` a file belongs to (``kresling/analyses/bending.py`` is in
+``analyses``, ``kresling/geometry.py`` in ``geometry``, ``kresling/__init__.py`` in the front
+page ``kresling``).
+"""
+
+import ast
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import kresling
+
+PACKAGE = Path(kresling.__file__).resolve().parent
+ARCHITECTURE = PACKAGE.parent / "docs" / "architecture.md"
+
+# The layer table of docs/architecture.md, the one place it is encoded: each layer and the
+# other layers its modules may import (a module may always import its own layer). Change the
+# two together.
+FOUNDATION = {"_core", "_validation", "data", "laws", "io"}
+ON_MODEL = FOUNDATION | {"geometry", "model", "kresling"}
+ON_SOLVERS = ON_MODEL | {"plots", "elements", "assembly", "solvers"}
+LEAF = FOUNDATION | {"geometry", "plots", "model", "kresling"}
+LAYERS = {
+    "_core": set(),
+    "_validation": set(),
+    "data": set(),
+    "laws": set(),
+    "io": {"_validation"},
+    "geometry": FOUNDATION,
+    "plots": FOUNDATION | {"geometry"},
+    "model": FOUNDATION | {"geometry"},
+    "kresling": {"geometry", "model"},
+    "elements": ON_MODEL,
+    "assembly": ON_MODEL | {"elements"},
+    "solvers": ON_MODEL | {"elements", "assembly"},
+    "analyses": ON_SOLVERS,
+    "sweeps": ON_SOLVERS | {"analyses"},
+    "view": ON_SOLVERS | {"analyses", "sweeps"},
+    "simulate": ON_SOLVERS | {"analyses", "view"},
+    "fits": LEAF,
+    "fabrication": LEAF,
+    "manipulator": FOUNDATION | {"geometry", "plots"},
+    "report": None,  # every layer but cli and __main__ (filled in below)
+    "cli": None,  # every layer but __main__
+    "__main__": {"cli"},
+}
+LAYERS["report"] = set(LAYERS) - {"report", "cli", "__main__"}
+LAYERS["cli"] = set(LAYERS) - {"cli", "__main__"}
+
+#: Layers that may import kresling.report: the report itself and the command line on top.
+ABOVE_REPORT = {"report", "cli"}
+
+
+def layer_of(path: Path) -> str:
+    """The layer of a file of the package."""
+    parts = path.relative_to(PACKAGE).parts
+    if parts == ("__init__.py",):
+        return "kresling"
+    return parts[0].removesuffix(".py")
+
+
+def _is_module(name: str) -> bool:
+    """Whether ``kresling.<name>`` is a module or subpackage (not an attribute of the front
+    page such as ``__version__`` or ``Design``)."""
+    return (name in LAYERS or (PACKAGE / name).is_dir() or (PACKAGE / f"{name}.py").is_file()
+            or any(PACKAGE.glob(f"{name}.*.so")) or any(PACKAGE.glob(f"{name}.*.pyd")))
+
+
+def _package_of(path: Path) -> list:
+    """The dotted parts of the package a file's relative imports start from: the package of
+    a module, or the package itself for an ``__init__.py``."""
+    return ["kresling", *path.relative_to(PACKAGE).with_suffix("").parts][:-1]
+
+
+def imports(path: Path):
+    """``(line, dotted name imported, layer reached)`` for every import of the package in a
+    file; the layer is None for imports from outside the package."""
+    tree = ast.parse(path.read_text(encoding="utf-8"), filename=str(path))
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                yield node.lineno, alias.name, _layer_of_name(alias.name.split("."))
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = _package_of(path)
+                base = base[:len(base) - (node.level - 1)]
+                module = base + (node.module.split(".") if node.module else [])
+            else:
+                module = node.module.split(".")
+            for alias in node.names:
+                if module == ["kresling"] and _is_module(alias.name):
+                    target = ["kresling", alias.name]
+                else:
+                    target = module
+                yield node.lineno, ".".join(module + [alias.name]), _layer_of_name(target)
+
+
+def _layer_of_name(parts: list):
+    if parts[0] != "kresling":
+        return None
+    return "kresling" if len(parts) == 1 else parts[1]
+
+
+def files():
+    return sorted(p for p in PACKAGE.rglob("*.py") if "__pycache__" not in p.parts)
+
+
+def violations():
+    """One message per import the table does not allow, and per unknown layer."""
+    found = []
+    for path in files():
+        where = path.relative_to(PACKAGE.parent)
+        layer = layer_of(path)
+        if layer not in LAYERS:
+            found.append(f"{where}: top-level module {layer!r} is not in the layer table: add "
+                         f"it to docs/architecture.md and to LAYERS in tests/test_architecture.py")
+            continue
+        for line, name, target in imports(path):
+            if target is None or target == layer:
+                continue
+            if target not in LAYERS:
+                found.append(f"{where}:{line}: imports {name}, of {target!r}, which is not in "
+                             f"the layer table: add it to docs/architecture.md and to LAYERS "
+                             f"in tests/test_architecture.py")
+            elif target not in LAYERS[layer]:
+                found.append(f"{where}:{line}: {layer} may not import {target} ({name}); "
+                             f"see docs/architecture.md")
+    return found
+
+
+def test_every_import_follows_the_layer_table():
+    found = violations()
+    assert not found, "imports against docs/architecture.md:\n" + "\n".join(found)
+
+
+def test_no_library_package_imports_the_report():
+    found = [f"{path.relative_to(PACKAGE.parent)}:{line}: imports {name}"
+             for path in files() if layer_of(path) not in ABOVE_REPORT
+             for line, name, target in imports(path) if target == "report"]
+    assert not found, "the report is the top layer; the library may not import it:\n" + \
+        "\n".join(found)
+
+
+def test_importing_the_library_does_not_load_the_report():
+    # Every module outside the report and the command line, imported in a fresh interpreter.
+    names = sorted(".".join(["kresling", *p.relative_to(PACKAGE).with_suffix("").parts])
+                   .removesuffix(".__init__") for p in files()
+                   if layer_of(p) not in ABOVE_REPORT | {"__main__"})
+    code = ("import importlib, sys\n"
+            f"for name in {names!r}:\n"
+            "    importlib.import_module(name)\n"
+            "print(sorted(m for m in sys.modules if m.startswith('kresling.report')))\n")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                            timeout=300)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == "[]"
+
+
+def test_the_table_is_the_one_in_docs():
+    text = ARCHITECTURE.read_text(encoding="utf-8")
+    assert "tests/test_architecture.py" in text
+    missing = [layer for layer in LAYERS if f"| `{layer}` |" not in text]
+    assert not missing, f"layers of LAYERS missing from the table of docs/architecture.md: {missing}"
+    assert all(allowed <= set(LAYERS) for allowed in LAYERS.values())
+
+
+@pytest.mark.parametrize("source, message", [
+    ("import kresling.report\n", "analyses may not import report (kresling.report)"),
+    ("from kresling.fits.plots import label_moment_angle_axes\n",
+     "analyses may not import fits (kresling.fits.plots.label_moment_angle_axes)"),
+    ("def f():\n    from ..fabrication import fold\n",
+     "analyses may not import fabrication (kresling.fabrication.fold)"),
+    ("from kresling import report\n", "analyses may not import report (kresling.report)"),
+    ("from .. import report\n", "analyses may not import report (kresling.report)"),
+    ("from . import bending\nfrom .plots import plot_snap_through\nfrom .. import sweeps\n",
+     "analyses may not import sweeps (kresling.sweeps)"),
+    ("import kresling.newthing\n", "'newthing', which is not in the layer table"),
+])
+def test_the_check_sees_every_kind_of_import(tmp_path, monkeypatch, source, message):
+    # A module planted in analyses: absolute, from-, function-level and relative imports.
+    fake = PACKAGE / "analyses" / "_architecture_probe.py"
+    monkeypatch.setattr(sys.modules[__name__], "files", lambda: [fake])
+    original = Path.read_text
+    monkeypatch.setattr(Path, "read_text", lambda self, *a, **k: source if self == fake
+                        else original(self, *a, **k))
+    found = violations()
+    assert len(found) == 1 and message in found[0]
+    assert found[0].startswith("kresling/analyses/_architecture_probe.py:")
+
+
+def test_an_unknown_top_level_module_is_reported(monkeypatch):
+    fake = PACKAGE / "newthing.py"
+    monkeypatch.setattr(sys.modules[__name__], "files", lambda: [fake])
+    found = violations()
+    assert found == ["kresling/newthing.py: top-level module 'newthing' is not in the layer "
+                     "table: add it to docs/architecture.md and to LAYERS in "
+                     "tests/test_architecture.py"]
