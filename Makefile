@@ -8,7 +8,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 BUILD_DIR := build/py
 # libcairo2: cairosvg (the fabrication extra) renders the cut files' PNG previews with it.
-APT_PACKAGES := g++ make libeigen3-dev libsuitesparse-dev libgtest-dev libcairo2
+APT_PACKAGES := g++ make libeigen3-dev libsuitesparse-dev liblapack-dev libgtest-dev libcairo2
 # Only for `make test`: the report is checked in a real browser (headless Chromium; about
 # 20 s and 500 MB to install).
 APT_TEST_PACKAGES := chromium

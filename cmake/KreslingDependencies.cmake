@@ -34,6 +34,13 @@ add_library(kresling_suitesparse INTERFACE)
 target_include_directories(kresling_suitesparse SYSTEM INTERFACE ${SUITESPARSE_INCLUDE_DIR})
 target_link_libraries(kresling_suitesparse INTERFACE ${SUITESPARSE_LIBRARIES})
 
+# LAPACK: the N5B8 centre of a quad is a 3 x 2 least-squares solve, done with LAPACK's
+# dgelsd as GNU Octave does, so that models agree with MERLIN2's to the last bit.
+find_package(LAPACK QUIET)
+if(NOT LAPACK_FOUND)
+  kresling_missing("LAPACK" "liblapack-dev")
+endif()
+
 find_package(Threads REQUIRED)
 
 if(KRESLING_BUILD_TESTS)

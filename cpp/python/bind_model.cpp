@@ -5,6 +5,7 @@
 
 #include "bindings.hpp"
 #include "kresling/model/calibration.hpp"
+#include "kresling/model/merlin2_rest_angle.hpp"
 #include "kresling/model/model.hpp"
 #include "kresling/model/panel_centre.hpp"
 #include "kresling/model/panel_elements.hpp"
@@ -210,6 +211,12 @@ void bind_model(py::module_& m) {
 
   m.def("calibrate_sheet", &model::calibrate_sheet, py::arg("elements"), py::arg("panels"),
         py::arg("material"), py::arg("merlin2_compat"));
+  m.def(
+      "merlin2_rest_angles",
+      [](const Eigen::Ref<const NodeMatrix>& nodes, const std::vector<std::array<Index, 4>>& hinges) {
+        return vector_array(model::merlin2_rest_angles(NodeMatrix(nodes), hinges));
+      },
+      py::arg("nodes"), py::arg("hinges"));
   m.def("quad_centre", &model::quad_centre);
   m.def("polygon_optimal_centre", &model::polygon_optimal_centre);
   m.def("polygon_centre_objective", &model::polygon_centre_objective);

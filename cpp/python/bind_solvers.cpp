@@ -129,6 +129,7 @@ void bind_solvers(py::module_& m) {
       .def_readwrite("max_bisections", &DisplacementControlOptions::max_bisections)
       .def_readwrite("shift", &DisplacementControlOptions::shift)
       .def_readwrite("extrapolation", &DisplacementControlOptions::extrapolation)
+      .def_readwrite("merlin2_steps", &DisplacementControlOptions::merlin2_steps)
       .def_property(
           "stop", [](const DisplacementControlOptions& o) { return static_cast<bool>(o.stop); },
           [](DisplacementControlOptions& o, const py::object& f) { o.stop = stop_rule(f); });

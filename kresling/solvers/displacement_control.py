@@ -10,7 +10,8 @@ from kresling.solvers.path import PathResult
 
 def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_iterations=50,
                                reject_iterations=25, max_bisections=10, shift=1e-8,
-                               extrapolation=0, initial=None) -> PathResult:
+                               extrapolation=0, initial=None, merlin2_steps=False,
+                               stop=None) -> PathResult:
     """Impose a displacement in equal increments and follow the equilibrium path.
 
     Only the non-zero entries of ``prescribed`` are imposed (zero entries stay free, as in
@@ -38,6 +39,15 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
         iteration per increment instead of three.
     initial : array_like, optional
         Starting displacement (default zero).
+    merlin2_steps : bool, default False
+        MERLIN2 v1.1's step control instead of bisection: a rejected increment halves the
+        step size, each accepted one brings it 10 % back towards nominal, and the path runs
+        while the accumulated fraction of the motion is <= 1 (so with 10 steps it takes 11
+        increments and ends at 1.1 of ``prescribed``, as MERLIN2 does). For reproducing
+        MERLIN2's runs increment for increment.
+    stop : callable, optional
+        ``stop(load_factor, displacement) -> bool``, asked after every accepted increment
+        (``displacement`` of shape (3N,)); True ends the path there (completed).
 
     Returns
     -------
@@ -52,7 +62,8 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
     """
     options = displacement_control_options(
         tolerance=tolerance, max_iterations=max_iterations, reject_iterations=reject_iterations,
-        max_bisections=max_bisections, shift=shift, extrapolation=extrapolation)
+        max_bisections=max_bisections, shift=shift, extrapolation=extrapolation,
+        merlin2_steps=merlin2_steps, stop=stop)
     d = _core.solvers.displacement_control(
         model._core, dof_vector(model, "prescribed", prescribed),
         as_integer("steps", steps, minimum=1),
@@ -61,7 +72,8 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
 
 
 def displacement_control_options(*, tolerance=1e-6, max_iterations=50, reject_iterations=25,
-                                 max_bisections=10, shift=1e-8, extrapolation=0):
+                                 max_bisections=10, shift=1e-8, extrapolation=0,
+                                 merlin2_steps=False, stop=None):
     """Checked C++ options object (see :func:`solve_displacement_control` for meanings)."""
     if extrapolation not in (0, 1, 2) or isinstance(extrapolation, bool):
         raise ValueError(f"extrapolation = {extrapolation!r} is invalid: must be 0, 1 or 2")
@@ -72,4 +84,8 @@ def displacement_control_options(*, tolerance=1e-6, max_iterations=50, reject_it
     o.max_bisections = as_integer("max_bisections", max_bisections, minimum=0)
     o.shift = float(shift)
     o.extrapolation = int(extrapolation)
+    o.merlin2_steps = bool(merlin2_steps)
+    if stop is not None and not callable(stop):
+        raise ValueError(f"stop = {stop!r} is invalid: must be None or a callable")
+    o.stop = stop
     return o

@@ -11,7 +11,7 @@ from kresling.solvers.path import PathResult
 
 
 def solve_force_control(model, forces, steps, *, tolerance=1e-6, max_iterations=50,
-                        max_bisections=10, shift=1e-8, initial=None) -> PathResult:
+                        max_bisections=10, shift=1e-8, initial=None, stop=None) -> PathResult:
     """Newton equilibrium under ``lambda * forces`` for lambda = 1/steps, ..., 1.
 
     A failed load step is halved up to ``max_bisections`` times. Past a limit point there is
@@ -23,6 +23,9 @@ def solve_force_control(model, forces, steps, *, tolerance=1e-6, max_iterations=
     ----------
     forces : array_like, shape (3N,) or (N, 3)
         Reference load [N].
+    stop : callable, optional
+        ``stop(load_factor, displacement) -> bool`` after every accepted step; True ends
+        the path there (completed).
 
     Returns
     -------
@@ -34,14 +37,14 @@ def solve_force_control(model, forces, steps, *, tolerance=1e-6, max_iterations=
         as_positive_real("tolerance", tolerance),
         as_integer("max_iterations", max_iterations, minimum=1),
         as_integer("max_bisections", max_bisections, minimum=0), float(shift),
-        dof_vector(model, "initial", initial, allow_none=True))
+        dof_vector(model, "initial", initial, allow_none=True), _stop(stop))
     return PathResult._from_core(d)
 
 
 def solve_mgdcm(model, forces, *, initial_load_factor=0.01, max_increments=100,
                 max_load_factor=math.inf, monitor_dof=None, max_displacement=math.inf,
                 max_step_factor=math.inf, tolerance=1e-6, max_iterations=50, shift=1e-8,
-                initial=None) -> PathResult:
+                initial=None, stop=None) -> PathResult:
     """Modified generalized displacement control (Leon, Paulino et al. 2011).
 
     Follows the equilibrium path of ``lambda * forces`` through limit points and
@@ -65,6 +68,9 @@ def solve_mgdcm(model, forces, *, initial_load_factor=0.01, max_increments=100,
         With ``max_displacement``: stop once ``|u[monitor_dof]|`` exceeds it [mm].
     max_step_factor : float
         Cap on the step factor's growth, for a finely resolved path (MERLIN2 has none).
+    stop : callable, optional
+        ``stop(load_factor, displacement) -> bool`` after every accepted increment
+        (``displacement`` of shape (3N,)); True ends the path there (completed).
 
     Returns
     -------
@@ -83,5 +89,11 @@ def solve_mgdcm(model, forces, *, initial_load_factor=0.01, max_increments=100,
         int(monitor_dof),
         float(max_displacement), float(max_step_factor), as_positive_real("tolerance", tolerance),
         as_integer("max_iterations", max_iterations, minimum=1), float(shift),
-        dof_vector(model, "initial", initial, allow_none=True))
+        dof_vector(model, "initial", initial, allow_none=True), _stop(stop))
     return PathResult._from_core(d)
+
+
+def _stop(stop):
+    if stop is not None and not callable(stop):
+        raise ValueError(f"stop = {stop!r} is invalid: must be None or a callable")
+    return stop

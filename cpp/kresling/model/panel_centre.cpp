@@ -8,6 +8,8 @@
 
 #include <Eigen/Dense>
 
+#include "kresling/model/octave_arithmetic.hpp"
+
 namespace kresling::model {
 
 namespace {
@@ -40,7 +42,9 @@ bool closest_on_line(const Vector3& a, const Vector3& b, const Vector3& c, const
 }  // namespace
 
 Vector3 quad_centre(const Vector3& p0, const Vector3& p1, const Vector3& p2, const Vector3& p3) {
-  const double l1 = (p2 - p0).norm(), l2 = (p3 - p1).norm();
+  // Lengths, directions and the solve are computed as MERLIN2 does under Octave, so that
+  // the centre agrees with its to the last bit (its bend hinges' rest angles feel an ulp).
+  const double l1 = octave_norm(p0 - p2), l2 = octave_norm(p3 - p1);
   if (!(l1 > 0.0 && l2 > 0.0)) {
     throw std::invalid_argument("quad has a diagonal of zero length");
   }
@@ -49,11 +53,13 @@ Vector3 quad_centre(const Vector3& p0, const Vector3& p1, const Vector3& p2, con
   Eigen::Matrix<double, 3, 2> A;
   A.col(0) = m;
   A.col(1) = -n;
-  const Eigen::Matrix2d normal = A.transpose() * A;
-  if (!(std::abs(normal.determinant()) > 1e-14)) {
+  if (!(std::abs((A.transpose() * A).determinant()) > 1e-14)) {
     throw std::invalid_argument("quad has parallel diagonals");
   }
-  const Eigen::Vector2d c = normal.ldlt().solve(A.transpose() * (p1 - p0));
+  Eigen::Vector2d c;
+  if (!octave_least_squares(A, p1 - p0, c)) {
+    throw std::invalid_argument("quad's diagonals could not be intersected");
+  }
   // On the shorter diagonal: the quad then bends along it if it is warped.
   return l1 < l2 ? Vector3(p0 + c[0] * m) : Vector3(p1 + c[1] * n);
 }

@@ -1,6 +1,7 @@
 #include "kresling/solvers/displacement_control.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -82,6 +83,7 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
   }
   const VectorX no_load = VectorX::Zero(n);
   VectorX u = initial.size() ? initial : VectorX::Zero(n);
+  if (options_.merlin2_steps) return solve_merlin2_steps(prescribed, steps, imposed, u);
   const VectorX start = u;
 
   PathResult result;
@@ -143,6 +145,95 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
                  format_number(t) + " of the prescribed motion) failed after " +
                  std::to_string(options_.max_bisections) + " bisections; at full size: " + reason;
         });
+  return result;
+}
+
+namespace {
+
+// Newton with every correction scaled by `damping` (< 1), as MERLIN2 iterates after ten
+// rejected increments in a row: converged once an undamped correction is <= tolerance.
+NewtonOutcome damped_newton(assembly::Assembler& assembler, TangentSolver& solver, VectorX& u,
+                            const NewtonOptions& options, double damping) {
+  NewtonOutcome out;
+  VectorX force;
+  while (out.iterations < options.max_iterations) {
+    ++out.iterations;
+    assembler.assemble(u, force, /*with_matrix=*/true);
+    const FactorizeInfo info = solver.factorize(assembler.matrix());
+    const VectorX du = info.ok ? solver.solve(gather_rows(assembler, -force)) : VectorX();
+    if (!info.ok || !du.allFinite()) {
+      out.failure = "the tangent stiffness is singular or the correction is not finite";
+      return out;
+    }
+    out.negative_eigenvalues = info.negative_eigenvalues;
+    scatter_add_rows(assembler, damping * du, u);
+    if (du.norm() <= options.tolerance) {
+      out.converged = true;
+      return out;
+    }
+  }
+  out.failure = "Newton did not converge in " + std::to_string(options.max_iterations) +
+                " iterations";
+  return out;
+}
+
+}  // namespace
+
+PathResult DisplacementControl::solve_merlin2_steps(const VectorX& prescribed, int steps,
+                                                    const std::vector<Index>& imposed,
+                                                    VectorX u) {
+  PathResult result;
+  result.constraint_dofs = imposed;
+  const VectorX increment = prescribed / static_cast<double>(steps);
+  const int max_iterations = options_.newton.max_iterations;
+  double moved = 0.0;      // fraction of the prescribed motion reached
+  double step_size = 1.0;  // in nominal increments
+  double damping = 1.0;
+  int rejections = 0;      // in a row
+  std::string last_failure;
+  while (moved <= 1.0 && rejections <= 20) {
+    ++result.attempted_increments;
+    VectorX trial = u;
+    for (Index i : imposed) trial[i] += step_size * increment[i];
+    // MERLIN2 rejects an increment needing this many iterations (more for a bold step);
+    // iterating past it cannot change the outcome.
+    const double limit = ((step_size > 1.0) + 1.0) * max_iterations / (damping + 1.0);
+    const int budget = std::min(max_iterations, static_cast<int>(std::ceil(limit)));
+    const NewtonOutcome outcome =
+        damping == 1.0 ? newton_equilibrium(*assembler_, *solver_, trial, VectorX::Zero(u.size()),
+                                            options_.newton, budget)
+                       : damped_newton(*assembler_, *solver_, trial, options_.newton, damping);
+    if (!outcome.converged || outcome.iterations >= limit) {
+      last_failure = outcome.converged
+                         ? "Newton needed " + std::to_string(outcome.iterations) + " iterations"
+                         : outcome.failure;
+      ++rejections;
+      if (rejections <= 10) {
+        step_size *= 0.5;
+      } else {
+        step_size = std::max(step_size, 1.0) * 1.5;
+        damping *= 0.75;
+      }
+      continue;
+    }
+    moved += step_size / steps;
+    rejections = 0;
+    damping = 1.0;
+    step_size = step_size < 1.0 ? std::min(step_size * 1.1, 1.0) : std::max(step_size * 0.9, 1.0);
+    u = trial;
+    result.steps.push_back(record_step(*assembler_, u, moved, outcome, imposed, -1.0));
+    if (options_.stop && options_.stop(result.steps.back())) {
+      result.completed = true;
+      return result;
+    }
+  }
+  result.completed = moved > 1.0;
+  if (!result.completed) {
+    result.failed_increment = result.attempted_increments;
+    result.message = "increment " + std::to_string(result.steps.size() + 1) + " (at " +
+                     format_number(moved) + " of the prescribed motion) was rejected 21 times " +
+                     "in a row; last: " + last_failure;
+  }
   return result;
 }
 

@@ -32,6 +32,13 @@ struct DisplacementControlOptions {
   /// equilibria exist (past a bifurcation), an increment whose extrapolated start converges
   /// to a less stable one than the last is retried from the last equilibrium.
   int extrapolation = 0;
+  /// MERLIN2 v1.1's step control instead of bisection (docs/model.md, 'Displacement
+  /// control'): a rejected increment halves the step factor (after 10 rejections in a row it
+  /// grows it by 1.5 and damps Newton by 0.75 instead), each accepted one moves it 10 %
+  /// back towards 1, and the path runs while the accumulated fraction is <= 1, so it may
+  /// end past the prescribed motion (11 increments of 1/10, say) exactly as MERLIN2's does.
+  /// The path ends after 21 rejections in a row. Ignores max_bisections and extrapolation.
+  bool merlin2_steps = false;
   StopRule stop;  ///< ends the path early (completed) when it returns true
 };
 
@@ -49,6 +56,9 @@ class DisplacementControl {
                    const VectorX& initial = VectorX());
 
  private:
+  PathResult solve_merlin2_steps(const VectorX& prescribed, int steps,
+                                 const std::vector<Index>& imposed, VectorX u);
+
   DisplacementControlOptions options_;
   std::unique_ptr<assembly::Assembler> assembler_;
   std::unique_ptr<TangentSolver> solver_;
