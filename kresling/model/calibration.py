@@ -3,7 +3,7 @@ directly ("manual"). See docs/model.md, 'Material calibration'.
 
 >>> m = SheetMaterial(youngs_modulus=5e3, poisson_ratio=0.35, thickness=0.127)
 >>> round(m.bending_rigidity, 6)
-0.970035
+0.972642
 """
 
 from __future__ import annotations

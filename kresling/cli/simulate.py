@@ -1,0 +1,59 @@
+"""``kresling simulate``: run a problem file on any crease pattern."""
+
+from __future__ import annotations
+
+import sys
+
+from kresling.cli._output import log_to_stderr, print_json, print_table
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "simulate",
+        help="simulate any crease pattern (FOLD or OBJ) from a TOML problem file",
+        description="Build the bar-and-hinge model of the pattern a problem file names "
+                    "(panel split, material calibration, hinge laws), apply its supports and "
+                    "loads, follow the equilibrium path (displacement control, force control "
+                    "or MGDCM) and write history.csv, displacements.csv, path.fold, "
+                    "summary.json and view.html. Node indices are 0-based in the pattern's "
+                    "vertex order; N5B8 centre nodes follow the vertices. Exits 0 when the "
+                    "path ran to its end, 1 when it stopped early (the files still hold "
+                    "every converged increment), 2 for a bad problem.",
+    )
+    parser.add_argument("problem", metavar="PROBLEM.toml", help="the problem file")
+    parser.add_argument("--out", metavar="DIR",
+                        help="output directory (default: a folder named after the problem "
+                             "file, beside it)")
+    parser.add_argument("--json", action="store_true",
+                        help="print the summary as one JSON object")
+    parser.add_argument("--no-view", action="store_true", help="do not write view.html")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    parser.set_defaults(func=run)
+
+
+def run(args) -> int:
+    from pathlib import Path
+
+    from kresling.simulate import simulate
+
+    problem = Path(args.problem)
+    out = Path(args.out) if args.out else problem.with_suffix("")
+    with log_to_stderr("kresling.simulate", "simulate"):
+        simulation = simulate(problem, progress=False if args.quiet else None)
+        written = simulation.write(out, view=not args.no_view)
+    summary = simulation.summary()
+    summary["outputs"] = {name: str(path) for name, path in written.items()}
+    if args.json:
+        print_json(summary)
+    else:
+        rows = [(key, "" if summary[key] is None else summary[key])
+                for key in ("method", "nodes", "bars", "hinges", "supported_dofs",
+                            "increments", "newton_iterations", "final_load_factor",
+                            "completed")]
+        print_table(rows, ("quantity", "value"))
+        print(f"\noutputs in {out}: " + ", ".join(Path(p).name for p in written.values()))
+    if not simulation.completed:
+        print(f"kresling simulate: the path stopped early: {simulation.path.message}",
+              file=sys.stderr)
+        return 1
+    return 0

@@ -1,0 +1,466 @@
+"""A simulation problem stated in a TOML file (or a dict of the same shape).
+
+The file names a crease pattern (FOLD or OBJ), how to build its model, its supports and
+loads, and the analysis; :func:`load_problem` reads and checks it. Every node index is
+0-based in the pattern file's vertex order; N5B8 centre nodes follow the vertices, in panel
+order. Bad input raises a ``ValueError`` naming the file, the table and key (with the line
+when it can be found) and what is allowed. See docs/simulate.md for every key.
+
+>>> problem = load_problem({
+...     "pattern": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "panels": [[0, 1, 2]]},
+...     "material": {"calibration": "manual", "bar_modulus": 1e3, "bar_area": 1.0},
+...     "support": [{"node": 0, "fix": "xyz"}, {"node": 1, "fix": "yz"}, {"node": 2, "fix": "z"}],
+...     "load": [{"node": 2, "force": [0.0, 1.0, 0.0]}],
+...     "analysis": {"method": "force_control", "steps": 4}})
+>>> problem.analysis.method, problem.loads[0].kind
+('force_control', 'force')
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from kresling.io import pattern_from_arrays, read_pattern
+from kresling.model import CreaseLaws, HingeLaw, ManualProperties, SheetMaterial
+from kresling.model.pattern_model import FOLD_FAMILIES
+from kresling.model.panel_elements import SPLITS
+from kresling.laws import BAR_LAWS, SPRING_LAWS
+
+try:  # Python >= 3.11
+    import tomllib
+except ModuleNotFoundError:  # pragma: no cover - older Pythons use the same parser, tomli
+    import tomli as tomllib
+
+__all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_problem", "METHODS"]
+
+#: Analysis methods and what each needs.
+METHODS = ("displacement_control", "force_control", "mgdcm")
+_AXES = {"x": 0, "y": 1, "z": 2}
+
+
+@dataclass(frozen=True)
+class Support:
+    """Supported axes of a node (u = 0 there)."""
+
+    node: int
+    axes: str
+
+
+@dataclass(frozen=True)
+class Load:
+    """A force [N] or a prescribed displacement [mm] on each of ``nodes``."""
+
+    nodes: tuple
+    kind: str  # "force" | "displacement"
+    vector: tuple
+
+
+@dataclass(frozen=True)
+class MonitorStop:
+    """Stop once ``|u|`` of ``node`` along ``axis`` exceeds ``beyond`` [mm]."""
+
+    node: int
+    axis: str
+    beyond: float
+
+    @property
+    def dof(self) -> int:
+        return 3 * self.node + _AXES[self.axis]
+
+
+@dataclass(frozen=True)
+class Analysis:
+    """The path-following analysis and its settings (see :func:`kresling.simulate`)."""
+
+    method: str
+    steps: int | None = None
+    initial_load_factor: float = 0.01
+    max_increments: int = 100
+    max_load_factor: float = math.inf
+    stop: MonitorStop | None = None
+    tolerance: float = 1e-6
+    max_iterations: int = 50
+
+
+@dataclass(frozen=True)
+class Problem:
+    """A checked problem: pattern, model settings, supports, loads and analysis.
+
+    Attributes
+    ----------
+    pattern : kresling.io.Pattern
+    split : str
+    material : SheetMaterial or ManualProperties
+    merlin2_compat : bool
+        Build and drive the model exactly as MERLIN2 v1.1 would.
+    laws : CreaseLaws
+    supports, loads : tuple
+    analysis : Analysis
+    source : str
+        Where the problem came from (the file, or "problem" for a dict).
+    """
+
+    pattern: object
+    split: str
+    material: object
+    merlin2_compat: bool
+    laws: CreaseLaws
+    supports: tuple
+    loads: tuple
+    analysis: Analysis
+    source: str = "problem"
+
+
+class _Table:
+    """One TOML table being read: typed getters, and unknown keys reported at the end."""
+
+    def __init__(self, data, name, source, text=None, occurrence=0):
+        self.name, self.source, self.text, self.occurrence = name, source, text, occurrence
+        if not isinstance(data, dict):
+            self.fail(None, f"must be a table, got {type(data).__name__}")
+        self.data, self.used = data, set()
+
+    def where(self, key):
+        label = f"[{self.name}]" if key is None else f"[{self.name}] key {key!r}"
+        line = _line_of(self.text, self.name, key, self.occurrence) if self.text else None
+        return f"{self.source}:{line}: {label}" if line else f"{self.source}: {label}"
+
+    def fail(self, key, message):
+        raise ValueError(f"{self.where(key)} {message}")
+
+    def has(self, key):
+        return key in self.data
+
+    def get(self, key, kind, default=None, *, required=False, allowed=None, choices=None):
+        """The value of ``key`` read by ``kind``; ``allowed`` words what a missing required
+        key must be, ``choices`` the values a string may take."""
+        self.used.add(key)
+        if key not in self.data:
+            if required:
+                wanted = allowed or (f"one of {list(choices)}" if choices else None)
+                self.fail(key, "is missing" + (f": must be {wanted}" if wanted else ""))
+            return default
+        return kind(self, key, self.data[key], choices)
+
+    def finish(self):
+        unknown = sorted(set(self.data) - self.used)
+        if unknown:
+            self.fail(unknown[0], f"is unknown: allowed keys are {sorted(self.used)}")
+
+
+def _line_of(text, table, key, occurrence=0):
+    """The line of ``key`` in the ``occurrence``-th ``[table]`` (or ``[[table]]``) of the
+    TOML text (best effort: keys of inline tables are not found), or None."""
+    lines = text.splitlines()
+    inside = table == ""
+    seen = -1
+    for number, line in enumerate(lines, 1):
+        stripped = line.strip()
+        match = re.match(r"^\[\[?\s*([^\]]+?)\s*\]\]?", stripped)
+        if match:
+            if match.group(1) == table:
+                seen += 1
+            inside = match.group(1) == table and seen == occurrence
+            if inside and key is None:
+                return number
+            continue
+        if inside and key is not None and re.match(rf"^{re.escape(key)}\s*=", stripped):
+            return number
+    return None
+
+
+# -- typed readers: (table, key, value, allowed) -> value ---------------------------------
+def _number(t, key, value, allowed=None):
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        t.fail(key, f"= {value!r} is invalid: must be a finite number")
+    return float(value)
+
+
+def _positive(t, key, value, allowed=None):
+    value = _number(t, key, value)
+    if value <= 0:
+        t.fail(key, f"= {value!r} is invalid: must be > 0")
+    return value
+
+
+def _integer(t, key, value, allowed=None):
+    if isinstance(value, bool) or not isinstance(value, int):
+        t.fail(key, f"= {value!r} is invalid: must be an integer")
+    return value
+
+
+def _count(t, key, value, allowed=None):
+    value = _integer(t, key, value)
+    if not 1 <= value <= 10_000_000:
+        t.fail(key, f"= {value!r} is invalid: must be an integer in [1, 10000000]")
+    return value
+
+
+def _boolean(t, key, value, allowed=None):
+    if not isinstance(value, bool):
+        t.fail(key, f"= {value!r} is invalid: must be true or false")
+    return value
+
+
+def _string(t, key, value, allowed=None):
+    if not isinstance(value, str) or (allowed and value not in allowed):
+        t.fail(key, f"= {value!r} is invalid: must be one of {list(allowed)}" if allowed
+               else f"= {value!r} is invalid: must be a string")
+    return value
+
+
+def _vector3(t, key, value, allowed=None):
+    if not isinstance(value, list) or len(value) != 3:
+        t.fail(key, f"= {value!r} is invalid: must be 3 numbers [x, y, z]")
+    return tuple(_number(t, key, v) for v in value)
+
+
+def _limits(t, key, value, allowed=None):
+    if not isinstance(value, list) or len(value) != 2:
+        t.fail(key, f"= {value!r} is invalid: must be two angles [theta1, theta2] in degrees")
+    low, high = (_number(t, key, v) for v in value)
+    if not 0 < low < high < 360:
+        t.fail(key, f"= {value!r} is invalid: must satisfy 0 < theta1 < theta2 < 360 [deg]")
+    return (low, high)
+
+
+def _scalar_or_list(t, key, value, allowed=None):
+    if isinstance(value, list):
+        return np.array([_number(t, key, v) for v in value], dtype=float)
+    return _number(t, key, value)
+
+
+def _node_list(t, count):
+    """``node = k`` or ``nodes = [k, ...]``: checked against the model's node count."""
+    if t.has("node") == t.has("nodes"):
+        t.fail(None, "needs exactly one of 'node' (an index) or 'nodes' (a list of indices)")
+    if t.has("node"):
+        nodes = [t.get("node", _integer)]
+        key = "node"
+    else:
+        value = t.get("nodes", lambda t_, k, v, a: v)
+        if not isinstance(value, list) or not value:
+            t.fail("nodes", f"= {value!r} is invalid: must be a non-empty list of node indices")
+        nodes = [_integer(t, "nodes", v) for v in value]
+        key = "nodes"
+    for node in nodes:
+        if not 0 <= node < count:
+            t.fail(key, f"= {node} is out of range: nodes are numbered 0 to {count - 1} "
+                        "(pattern vertices, then N5B8 centre nodes)")
+    return tuple(nodes)
+
+
+# -- sections -------------------------------------------------------------------------------
+def _read_pattern(t, base, compat):
+    split = t.get("split", _string, "N5B8", choices=tuple(SPLITS))
+    tolerance = t.get("planarity_tolerance", _positive, 1e-3)
+    if t.has("file"):
+        name = t.get("file", _string)
+        path = Path(name) if Path(name).is_absolute() else base / name
+        if not path.is_file():
+            t.fail("file", f"= {name!r}: no such file ({path})")
+        pattern = read_pattern(path, planarity_tolerance=tolerance)
+    elif t.has("vertices"):
+        vertices = t.get("vertices", lambda t_, k, v, a: v)
+        panels = t.get("panels", lambda t_, k, v, a: v, required=True,
+                       allowed="a list of panels (lists of vertex indices)")
+        try:
+            pattern = pattern_from_arrays(np.asarray(vertices, dtype=float), panels,
+                                          planarity_tolerance=tolerance)
+        except (TypeError, ValueError) as error:
+            t.fail("vertices", f"does not describe a pattern: {error}")
+    else:
+        t.fail(None, "needs 'file' (a .fold or .obj file) or 'vertices' and 'panels'")
+    t.finish()
+    return pattern, split
+
+
+def _read_material(t):
+    calibration = t.get("calibration", _string, required=True, choices=("auto", "manual"))
+    compat = t.get("merlin2_compat", _boolean, False)
+    if calibration == "auto":
+        E = t.get("E", _positive, required=True, allowed="Young's modulus [N/mm^2]")
+        nu = t.get("nu", _number, required=True, allowed="Poisson's ratio in (-1, 0.5]")
+        if not -1 < nu <= 0.5:
+            t.fail("nu", f"= {nu!r} is invalid: must be in (-1, 0.5]")
+        thickness = t.get("thickness", _positive, required=True, allowed="the thickness [mm]")
+        length_scale = t.get("length_scale", _positive, None)
+        material = SheetMaterial(E, nu, thickness, length_scale)
+    else:
+        material = ManualProperties(
+            bar_modulus=t.get("bar_modulus", _positive, required=True,
+                              allowed="the bars' modulus C0 [N/mm^2]"),
+            bar_area=t.get("bar_area", _scalar_or_list, required=True,
+                           allowed="the bars' area [mm^2] (a number or one per bar)"),
+            fold_stiffness=t.get("fold_stiffness", _scalar_or_list, None),
+            bend_stiffness=t.get("bend_stiffness", _scalar_or_list, None))
+    t.finish()
+    return material, compat
+
+
+def _read_laws(t, calibration_auto):
+    laws = sorted(SPRING_LAWS)
+    bar = t.get("bar", _string, "ogden", choices=tuple(sorted(BAR_LAWS)))
+    fold = HingeLaw(t.get("fold", _string, "enhanced_linear", choices=laws),
+                    t.get("fold_limits_deg", _limits, (45.0, 315.0)),
+                    t.get("fold_stiffness", _positive, None))
+    bend_default = "super_linear_bend" if calibration_auto else "enhanced_linear"
+    bend = HingeLaw(t.get("bend", _string, bend_default, choices=laws),
+                    t.get("bend_limits_deg", _limits, (45.0, 315.0)),
+                    t.get("bend_stiffness", _positive, None))
+    families = {}
+    for family in FOLD_FAMILIES:
+        if not t.has(family):
+            continue
+        sub = _Table(t.get(family, lambda t_, k, v, a: v), f"{t.name}.{family}", t.source, t.text)
+        families[family] = HingeLaw(sub.get("law", _string, fold.law, choices=laws),
+                                    sub.get("limits_deg", _limits, fold.limits_deg),
+                                    sub.get("stiffness", _positive, None))
+        sub.finish()
+    t.finish()
+    return CreaseLaws(bar=bar, fold=fold, bend=bend, families=families)
+
+
+def _read_analysis(t, num_nodes):
+    method = t.get("method", _string, required=True, choices=METHODS)
+    settings = {"method": method,
+                "tolerance": t.get("tolerance", _positive, 1e-6),
+                "max_iterations": t.get("max_iterations", _count, 50)}
+    if method in ("displacement_control", "force_control"):
+        settings["steps"] = t.get("steps", _count, required=True,
+                                  allowed="the number of increments (an integer >= 1)")
+    else:
+        settings["initial_load_factor"] = t.get("initial_load_factor", _number, 0.01)
+        if settings["initial_load_factor"] == 0:
+            t.fail("initial_load_factor", "= 0 is invalid: must be non-zero (its sign sets "
+                                          "the loading direction)")
+        settings["max_increments"] = t.get("max_increments", _count, 100)
+        settings["max_load_factor"] = t.get("max_load_factor", _positive, math.inf)
+        if t.has("stop"):
+            sub = _Table(t.get("stop", lambda t_, k, v, a: v), "analysis.stop", t.source, t.text)
+            node = _node_list(sub, num_nodes)
+            if len(node) != 1:
+                sub.fail("nodes", "must name one node")
+            settings["stop"] = MonitorStop(node[0], sub.get("axis", _string, required=True,
+                                                            choices=tuple(_AXES)),
+                                           sub.get("beyond", _positive, required=True,
+                                                   allowed="a displacement magnitude [mm]"))
+            sub.finish()
+    t.finish()
+    return Analysis(**settings)
+
+
+def _read_supports(entries, source, text, num_nodes):
+    supports = []
+    for i, entry in enumerate(entries):
+        t = _Table(entry, "support", source, text, occurrence=i)
+        fix = t.get("fix", _string, required=True, allowed="any of the letters x, y, z")
+        if not fix or set(fix) - set(_AXES) or len(set(fix)) != len(fix):
+            t.fail("fix", f"= {fix!r} is invalid: must be some of the letters x, y, z, each once")
+        for node in _node_list(t, num_nodes):
+            supports.append(Support(node, "".join(sorted(fix))))
+        t.finish()
+    return tuple(supports)
+
+
+def _read_loads(entries, source, text, num_nodes):
+    loads = []
+    for i, entry in enumerate(entries):
+        t = _Table(entry, "load", source, text, occurrence=i)
+        if t.has("force") == t.has("displacement"):
+            t.fail(None, f"(entry {i}) needs exactly one of 'force' [N] or 'displacement' [mm]")
+        kind = "force" if t.has("force") else "displacement"
+        vector = t.get(kind, _vector3)
+        loads.append(Load(_node_list(t, num_nodes), kind, vector))
+        t.finish()
+    return tuple(loads)
+
+
+def _node_count(pattern, split):
+    """Pattern vertices plus the centre nodes N5B8 adds (one per panel of 4+ vertices)."""
+    centres = sum(1 for face in pattern.faces if len(face) > 3) if split == "N5B8" else 0
+    return pattern.num_vertices + centres
+
+
+def _check_consistency(problem, t_analysis):
+    method = problem.analysis.method
+    kinds = {load.kind for load in problem.loads}
+    if not problem.loads:
+        raise ValueError(f"{problem.source}: [[load]] is missing: at least one load is needed")
+    wanted = "displacement" if method == "displacement_control" else "force"
+    if kinds != {wanted}:
+        t_analysis.fail("method", f"= {method!r} needs every [[load]] to be a {wanted} "
+                                  f"(given: {sorted(kinds)})")
+    supported = {(s.node, a) for s in problem.supports for a in s.axes}
+    for i, load in enumerate(problem.loads):
+        if load.kind != "displacement":
+            continue
+        for node in load.nodes:
+            for axis, value in zip("xyz", load.vector):
+                if value != 0 and (node, axis) in supported:
+                    raise ValueError(f"{problem.source}: load[{i}] drives node {node} along "
+                                     f"{axis}, which a [[support]] fixes: a DOF is either "
+                                     "supported or driven")
+
+
+def load_problem(problem) -> Problem:
+    """Read and check a problem.
+
+    Parameters
+    ----------
+    problem : str, os.PathLike or dict
+        A TOML file, or a dict with the same tables (``pattern.file`` relative to the
+        current directory; or ``pattern.vertices`` and ``pattern.panels`` inline).
+
+    Returns
+    -------
+    Problem
+
+    Raises
+    ------
+    ValueError
+        For bad TOML, an unknown or missing key, a bad value, a node out of range, a DOF
+        both supported and driven, or a pattern file that cannot be read; the message names
+        the file, the table and the key.
+    OSError
+        When the problem file cannot be read.
+    """
+    if isinstance(problem, Problem):
+        return problem
+    if isinstance(problem, dict):
+        data, source, text, base = problem, "problem", None, Path.cwd()
+    else:
+        path = Path(problem)
+        text = path.read_text(encoding="utf-8")
+        source, base = str(path), path.parent
+        try:
+            data = tomllib.loads(text)
+        except tomllib.TOMLDecodeError as error:
+            raise ValueError(f"{source}: not valid TOML: {error}") from None
+    root = _Table(data, "", source, text)
+    root.where = lambda key: f"{source}: key {key!r}" if key else source
+
+    t_pattern = _Table(root.get("pattern", lambda t, k, v, a: v, required=True,
+                                allowed="a table naming the crease pattern"),
+                       "pattern", source, text)
+    t_material = _Table(root.get("material", lambda t, k, v, a: v, required=True,
+                                 allowed="a table with the calibration"), "material", source, text)
+    material, compat = _read_material(t_material)
+    pattern, split = _read_pattern(t_pattern, base, compat)
+    laws = _read_laws(_Table(root.get("laws", lambda t, k, v, a: v, {}), "laws", source, text),
+                      isinstance(material, SheetMaterial))
+    count = _node_count(pattern, split)
+    supports = _read_supports(root.get("support", lambda t, k, v, a: v, []), source, text, count)
+    loads = _read_loads(root.get("load", lambda t, k, v, a: v, []), source, text, count)
+    t_analysis = _Table(root.get("analysis", lambda t, k, v, a: v, required=True,
+                                 allowed="a table with the method"), "analysis", source, text)
+    analysis = _read_analysis(t_analysis, count)
+    root.finish()
+    result = Problem(pattern, split, material, compat, laws, supports, loads, analysis, source)
+    _check_consistency(result, t_analysis)
+    return result

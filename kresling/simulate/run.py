@@ -1,0 +1,242 @@
+"""Run a simulation problem: build the pattern's model, apply supports and loads, follow
+the path."""
+
+from __future__ import annotations
+
+import logging
+import sys
+from dataclasses import dataclass
+
+import numpy as np
+
+from kresling.model import PatternModel, build_pattern_model
+from kresling.simulate.element_histories import ElementHistories, element_histories
+from kresling.simulate.problem import Problem, load_problem
+from kresling.solvers import (PathResult, solve_displacement_control, solve_force_control,
+                              solve_mgdcm)
+
+__all__ = ["Simulation", "PathState", "simulate", "build_problem_model"]
+
+logger = logging.getLogger(__name__)
+_AXES = {"x": 0, "y": 1, "z": 2}
+
+
+@dataclass(frozen=True)
+class PathState:
+    """What a stopping rule sees after each accepted increment.
+
+    Attributes
+    ----------
+    step : int
+        1-based number of the increment.
+    load_factor : float
+        Load factor (force control, MGDCM) or fraction of the prescribed motion.
+    displacement : ndarray, shape (N, 3)
+        Displacement of every node [mm].
+    """
+
+    step: int
+    load_factor: float
+    displacement: np.ndarray
+
+
+@dataclass(frozen=True)
+class Simulation:
+    """A problem, its model and the path it followed.
+
+    Attributes
+    ----------
+    problem : Problem
+    pattern_model : PatternModel
+        The model with its supports; ``pattern_model.model`` is what was solved.
+    path : PathResult
+    driven_dofs : ndarray of int
+        Displacement control: the driven DOFs (``path.constraint_dofs``); otherwise the
+        DOFs that carry a force.
+    """
+
+    problem: Problem
+    pattern_model: PatternModel
+    path: PathResult
+    driven_dofs: np.ndarray
+
+    @property
+    def model(self):
+        return self.pattern_model.model
+
+    @property
+    def completed(self) -> bool:
+        return self.path.completed
+
+    def element_histories(self) -> ElementHistories:
+        """Per-element and per-family histories along the path (see
+        :func:`kresling.simulate.element_histories`)."""
+        return element_histories(self.pattern_model, self.path)
+
+    def history_columns(self) -> dict:
+        """The columns of ``history.csv``: step, load_factor, the driven DOFs' reactions
+        (displacement control: the force the structure exerts on each driven DOF, -f_int,
+        as MERLIN2 reports it [N]), the stored energy by family [N*mm] and Newton iterations.
+        """
+        path = self.path
+        columns = {"step": np.arange(1, path.num_steps + 1), "load_factor": path.load_factor}
+        if self.problem.analysis.method == "displacement_control":
+            for k, dof in enumerate(path.constraint_dofs):
+                columns[f"reaction_{dof // 3}_{'xyz'[dof % 3]}"] = path.constraint_force[:, k]
+        else:
+            stop = self.problem.analysis.stop
+            if stop is not None:
+                columns[f"u_{stop.node}_{stop.axis}"] = path.displacement[:, stop.dof]
+        energies = self.element_histories().energy_by_family()
+        for name, values in energies.items():
+            columns[f"energy_{name}"] = values
+        columns["iterations"] = path.iterations
+        return columns
+
+    def write(self, directory, *, view=True) -> dict:
+        """Write history.csv, displacements.csv, path.fold (and view.html) into
+        ``directory``; returns the paths written by name."""
+        from kresling.simulate.outputs import write_outputs
+
+        return write_outputs(self, directory, view=view)
+
+    def summary(self) -> dict:
+        path = self.path
+        return {
+            "source": self.problem.source,
+            "method": self.problem.analysis.method,
+            "nodes": self.model.num_nodes,
+            "bars": len(self.model.bars),
+            "hinges": len(self.model.hinges),
+            "supported_dofs": int(self.model.fixed.sum()),
+            "increments": path.num_steps,
+            "newton_iterations": int(path.iterations.sum()),
+            "final_load_factor": float(path.load_factor[-1]) if path.num_steps else None,
+            "completed": bool(path.completed),
+            "message": path.message,
+        }
+
+
+def build_problem_model(problem) -> PatternModel:
+    """The problem's pattern model with its supports (no loads)."""
+    problem = load_problem(problem)
+    pm = build_pattern_model(problem.pattern, material=problem.material, split=problem.split,
+                             laws=problem.laws, merlin2_compat=problem.merlin2_compat)
+    fixed = np.zeros((pm.model.num_nodes, 3), dtype=bool)
+    for support in problem.supports:
+        for axis in support.axes:
+            fixed[support.node, _AXES[axis]] = True
+    return pm.with_supports(fixed)
+
+
+def _load_vector(problem, num_dofs):
+    vector = np.zeros(num_dofs)
+    for load in problem.loads:
+        for node in load.nodes:
+            vector[3 * node:3 * node + 3] += load.vector
+    return vector
+
+
+def simulate(problem, *, stop=None, progress=None) -> Simulation:
+    """Run a problem file (or dict, or :class:`Problem`).
+
+    Parameters
+    ----------
+    problem : str, os.PathLike, dict or Problem
+        See :func:`load_problem` and docs/simulate.md.
+    stop : callable, optional
+        ``stop(state: PathState) -> bool``, asked after every accepted increment; True ends
+        the path there (completed), e.g. ``lambda s: s.displacement[4, 2] < -10``.
+    progress : bool, optional
+        A progress bar on stderr; default: when stderr is a terminal.
+
+    Returns
+    -------
+    Simulation
+        ``completed`` is False when the path stopped early; ``path.message`` says why.
+
+    Raises
+    ------
+    ValueError
+        For a bad problem (naming the file and key), or a model the supports leave free to
+        move as a rigid body.
+    """
+    problem = load_problem(problem)
+    pm = build_problem_model(problem)
+    model = pm.model
+    analysis = problem.analysis
+    vector = _load_vector(problem, model.num_dofs)
+    bar = _progress_bar(problem, progress)
+    count = [0]
+
+    def rule(load_factor, u):
+        count[0] += 1
+        if bar is not None:
+            bar.update(count[0], load_factor, u)
+        if stop is None:
+            return False
+        return bool(stop(PathState(count[0], float(load_factor), np.asarray(u).reshape(-1, 3))))
+
+    callback = rule if (stop is not None or bar is not None) else None
+    common = {"tolerance": analysis.tolerance, "max_iterations": analysis.max_iterations,
+              "stop": callback}
+    try:
+        if analysis.method == "displacement_control":
+            path = solve_displacement_control(model, vector, analysis.steps,
+                                              merlin2_steps=problem.merlin2_compat, **common)
+        elif analysis.method == "force_control":
+            path = solve_force_control(model, vector, analysis.steps, **common)
+        else:
+            monitor = analysis.stop
+            path = solve_mgdcm(model, vector, initial_load_factor=analysis.initial_load_factor,
+                               max_increments=analysis.max_increments,
+                               max_load_factor=analysis.max_load_factor,
+                               monitor_dof=None if monitor is None else monitor.dof,
+                               max_displacement=np.inf if monitor is None else monitor.beyond,
+                               **common)
+    except ValueError as error:
+        raise ValueError(f"{problem.source}: {error}") from None
+    finally:
+        if bar is not None:
+            bar.close()
+    if not path.completed:
+        logger.warning("%s: the path stopped after %d increments: %s", problem.source,
+                       path.num_steps, path.message)
+    driven = (path.constraint_dofs if analysis.method == "displacement_control"
+              else np.flatnonzero(vector))
+    return Simulation(problem, pm, path, np.asarray(driven, dtype=np.int64))
+
+
+class _Bar:
+    """A tqdm bar over the fraction of the run done (displacement, steps or the monitor)."""
+
+    def __init__(self, problem):
+        from tqdm.auto import tqdm
+
+        a = problem.analysis
+        self.problem = problem
+        self.total = a.steps if a.method != "mgdcm" else a.max_increments
+        self.tqdm = tqdm(total=self.total, desc="simulate", unit="incr", leave=False,
+                         file=sys.stderr)
+
+    def update(self, count, load_factor, u):
+        a = self.problem.analysis
+        if a.method == "displacement_control":
+            done = load_factor * a.steps
+        elif a.method == "force_control":
+            done = load_factor * a.steps
+        else:
+            done = count
+            if a.stop is not None:
+                done = max(done, abs(u[a.stop.dof]) / a.stop.beyond * self.total)
+        self.tqdm.n = min(round(done, 2), self.total)
+        self.tqdm.refresh()
+
+    def close(self):
+        self.tqdm.close()
+
+
+def _progress_bar(problem, progress):
+    if progress is None:
+        progress = sys.stderr.isatty()
+    return _Bar(problem) if progress else None
