@@ -108,41 +108,50 @@ Vector3 polygon_optimal_centre(const std::vector<Vector3>& corners) {
     if (value < best_value) best = x, best_value = value;
   }
 
-  // A warped polygon: refine by iteratively reweighted least squares. Each term is
-  // |c + (p_i - p_j) x X| / |p_j - p_i|^2, the norm of an affine function of X.
+  // A warped polygon: the objective is still convex but no longer piecewise linear. Refine
+  // by iteratively reweighted least squares (each term |c + (p_i - p_j) x X| / |p_j - p_i|^2
+  // is the norm of an affine function of X; every step lowers the objective), from the best
+  // crossing and from MERLIN2's two starting points, and keep the lowest.
   double size = 0.0;
   for (const auto& p : corners) size = std::max(size, (p - mean).norm());
-  Vector3 x = best;
-  for (int iteration = 0; iteration < 500; ++iteration) {
-    Matrix3 H = Matrix3::Zero();
-    Vector3 g = Vector3::Zero();
-    bool at_kink = false;
-    for (const auto& [i, j] : pairs) {
-      const Vector3 d = corners[i] - corners[j];
-      const Vector3 c = corners[j].cross(corners[i]);
-      const double r = (c + d.cross(x)).norm();
-      if (r < 1e-14 * size * size) {
-        at_kink = true;  // the minimiser sits on a diagonal line: keep the crossing
-        break;
-      }
-      const double w = 1.0 / (r * d.squaredNorm());
-      Matrix3 B;  // B y = d x y
-      B << 0, -d.z(), d.y(), d.z(), 0, -d.x(), -d.y(), d.x(), 0;
-      H += w * B.transpose() * B;
-      g += w * B.transpose() * c;
-    }
-    if (at_kink) break;
-    const Vector3 next = H.ldlt().solve(-g);
-    if (!next.allFinite()) break;
-    const double step = (next - x).norm();
-    if (polygon_centre_objective(corners, next) <= polygon_centre_objective(corners, x)) {
-      x = next;
-    } else {
-      break;
-    }
-    if (step <= 1e-15 * size) break;
+  // A planar polygon's best crossing is exact: keep it (refining could only move it by
+  // rounding). Newell's normal gives the plane.
+  Vector3 normal = Vector3::Zero();
+  for (std::size_t k = 0; k < m; ++k) normal += corners[k].cross(corners[(k + 1) % m]);
+  double warp = 0.0;
+  if (normal.norm() > 0.0) {
+    normal.normalize();
+    for (const auto& p : corners) warp = std::max(warp, std::abs((p - mean).dot(normal)));
   }
-  return polygon_centre_objective(corners, x) < best_value ? x : best;
+  if (warp <= 1e-12 * size) return best;
+  const double floor = 1e-13 * size * size;  // keeps the weights finite on a kink
+  auto refine = [&](Vector3 x) {
+    for (int iteration = 0; iteration < 5000; ++iteration) {
+      Matrix3 H = Matrix3::Zero();
+      Vector3 g = Vector3::Zero();
+      for (const auto& [i, j] : pairs) {
+        const Vector3 d = corners[i] - corners[j];
+        const Vector3 c = corners[j].cross(corners[i]);
+        const double w = 1.0 / (std::max((c + d.cross(x)).norm(), floor) * d.squaredNorm());
+        Matrix3 B;  // B y = d x y
+        B << 0, -d.z(), d.y(), d.z(), 0, -d.x(), -d.y(), d.x(), 0;
+        H += w * B.transpose() * B;
+        g += w * B.transpose() * c;
+      }
+      const Vector3 next = H.ldlt().solve(-g);
+      if (!next.allFinite()) break;
+      const double step = (next - x).norm();
+      x = next;
+      if (step <= 1e-15 * size) break;
+    }
+    return x;
+  };
+  for (const Vector3& start : {best, candidates[0], candidates[1]}) {
+    const Vector3 x = refine(start);
+    const double value = polygon_centre_objective(corners, x);
+    if (value < best_value) best = x, best_value = value;
+  }
+  return best;
 }
 
 }  // namespace kresling::model
