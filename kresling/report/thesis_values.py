@@ -1,9 +1,11 @@
 """The numbers the report compares with, where each comes from, and the tolerances allowed.
 
-Every reference value a section checks against that is not read from a shipped table
-(:mod:`kresling.data.tables` holds Table 3 and the MERLIN2 reference runs) is defined here,
-beside the reason for its tolerance, so that the library's modules hold no thesis numbers and
-the report's allowances can be read in one place. Lengths are in mm, angles in rad,
+The thesis's printed values and the reference runs' numbers that the sections check against
+(beyond the shipped tables of :mod:`kresling.data.tables`: Table 3 and the MERLIN2 reference
+runs) are defined here, beside the reason for their tolerance, so that the library's modules
+hold no thesis numbers. Checks against a value worked out on the spot (a closed form,
+Appendix E's arithmetic, a run of our own with other settings) keep their tolerance beside the
+check in the section, with its reason in the check's note. Lengths are in mm, angles in rad,
 stiffness in N*m/rad (bending) or N/rad (creases), forces in N.
 """
 
