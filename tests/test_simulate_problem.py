@@ -175,3 +175,13 @@ def test_python_stopping_rule(folder):
     sim = simulate(folder / "problem.toml", progress=False,
                    stop=lambda state: state.displacement[2, 2] > 0.0 and state.step >= 3)
     assert sim.completed and sim.path.num_steps == 3
+
+
+def test_monitor_stop_under_displacement_control(folder):
+    text = VALID.replace('method = "force_control"', 'method = "displacement_control"').replace(
+        "force = [0.0, 0.0, 0.01]", "displacement = [0.0, 0.0, 4.0]").replace(
+        "steps = 5", "steps = 8\nstop = { node = 2, axis = \"z\", beyond = 1.2 }")
+    sim = simulate(write(folder, text), progress=False)
+    z = sim.path.displacement[:, 3 * 2 + 2]
+    # 0.5 mm per increment: the first increment past 1.2 mm is the third.
+    assert sim.completed and sim.path.num_steps == 3 and z[-1] > 1.2 >= z[-2]

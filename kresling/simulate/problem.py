@@ -340,17 +340,18 @@ def _read_analysis(t, num_nodes):
             t.fail("initial_load_factor", "= 0 is invalid: must be non-zero (its sign sets "
                                           "the loading direction)")
         settings["max_increments"] = t.get("max_increments", _count, 100)
+    if method != "displacement_control":
         settings["max_load_factor"] = t.get("max_load_factor", _positive, math.inf)
-        if t.has("stop"):
-            sub = _Table(t.get("stop", lambda t_, k, v, a: v), "analysis.stop", t.source, t.text)
-            node = _node_list(sub, num_nodes)
-            if len(node) != 1:
-                sub.fail("nodes", "must name one node")
-            settings["stop"] = MonitorStop(node[0], sub.get("axis", _string, required=True,
-                                                            choices=tuple(_AXES)),
-                                           sub.get("beyond", _positive, required=True,
-                                                   allowed="a displacement magnitude [mm]"))
-            sub.finish()
+    if t.has("stop"):
+        sub = _Table(t.get("stop", lambda t_, k, v, a: v), "analysis.stop", t.source, t.text)
+        node = _node_list(sub, num_nodes)
+        if len(node) != 1:
+            sub.fail("nodes", "must name one node")
+        settings["stop"] = MonitorStop(node[0], sub.get("axis", _string, required=True,
+                                                        choices=tuple(_AXES)),
+                                       sub.get("beyond", _positive, required=True,
+                                               allowed="a displacement magnitude [mm]"))
+        sub.finish()
     t.finish()
     return Analysis(**settings)
 

@@ -168,16 +168,24 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
     vector = _load_vector(problem, model.num_dofs)
     bar = _progress_bar(problem, progress)
     count = [0]
+    # The problem's own rules where the C++ solver has none (MGDCM checks them itself).
+    monitor = analysis.stop if analysis.method != "mgdcm" else None
+    bound = analysis.max_load_factor if analysis.method == "force_control" else np.inf
 
     def rule(load_factor, u):
         count[0] += 1
         if bar is not None:
             bar.update(count[0], load_factor, u)
+        if monitor is not None and abs(u[monitor.dof]) > monitor.beyond:
+            return True
+        if abs(load_factor) > bound:
+            return True
         if stop is None:
             return False
         return bool(stop(PathState(count[0], float(load_factor), np.asarray(u).reshape(-1, 3))))
 
-    callback = rule if (stop is not None or bar is not None) else None
+    needed = stop is not None or bar is not None or monitor is not None or np.isfinite(bound)
+    callback = rule if needed else None
     common = {"tolerance": analysis.tolerance, "max_iterations": analysis.max_iterations,
               "stop": callback}
     try:
