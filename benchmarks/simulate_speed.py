@@ -1,0 +1,112 @@
+"""Speed of ``kresling simulate`` on MERLIN2 v1.1's own example problems.
+
+For each example under tests/data/merlin2_examples/ (the problem file and MERLIN2's run of
+it under GNU Octave on a 2-core machine of this project's size), prints the model's size,
+MERLIN2's path-analysis wall time as it recorded it (meta.txt), our time for the same path
+(model building included; outputs not written) and the ratio. With ``--octave DIR`` where
+DIR holds MERLIN2 v1.1's source and ``octave-cli`` is installed, MERLIN2 is also timed live,
+side by side in this run (its model building and path analysis, no plotting).
+
+Times are best of ``--repeat`` runs. Run: ``python benchmarks/simulate_speed.py``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import shutil
+import subprocess
+import tempfile
+import time
+from pathlib import Path
+
+from kresling.simulate import simulate
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLES = ROOT / "tests" / "data" / "merlin2_examples"
+
+
+def recorded_seconds(case: Path) -> float:
+    for line in (case / "meta.txt").read_text().splitlines():
+        if line.startswith("pathanalysis_wall_s="):
+            return float(line.split("=", 1)[1])
+    return float("nan")
+
+
+def ours(problem: Path, repeat: int):
+    best, sim = float("inf"), None
+    for _ in range(repeat):
+        start = time.perf_counter()
+        sim = simulate(problem, progress=False)
+        best = min(best, time.perf_counter() - start)
+    return best, sim
+
+
+# MERLIN2 driven from its own input files: model building and path analysis only.
+_OCTAVE_DRIVER = """
+addpath('{merlin}'); cd('{case}');
+Node = dlmread('input_nodes.csv'); P = dlmread('panels.csv'); Panel = {{}};
+for i = 1:size(P,1), r = P(i,:); Panel{{i,1}} = r(r > 0); end
+fixed = dlmread('fixed_dofs.csv'); load_vec = dlmread('load.csv');
+m = size(Node,1); S = zeros(m,4); S(:,1) = (1:m)';
+S(ceil(fixed/3) + m*(mod(fixed-1,3)+1)) = 1; Supp = S(any(S(:,2:4),2),:);
+L = reshape(load_vec(1:3*m),3,[])'; idx = find(any(L,2)); Load = [idx, L(idx,:)];
+{options}
+tic; [truss, angles, opt] = PrepareData(Node,Panel,Supp,Load,opt);
+truss.U0 = zeros(3*size(truss.Node,1),1);
+[U,F] = PathAnalysis(truss,angles,opt); t = toc; printf('SECONDS %.6f\\n', t);
+"""
+
+_OCTAVE_OPTIONS = {
+    "polygon_N5B8_auto": "opt = struct('ModelType','N5B8','MaterCalib','auto','ModElastic',5e3,"
+                         "'Poisson',0.35,'Thickness',0.127,'LScaleFactor',3,'LoadType','Force',"
+                         "'InitialLoadFactor',1e-5,'MaxIcr',100,'StopCriterion',"
+                         "@(Node,U,icrm) abs(U(15))>12);",
+    "kresling_folding": "opt = struct('ModelType','N4B5','MaterCalib','manual','BarCM',"
+                        "@(Ex)Ogden(Ex,5e3),'Abar',0.1,'Kf',1e-3,'RotSprFold',"
+                        "@(he,h0,kf,L0)EnhancedLinear(he,h0,kf,L0,45,315),'LoadType','Force',"
+                        "'InitialLoadFactor',0.032,'MaxIcr',180);",
+}
+
+
+def octave_seconds(merlin: Path, case: Path) -> float:
+    options = _OCTAVE_OPTIONS.get(case.name)
+    if options is None or shutil.which("octave-cli") is None:
+        return float("nan")
+    script = _OCTAVE_DRIVER.format(merlin=merlin, case=case, options=options)
+    with tempfile.TemporaryDirectory() as tmp:
+        driver = Path(tmp) / "driver.m"
+        driver.write_text(script)
+        shim = Path(tmp) / "optimoptions.m"  # Octave lacks optimoptions; fminunc takes optimset
+        shim.write_text("function o = optimoptions(varargin)\n  o = optimset();\nend\n")
+        out = subprocess.run(["octave-cli", "--no-gui", "-q", "--eval",
+                              f"addpath('{tmp}'); run('{driver}')"], capture_output=True,
+                             text=True, timeout=600)
+    for line in out.stdout.splitlines():
+        if line.startswith("SECONDS"):
+            return float(line.split()[1])
+    return float("nan")
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--octave", type=Path, metavar="DIR",
+                        help="MERLIN2 v1.1's source folder, to time it live under Octave")
+    args = parser.parse_args(argv)
+    print(f"{'example':<20} {'nodes':>5} {'bars':>5} {'hinges':>6} {'incr':>5} "
+          f"{'MERLIN2 s':>10} {'live s':>8} {'ours s':>8} {'ratio':>7}")
+    for problem in sorted(EXAMPLES.glob("*/problem.toml")):
+        case = problem.parent
+        seconds, sim = ours(problem, args.repeat)
+        live = octave_seconds(args.octave, case) if args.octave else float("nan")
+        reference = live if live == live else recorded_seconds(case)
+        m = sim.model
+        print(f"{case.name:<20} {m.num_nodes:>5} {len(m.bars):>5} {len(m.hinges):>6} "
+              f"{sim.path.num_steps:>5} {recorded_seconds(case):>10.3f} {live:>8.3f} "
+              f"{seconds:>8.4f} {reference / seconds:>7.0f}")
+    print("\nMERLIN2 s: its path-analysis time as recorded with the reference run; live s: "
+          "timed now (with --octave); ratio: MERLIN2 (live if timed) over ours.")
+
+
+if __name__ == "__main__":
+    main()
