@@ -463,7 +463,8 @@ def check_panels(vertices: np.ndarray, faces, planarity_tolerance,
                 problems[index] = (f"face {index} is not planar: its corner at vertex "
                                    f"{faces[index][worst[row]] + first} lies {off:.3g} mm off "
                                    f"its plane (tolerance {planarity_tolerance:g} of its "
-                                   f"{diameter[row]:.3g} mm size)")
+                                   f"{diameter[row]:.3g} mm size; a larger "
+                                   "planarity_tolerance, or none, accepts warped panels)")
     if problems:
         index = min(problems)
         raise fail(index, problems[index])
