@@ -215,7 +215,7 @@ def test_planarity_tolerance(tmp_path):
     path = _write(tmp_path, {"vertices_coords": bent, "faces_vertices": [[0, 1, 2, 3]]})
     with pytest.raises(ValueError, match=r"sheet\.fold: face 0 is not planar: its corner at "
                                          r"vertex \d lies 0\.025 mm off its plane \(tolerance "
-                                         r"0\.001 of its 14\.1 mm size\)"):
+                                         r"0\.001 of its 14\.1 mm size; a larger planarity_tolerance"):
         read_fold(path)
     assert read_fold(path, planarity_tolerance=1e-2).num_faces == 1
     assert read_fold(path, planarity_tolerance=None).num_faces == 1
