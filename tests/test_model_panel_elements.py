@@ -137,3 +137,13 @@ def test_manual_properties_need_the_stiffness_of_each_kind_present():
     with pytest.raises(ValueError, match=r"bar_area has shape \(3,\)"):
         build_pattern_model((SQUARE, [[0, 1, 2, 3]]), split="N4B5",
                             material=ManualProperties(1e3, [1.0, 1.0, 1.0], bend_stiffness=1))
+
+
+def test_mean_centre_rule():
+    kite = np.array([[0, 0, 0], [3, -1, 0], [5, 0, 0], [3, 1, 0]], float)
+    mean = build_panel_elements(kite, [[0, 1, 2, 3]], split="N5B8", centre="mean")
+    merlin2 = build_panel_elements(kite, [[0, 1, 2, 3]], split="N5B8")
+    np.testing.assert_allclose(mean.nodes[4], kite.mean(axis=0), rtol=0, atol=1e-15)
+    np.testing.assert_allclose(merlin2.nodes[4], [3, 0, 0], atol=1e-15)  # diagonals cross
+    with pytest.raises(ValueError, match="centre = 'middle' is invalid"):
+        build_panel_elements(kite, [[0, 1, 2, 3]], split="N5B8", centre="middle")

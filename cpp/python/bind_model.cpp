@@ -186,12 +186,14 @@ void bind_model(py::module_& m) {
   m.def(
       "build_panel_elements",
       [](const Eigen::Ref<const NodeMatrix>& vertices, const std::vector<std::vector<Index>>& panels,
-         int split) {
+         int split, int centre) {
         if (split != 0 && split != 1) throw std::invalid_argument("split: unknown code");
+        if (centre != 0 && centre != 1) throw std::invalid_argument("centre: unknown code");
         return model::build_panel_elements(NodeMatrix(vertices), panels,
-                                           static_cast<model::PanelSplit>(split));
+                                           static_cast<model::PanelSplit>(split),
+                                           static_cast<model::CentreRule>(centre));
       },
-      py::arg("vertices"), py::arg("panels"), py::arg("split"));
+      py::arg("vertices"), py::arg("panels"), py::arg("split"), py::arg("centre") = 0);
 
   py::class_<model::SheetMaterial>(m, "SheetMaterial")
       .def(py::init<>())

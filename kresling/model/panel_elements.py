@@ -21,6 +21,8 @@ __all__ = ["PanelElements", "build_panel_elements", "SPLITS"]
 
 #: How panels with more than three vertices become triangles.
 SPLITS = {"N4B5": 0, "N5B8": 1}
+#: Where N5B8 puts a panel's centre node.
+CENTRES = {"merlin2": 0, "mean": 1}
 
 
 class PanelElements:
@@ -69,7 +71,7 @@ class PanelElements:
                 f"{len(self.folds)} folds, {len(self.bends)} bends)")
 
 
-def build_panel_elements(vertices, panels, *, split="N5B8") -> PanelElements:
+def build_panel_elements(vertices, panels, *, split="N5B8", centre="merlin2") -> PanelElements:
     """Split panels into triangles and place bars, fold and bend hinges (MERLIN2's rules).
 
     Parameters
@@ -84,6 +86,8 @@ def build_panel_elements(vertices, panels, *, split="N5B8") -> PanelElements:
         one if it is warped), a larger panel's where the sum of its corners' triangle areas
         over the squared diagonals is least. N4B5: quads cut along the shorter diagonal,
         larger panels along their shortest diagonals recursively. Triangles stay whole.
+    centre : {"merlin2", "mean"}
+        N5B8 centre nodes by MERLIN2's rules (above), or at the mean of the corners.
 
     Returns
     -------
@@ -97,11 +101,13 @@ def build_panel_elements(vertices, panels, *, split="N5B8") -> PanelElements:
     """
     if split not in SPLITS:
         raise ValueError(f"split = {split!r} is invalid: must be one of {sorted(SPLITS)}")
+    if centre not in CENTRES:
+        raise ValueError(f"centre = {centre!r} is invalid: must be one of {sorted(CENTRES)}")
     vertices = np.ascontiguousarray(vertices, dtype=float)
     if vertices.ndim != 2 or vertices.shape[1] != 3:
         raise ValueError(f"vertices has shape {vertices.shape}: must be (N, 3)")
     if not np.isfinite(vertices).all():
         raise ValueError("vertices contains NaN or inf")
     panels = [[int(v) for v in panel] for panel in panels]
-    core = _core.model.build_panel_elements(vertices, panels, SPLITS[split])
+    core = _core.model.build_panel_elements(vertices, panels, SPLITS[split], CENTRES[centre])
     return PanelElements(core, panels, split)

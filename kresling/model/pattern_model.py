@@ -191,8 +191,8 @@ def _fold_assignments(pattern, elements: PanelElements):
     return out
 
 
-def build_pattern_model(pattern, *, material, split="N5B8", laws=None, fixed=None,
-                        merlin2_compat=False) -> PatternModel:
+def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", laws=None,
+                        fixed=None, merlin2_compat=False) -> PatternModel:
     """Build the bar-and-hinge model of a crease pattern.
 
     Parameters
@@ -204,6 +204,8 @@ def build_pattern_model(pattern, *, material, split="N5B8", laws=None, fixed=Non
         "auto" calibration from the sheet (needs ``split="N5B8"``), or given properties.
     split : {"N5B8", "N4B5"}
         See :func:`build_panel_elements`.
+    centre : {"merlin2", "mean"}
+        Where N5B8 puts centre nodes (see :func:`build_panel_elements`).
     laws : CreaseLaws, optional
         Bar law and hinge laws per family (MERLIN2's defaults).
     fixed : array_like of bool, shape (N + C, 3), optional
@@ -234,7 +236,7 @@ def build_pattern_model(pattern, *, material, split="N5B8", laws=None, fixed=Non
     laws = CreaseLaws() if laws is None else laws
     if not isinstance(laws, CreaseLaws):
         raise ValueError(f"laws = {laws!r} is invalid: must be a CreaseLaws")
-    elements = build_panel_elements(vertices, panels, split=split)
+    elements = build_panel_elements(vertices, panels, split=split, centre=centre)
     assignments = _fold_assignments(pattern, elements)
     nb, nf = len(elements.bends), len(elements.folds)
 

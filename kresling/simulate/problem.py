@@ -28,7 +28,7 @@ import numpy as np
 from kresling.io import pattern_from_arrays, read_pattern
 from kresling.model import CreaseLaws, HingeLaw, ManualProperties, SheetMaterial
 from kresling.model.pattern_model import FOLD_FAMILIES
-from kresling.model.panel_elements import SPLITS
+from kresling.model.panel_elements import CENTRES, SPLITS
 from kresling.laws import BAR_LAWS, SPRING_LAWS
 
 try:  # Python >= 3.11
@@ -95,6 +95,7 @@ class Problem:
     ----------
     pattern : kresling.io.Pattern
     split : str
+        "N5B8" or "N4B5".
     material : SheetMaterial or ManualProperties
     merlin2_compat : bool
         Build and drive the model exactly as MERLIN2 v1.1 would.
@@ -103,6 +104,8 @@ class Problem:
     analysis : Analysis
     source : str
         Where the problem came from (the file, or "problem" for a dict).
+    centre : str
+        N5B8 centre nodes: "merlin2" (its rules) or "mean" (of the corners).
     """
 
     pattern: object
@@ -114,6 +117,7 @@ class Problem:
     loads: tuple
     analysis: Analysis
     source: str = "problem"
+    centre: str = "merlin2"
 
 
 class _Table:
@@ -258,6 +262,7 @@ def _node_list(t, count):
 # -- sections -------------------------------------------------------------------------------
 def _read_pattern(t, base, compat):
     split = t.get("split", _string, "N5B8", choices=tuple(SPLITS))
+    centre = t.get("centre", _string, "merlin2", choices=tuple(CENTRES))
     tolerance = t.get("planarity_tolerance", _positive, 1e-3)
     if t.has("file"):
         name = t.get("file", _string)
@@ -277,7 +282,7 @@ def _read_pattern(t, base, compat):
     else:
         t.fail(None, "needs 'file' (a .fold or .obj file) or 'vertices' and 'panels'")
     t.finish()
-    return pattern, split
+    return pattern, split, centre
 
 
 def _read_material(t):
@@ -452,7 +457,7 @@ def load_problem(problem) -> Problem:
     t_material = _Table(root.get("material", lambda t, k, v, a: v, required=True,
                                  allowed="a table with the calibration"), "material", source, text)
     material, compat = _read_material(t_material)
-    pattern, split = _read_pattern(t_pattern, base, compat)
+    pattern, split, centre = _read_pattern(t_pattern, base, compat)
     laws = _read_laws(_Table(root.get("laws", lambda t, k, v, a: v, {}), "laws", source, text),
                       isinstance(material, SheetMaterial))
     count = _node_count(pattern, split)
@@ -462,6 +467,7 @@ def load_problem(problem) -> Problem:
                                  allowed="a table with the method"), "analysis", source, text)
     analysis = _read_analysis(t_analysis, count)
     root.finish()
-    result = Problem(pattern, split, material, compat, laws, supports, loads, analysis, source)
+    result = Problem(pattern, split, material, compat, laws, supports, loads, analysis, source,
+                     centre)
     _check_consistency(result, t_analysis)
     return result

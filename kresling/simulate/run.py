@@ -121,7 +121,8 @@ def build_problem_model(problem) -> PatternModel:
     """The problem's pattern model with its supports (no loads)."""
     problem = load_problem(problem)
     pm = build_pattern_model(problem.pattern, material=problem.material, split=problem.split,
-                             laws=problem.laws, merlin2_compat=problem.merlin2_compat)
+                             centre=problem.centre, laws=problem.laws,
+                             merlin2_compat=problem.merlin2_compat)
     fixed = np.zeros((pm.model.num_nodes, 3), dtype=bool)
     for support in problem.supports:
         for axis in support.axes:

@@ -109,7 +109,7 @@ std::vector<std::array<Index, 2>> PanelElements::bars() const {
 
 PanelElements build_panel_elements(const NodeMatrix& vertices,
                                    const std::vector<std::vector<Index>>& panels,
-                                   PanelSplit split) {
+                                   PanelSplit split, CentreRule centre_rule) {
   PanelElements out;
   std::vector<Vector3> points;
   for (Index i = 0; i < vertices.rows(); ++i) points.emplace_back(vertices.row(i).transpose());
@@ -135,8 +135,14 @@ PanelElements build_panel_elements(const NodeMatrix& vertices,
     }
     Vector3 centre;
     try {
-      centre = m == 4 ? quad_centre(corners[0], corners[1], corners[2], corners[3])
-                      : polygon_optimal_centre(corners);
+      if (centre_rule == CentreRule::Mean) {
+        centre = Vector3::Zero();
+        for (const Vector3& corner : corners) centre += corner;
+        centre /= static_cast<double>(m);
+      } else {
+        centre = m == 4 ? quad_centre(corners[0], corners[1], corners[2], corners[3])
+                        : polygon_optimal_centre(corners);
+      }
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument("panel " + std::to_string(p) + ": " + e.what());
     }

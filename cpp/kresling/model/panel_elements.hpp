@@ -38,12 +38,17 @@ struct PanelElements {
   std::vector<std::array<Index, 2>> bars() const;
 };
 
+/// Where N5B8 puts a panel's centre node: MERLIN2's rules (panel_centre.hpp) or the mean of
+/// the panel's corners.
+enum class CentreRule : int { Merlin2 = 0, Mean = 1 };
+
 /// Build the elements. Panels list vertex indices in order around each panel (>= 3).
 /// Throws std::invalid_argument naming the panel for one with fewer than 3 vertices, an
 /// out-of-range or repeated vertex, or a quad whose diagonals are parallel or degenerate.
 PanelElements build_panel_elements(const NodeMatrix& vertices,
                                    const std::vector<std::vector<Index>>& panels,
-                                   PanelSplit split);
+                                   PanelSplit split,
+                                   CentreRule centre_rule = CentreRule::Merlin2);
 
 /// MERLIN2's N4B5 cut of a polygon with more than 3 corners: its diagonals as local corner
 /// pairs (i < j), the shortest first (the first in column order on a tie), recursively.
