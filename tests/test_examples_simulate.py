@@ -10,7 +10,6 @@ be what examples/make_patterns.py writes.
 
 import csv
 import importlib.util
-import sys
 from pathlib import Path
 
 import numpy as np
