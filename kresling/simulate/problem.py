@@ -325,7 +325,7 @@ def _read_laws(t, calibration_auto):
         sub = _Table(t.get(family, lambda t_, k, v, a: v), f"{t.name}.{family}", t.source, t.text)
         families[family] = HingeLaw(sub.get("law", _string, fold.law, choices=laws),
                                     sub.get("limits_deg", _limits, fold.limits_deg),
-                                    sub.get("stiffness", _positive, None))
+                                    sub.get("stiffness", _positive, fold.stiffness))
         sub.finish()
     t.finish()
     return CreaseLaws(bar=bar, fold=fold, bend=bend, families=families)
