@@ -34,7 +34,8 @@ model::Model make_model(const Eigen::Ref<const NodeMatrix>& nodes, IndexArray ba
                         RealArray bar_modulus, IndexArray hinge_nodes, RealArray hinge_stiffness,
                         RealArray hinge_rest_angle, RealArray hinge_length, IndexArray hinge_law,
                         RealArray hinge_theta1, RealArray hinge_theta2,
-                        py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> fixed) {
+                        py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> fixed,
+                        const std::vector<std::tuple<std::vector<Index>, double, double>>& cables) {
   const py::ssize_t nb = bar_nodes.ndim() == 2 ? bar_nodes.shape(0) : 0;
   const py::ssize_t nh = hinge_nodes.ndim() == 2 ? hinge_nodes.shape(0) : 0;
   require_shape("bar_nodes", bar_nodes, nb, 2);
@@ -73,7 +74,12 @@ model::Model make_model(const Eigen::Ref<const NodeMatrix>& nodes, IndexArray ba
                      hinge_theta2.at(i)};
   }
   std::vector<std::uint8_t> mask(fixed.data(), fixed.data() + fixed.size());
-  return model::Model(NodeMatrix(nodes), std::move(bars), std::move(hinges), std::move(mask));
+  std::vector<model::Cable> cable_list;
+  for (const auto& [cable_nodes, stiffness, rest_length] : cables) {
+    cable_list.push_back({cable_nodes, stiffness, rest_length});
+  }
+  return model::Model(NodeMatrix(nodes), std::move(bars), std::move(hinges), std::move(mask),
+                      std::move(cable_list));
 }
 
 
@@ -101,8 +107,12 @@ void bind_model(py::module_& m) {
            py::arg("bar_rest_length"), py::arg("bar_law"), py::arg("bar_modulus"),
            py::arg("hinge_nodes"), py::arg("hinge_stiffness"), py::arg("hinge_rest_angle"),
            py::arg("hinge_length"), py::arg("hinge_law"), py::arg("hinge_theta1"),
-           py::arg("hinge_theta2"), py::arg("fixed"))
+           py::arg("hinge_theta2"), py::arg("fixed"),
+           py::arg("cables") = std::vector<std::tuple<std::vector<Index>, double, double>>{})
       .def_property_readonly("num_nodes", &model::Model::num_nodes)
+      .def_property_readonly("num_cables", [](const model::Model& m) { return m.cables().size(); })
+      .def("with_cable_rest_lengths", &model::Model::with_cable_rest_lengths,
+           py::arg("rest_lengths"))
       .def_property_readonly("num_dofs", &model::Model::num_dofs)
       .def_property_readonly("num_bars", [](const model::Model& m) { return m.bars().size(); })
       .def_property_readonly("num_hinges", [](const model::Model& m) { return m.hinges().size(); })
@@ -139,6 +149,16 @@ void bind_model(py::module_& m) {
         out["hinge_length"] = length, out["hinge_law"] = hinge_law;
         out["hinge_theta1"] = t1, out["hinge_theta2"] = t2;
         out["fixed"] = py::array_t<std::uint8_t>(m.fixed().size(), m.fixed().data());
+        py::list cable_nodes;
+        std::vector<double> cable_stiffness, cable_rest;
+        for (const auto& c : m.cables()) {
+          cable_nodes.append(vector_array(c.nodes));
+          cable_stiffness.push_back(c.stiffness);
+          cable_rest.push_back(c.rest_length);
+        }
+        out["cable_nodes"] = cable_nodes;
+        out["cable_stiffness"] = vector_array(cable_stiffness);
+        out["cable_rest_length"] = vector_array(cable_rest);
         return out;
       });
 

@@ -116,6 +116,9 @@ void bind_solvers(py::module_& m) {
         return out;
       },
       py::arg("model"), py::arg("u"));
+        out["cable_length"] = s.cable_length;
+        out["cable_tension"] = s.cable_tension;
+        out["cable_energy"] = s.cable_energy;
 
   py::class_<DisplacementControlOptions>(m, "DisplacementControlOptions")
       .def(py::init<>())

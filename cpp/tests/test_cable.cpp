@@ -209,3 +209,131 @@ TEST(CableKernel, FrictionlessGuideCarriesEqualTensionOnBothSides) {
   EXPECT_LT(std::abs(f1.dot(e1.cross(e2))), 1e-12 * T);
   EXPECT_LT(std::abs(f1.dot((e1 + e2).normalized())), 1e-12 * T);
 }
+
+// ---------------------------------------------------------------------------------------
+// Cables in a model and its assembly.
+
+#include "kresling/assembly/assembler.hpp"
+#include "kresling/model/model.hpp"
+
+namespace {
+
+// A square frame of four bars in the plane z = 0 with two diagonals, and a cable from corner
+// 0 over corners 1 and 2 to corner 3, pulled 4 % shorter than its path (taut).
+model::Model cable_frame(double pull = 0.96) {
+  NodeMatrix X(5, 3);
+  X << 0, 0, 0, 10, 0, 1, 10, 10, 0, 0, 10, 2, 5, 5, 6;
+  std::vector<model::Bar> bars;
+  const std::vector<std::array<Index, 2>> edges = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2},
+                                                   {1, 3}, {0, 4}, {1, 4}, {2, 4}, {3, 4}};
+  for (const auto& e : edges) {
+    bars.push_back({e, 1.0, (X.row(e[1]) - X.row(e[0])).norm(), {elements::BarLawKind::Linear, 50.0}});
+  }
+  model::Cable cable{{0, 1, 2, 3}, 40.0, 0.0};
+  CablePoints p(4, 3);
+  for (int i = 0; i < 4; ++i) p.row(i) = X.row(cable.nodes[i]);
+  cable.rest_length = pull * cable_length(p);
+  return model::Model(X, bars, {}, std::vector<std::uint8_t>(15, 0), {cable});
+}
+
+}  // namespace
+
+TEST(CableAssembly, ForceAndTangentMatchFiniteDifferences) {
+  const model::Model m = cable_frame();
+  assembly::Assembler a(m, assembly::all_dofs(m.num_dofs()), 0.0);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  VectorX u(m.num_dofs());
+  for (Index i = 0; i < u.size(); ++i) u[i] = jitter(rng);
+  VectorX f, fp, fm;
+  const auto e = a.assemble(u, f, true);
+  EXPECT_GT(e.cables, 0.0);
+  EXPECT_NEAR(e.total(), e.bars + e.hinges + e.cables, 1e-15);
+  const Eigen::MatrixXd K = Eigen::MatrixXd(a.matrix());
+  const double h = 1e-6 * 10.0;
+  Eigen::MatrixXd K_fd(u.size(), u.size());
+  VectorX f_fd(u.size());
+  for (Index i = 0; i < u.size(); ++i) {
+    VectorX p = u, q = u;
+    p[i] += h, q[i] -= h;
+    const double ep = a.assemble(p, fp, false).total(), em = a.assemble(q, fm, false).total();
+    f_fd[i] = (ep - em) / (2 * h);
+    K_fd.col(i) = (fp - fm) / (2 * h);
+  }
+  EXPECT_LT((f - f_fd).norm(), kRelTol * f.norm());
+  EXPECT_LT((K - K_fd).norm(), kRelTol * K.norm());
+  // The cable's share of the force is the kernel's, scattered to its nodes.
+  const model::Model no_cable(m.nodes(), m.bars(), m.hinges(), m.fixed());
+  assembly::Assembler b(no_cable, assembly::all_dofs(m.num_dofs()), 0.0);
+  VectorX f_bars;
+  b.assemble(u, f_bars, false);
+  CablePoints x(4, 3);
+  const NodeMatrix xu = m.deformed(u);
+  for (int i = 0; i < 4; ++i) x.row(i) = xu.row(i);
+  const auto r = cable_response(x, 40.0, m.cables()[0].rest_length, false);
+  EXPECT_LT(((f - f_bars).head<12>() - r.force).norm(), 1e-12 * r.force.norm());
+  EXPECT_LT((f - f_bars).tail<3>().norm(), 1e-12 * r.force.norm());  // node 4: no cable
+}
+
+TEST(CableAssembly, SlackCablesAddNothingAndRestLengthsRebind) {
+  const model::Model taut = cable_frame(0.96);
+  const model::Model slack = taut.with_cable_rest_lengths({1.2 * taut.cables()[0].rest_length});
+  EXPECT_EQ(slack.cables()[0].rest_length, 1.2 * taut.cables()[0].rest_length);
+  EXPECT_EQ(taut.cables()[0].rest_length, cable_frame(0.96).cables()[0].rest_length);
+  assembly::Assembler a(taut, assembly::all_dofs(taut.num_dofs()), 0.0, assembly::Storage::Lower);
+  ASSERT_TRUE(a.same_connectivity(slack));
+  const VectorX u = VectorX::Zero(taut.num_dofs());
+  VectorX f_taut, f_slack;
+  EXPECT_GT(a.assemble(u, f_taut, true).cables, 0.0);
+  a.rebind(slack);
+  const auto e = a.assemble(u, f_slack, true);
+  EXPECT_EQ(e.cables, 0.0);
+  // Built stress-free: with the cable slack, nothing is stressed (to the rounding of the
+  // bars' rest lengths, ~1e-15 of their ~50 N forces).
+  EXPECT_LT(e.bars, 1e-25);
+  EXPECT_LT(f_slack.norm(), 1e-12);
+  EXPECT_GT(f_taut.norm(), 1.0);
+  // A model with other cables (or none) has another connectivity.
+  const model::Model none(taut.nodes(), taut.bars(), taut.hinges(), taut.fixed());
+  EXPECT_FALSE(a.same_connectivity(none));
+  model::Model other(taut.nodes(), taut.bars(), taut.hinges(), taut.fixed(),
+                     {{{0, 1, 3}, 40.0, 25.0}});
+  EXPECT_FALSE(a.same_connectivity(other));
+  // Element state: the cable's length, tension and energy.
+  const auto s = assembly::element_state(taut, u);
+  ASSERT_EQ(s.cable_tension.size(), 1);
+  CablePoints x(4, 3);
+  for (int i = 0; i < 4; ++i) x.row(i) = taut.nodes().row(i);
+  const auto r = cable_response(x, 40.0, taut.cables()[0].rest_length);
+  EXPECT_NEAR(s.cable_length[0], r.length, 1e-12);
+  EXPECT_NEAR(s.cable_tension[0], r.tension, 1e-12);
+  EXPECT_NEAR(s.cable_energy[0], r.energy, 1e-12);
+  EXPECT_EQ(assembly::element_state(slack, u).cable_tension[0], 0.0);
+}
+
+TEST(CableAssembly, ModelRejectsBadCablesNamingThem) {
+  const model::Model m = cable_frame();
+  auto build = [&](model::Cable c) {
+    return model::Model(m.nodes(), m.bars(), m.hinges(), m.fixed(), {m.cables()[0], c});
+  };
+  auto message = [&](model::Cable c) {
+    try {
+      build(c);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message({{0}, 1.0, 1.0}).find("cable 1: has 1 nodes"), std::string::npos);
+  EXPECT_NE(message({{0, 7}, 1.0, 1.0}).find("cable 1 (nodes 0, 7): node 7 is out of range"),
+            std::string::npos);
+  EXPECT_NE(message({{0, 1, 0}, 1.0, 1.0}).find("a node appears twice"), std::string::npos);
+  EXPECT_NE(message({{0, 1}, 0.0, 1.0}).find("cable 1 (nodes 0, 1): stiffness"), std::string::npos);
+  EXPECT_NE(message({{0, 1}, 1.0, -1.0}).find("rest length"), std::string::npos);
+  EXPECT_NO_THROW(build({{0, 1}, 1.0, 1.0}));
+  NodeMatrix X = m.nodes();
+  X.row(4) = X.row(1);
+  EXPECT_THROW(model::Model(X, {}, {}, m.fixed(), {{{0, 1, 4}, 1.0, 1.0}}), std::invalid_argument);
+  EXPECT_THROW(m.with_cable_rest_lengths({}), std::invalid_argument);
+  EXPECT_THROW(m.with_cable_rest_lengths({0.0}), std::invalid_argument);
+}

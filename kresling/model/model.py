@@ -60,6 +60,12 @@ class Model:
         Limits of the enhanced linear law's linear range [rad].
     fixed : array_like of bool, shape (N, 3), optional
         Supported DOFs (u = 0). Default: none.
+    cables : sequence of (nodes, stiffness, rest_length), optional
+        Sliding cables (tendons): each runs from ``nodes[0]`` through frictionless guides
+        ``nodes[1:-1]`` to ``nodes[-1]``, tension only, with axial rigidity ``stiffness`` EA
+        [N] and ``rest_length`` [mm] (``None``: its path length in ``nodes``, just taut).
+        Read back as ``cable_nodes`` (tuple of arrays), ``cable_stiffness``,
+        ``cable_rest_length``. Default: none.
 
     Raises
     ------
@@ -75,7 +81,7 @@ class Model:
 
     def __init__(self, nodes, bars, hinges, *, bar_modulus, hinge_stiffness, bar_area=1.0,
                  bar_rest_length=None, bar_law="ogden", hinge_rest_angle=None, hinge_length=None,
-                 hinge_law="enhanced_linear", hinge_limits=FOLD_LIMITS, fixed=None):
+                 hinge_law="enhanced_linear", hinge_limits=FOLD_LIMITS, fixed=None, cables=None):
         nodes = np.ascontiguousarray(nodes, dtype=float)
         if nodes.ndim != 2 or nodes.shape[1] != 3:
             raise ValueError(f"nodes has shape {nodes.shape}: must be (N, 3)")
@@ -103,6 +109,7 @@ class Model:
         if fixed.shape != nodes.shape:
             raise ValueError(f"fixed has shape {fixed.shape}: must be {nodes.shape}")
 
+        cable_nodes, cable_stiffness, cable_rest = _cables(cables, nodes)
         self._arrays = {
             "nodes": nodes,
             "bars": bars,
@@ -117,15 +124,19 @@ class Model:
             "hinge_law": _law_codes("hinge_law", hinge_law, SPRING_LAWS, nh),
             "hinge_limits": np.ascontiguousarray(limits),
             "fixed": fixed,
+            "cable_stiffness": cable_stiffness,
+            "cable_rest_length": cable_rest,
         }
         for array in self._arrays.values():
             array.flags.writeable = False
+        self._arrays["cable_nodes"] = cable_nodes
         a = self._arrays
         self._core = _core.model.Model(
             a["nodes"], a["bars"], a["bar_area"], a["bar_rest_length"], a["bar_law"],
             a["bar_modulus"], a["hinges"], a["hinge_stiffness"], a["hinge_rest_angle"],
             a["hinge_length"], a["hinge_law"], a["hinge_limits"][:, 0].copy(),
-            a["hinge_limits"][:, 1].copy(), a["fixed"].astype(np.uint8).ravel())
+            a["hinge_limits"][:, 1].copy(), a["fixed"].astype(np.uint8).ravel(),
+            [(c.tolist(), k, r) for c, k, r in zip(cable_nodes, cable_stiffness, cable_rest)])
 
     @classmethod
     def _from_core(cls, core) -> "Model":
@@ -140,8 +151,14 @@ class Model:
             "hinge_length": a["hinge_length"], "hinge_law": a["hinge_law"],
             "hinge_limits": np.column_stack([a["hinge_theta1"], a["hinge_theta2"]]),
             "fixed": a["fixed"].astype(bool).reshape(-1, 3),
+            "cable_stiffness": a.get("cable_stiffness", np.zeros(0)),
+            "cable_rest_length": a.get("cable_rest_length", np.zeros(0)),
         }
         for array in self._arrays.values():
+            array.flags.writeable = False
+        self._arrays["cable_nodes"] = tuple(np.asarray(c, dtype=np.int64)
+                                            for c in core.arrays()["cable_nodes"])
+        for array in self._arrays["cable_nodes"]:
             array.flags.writeable = False
         self._core = core
         return self
@@ -171,6 +188,7 @@ class Model:
             "hinge_rest_angle": a["hinge_rest_angle"], "hinge_length": a["hinge_length"],
             "hinge_law": [_name(SPRING_LAWS, c) for c in a["hinge_law"]],
             "hinge_limits": a["hinge_limits"], "fixed": a["fixed"],
+            "cables": list(zip(a["cable_nodes"], a["cable_stiffness"], a["cable_rest_length"])),
         }
         positional = {"nodes": a["nodes"], "bars": a["bars"], "hinges": a["hinges"]}
         for key, value in changes.items():
@@ -219,14 +237,39 @@ class Model:
         -------
         dict
             ``bar_strain`` (B,), ``bar_force`` (B,) [N], ``hinge_angle`` (H,) [rad],
-            ``hinge_moment`` (H,) [N*mm].
+            ``hinge_moment`` (H,) [N*mm]; ``cable_length`` (C,) [mm], ``cable_tension`` (C,)
+            [N] (0 when slack).
         """
         u = np.zeros(self.num_dofs) if u is None else np.asarray(u, dtype=float).ravel()
         return {k: np.asarray(v) for k, v in _core.solvers.element_state(self._core, u).items()}
 
     def __repr__(self):
+        cables = f"{len(self.cable_nodes)} cables, " if len(self.cable_nodes) else ""
         return (f"Model({self.num_nodes} nodes, {len(self.bars)} bars, {len(self.hinges)} hinges, "
-                f"{int(self.fixed.sum())} supported DOFs)")
+                f"{cables}{int(self.fixed.sum())} supported DOFs)")
+
+
+def _cables(cables, nodes):
+    """Cable nodes (a tuple of read-only int arrays), stiffnesses and rest lengths."""
+    if cables is None:
+        return (), np.zeros(0), np.zeros(0)
+    node_lists, stiffness, rest = [], [], []
+    for i, cable in enumerate(cables):
+        try:
+            path, k, length = cable
+        except (TypeError, ValueError):
+            raise ValueError(f"cables[{i}] must be (nodes, stiffness, rest_length)") from None
+        path = np.asarray(path, dtype=np.int64).ravel()
+        if path.size and (path.min() < 0 or path.max() >= len(nodes)):
+            raise ValueError(f"cables[{i}] = {path.tolist()}: node index out of range "
+                             f"[0, {len(nodes)})")
+        if length is None:
+            length = float(np.linalg.norm(np.diff(nodes[path], axis=0), axis=1).sum())
+        path.flags.writeable = False
+        node_lists.append(path)
+        stiffness.append(float(k))
+        rest.append(float(length))
+    return tuple(node_lists), np.array(stiffness), np.array(rest)
 
 
 def _name(table, code):

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "kresling/elements/bar.hpp"
+#include "kresling/elements/cable.hpp"
 #include "kresling/elements/dihedral.hpp"
 #include "kresling/elements/hinge.hpp"
 
@@ -35,8 +36,8 @@ bool stored(Index r, Index c, Storage storage) {
   return r >= 0 && c >= 0 && (storage == Storage::Full || r >= c);
 }
 
-template <std::size_t D>
-void add_pattern(const std::array<Index, D>& dofs, const std::vector<Index>& rows,
+template <typename Dofs>
+void add_pattern(const Dofs& dofs, const std::vector<Index>& rows,
                  Storage storage, std::vector<Eigen::Triplet<double, int>>& entries) {
   for (Index a : dofs) {
     for (Index b : dofs) {
@@ -45,12 +46,13 @@ void add_pattern(const std::array<Index, D>& dofs, const std::vector<Index>& row
   }
 }
 
-template <std::size_t D>
-void add_slots(const std::array<Index, D>& dofs, const std::vector<Index>& rows,
+template <typename Dofs>
+void add_slots(const Dofs& dofs, const std::vector<Index>& rows,
                Storage storage, const SparseMatrix& m, std::vector<ScatterEntry>& entries,
                std::vector<int>& offsets) {
   // Only the entries the matrix stores: a compact list instead of a branch per entry of
   // the element matrix (half of which the lower-triangle storage skips).
+  const std::size_t D = dofs.size();
   for (std::size_t b = 0; b < D; ++b) {
     for (std::size_t a = 0; a < D; ++a) {
       if (stored(rows[dofs[a]], rows[dofs[b]], storage)) {
@@ -77,6 +79,15 @@ void add_force(const Eigen::Matrix<double, D, 1>& local, const std::array<Index,
   for (int a = 0; a < D; ++a) force[dofs[a]] += local[a];
 }
 
+// The 3 k DOFs of a cable's nodes, in cable order.
+std::vector<Index> cable_dofs(const std::vector<Index>& nodes) {
+  std::vector<Index> dofs(3 * nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    for (int k = 0; k < 3; ++k) dofs[3 * i + k] = 3 * nodes[i] + k;
+  }
+  return dofs;
+}
+
 }  // namespace
 
 namespace {
@@ -88,6 +99,10 @@ std::vector<Index> connectivity_of(const model::Model& model) {
   for (const auto& b : model.bars()) c.insert(c.end(), b.nodes.begin(), b.nodes.end());
   for (const auto& h : model.hinges()) c.insert(c.end(), h.nodes.begin(), h.nodes.end());
   c.push_back(static_cast<Index>(model.bars().size()));
+  for (const auto& cable : model.cables()) {  // each cable's length, then its nodes
+    c.push_back(static_cast<Index>(cable.nodes.size()));
+    c.insert(c.end(), cable.nodes.begin(), cable.nodes.end());
+  }
   return c;
 }
 
@@ -122,6 +137,10 @@ Assembler::Assembler(const model::Model& model, std::vector<Index> rows, double 
   entries.reserve(36 * model_->bars().size() + 144 * model_->hinges().size() + size_);
   for (const auto& bar : model_->bars()) add_pattern(element_dofs(bar.nodes), rows_, storage_, entries);
   for (const auto& h : model_->hinges()) add_pattern(element_dofs(h.nodes), rows_, storage_, entries);
+  for (const auto& c : model_->cables()) {
+    cable_dofs_.push_back(cable_dofs(c.nodes));
+    add_pattern(cable_dofs_.back(), rows_, storage_, entries);
+  }
   for (Index i = 0; i < size_; ++i) entries.emplace_back(i, i, 0.0);
   matrix_.resize(size_, size_);
   matrix_.setFromTriplets(entries.begin(), entries.end());
@@ -134,6 +153,10 @@ Assembler::Assembler(const model::Model& model, std::vector<Index> rows, double 
   hinge_offsets_.push_back(0);
   for (const auto& h : model_->hinges()) {
     add_slots(element_dofs(h.nodes), rows_, storage_, matrix_, hinge_entries_, hinge_offsets_);
+  }
+  cable_offsets_.push_back(0);
+  for (const auto& dofs : cable_dofs_) {
+    add_slots(dofs, rows_, storage_, matrix_, cable_entries_, cable_offsets_);
   }
   for (Index i = 0; i < size_; ++i) diagonal_slots_.push_back(find_slot(matrix_, i, i));
   connectivity_ = connectivity_of(*model_);
@@ -191,6 +214,24 @@ Energies Assembler::assemble(const VectorX& u, VectorX& force, bool with_matrix)
                   hinge_entries_.data() + hinge_offsets_[e + 1], values);
     }
   }
+  const auto& cables = model_->cables();
+  for (std::size_t e = 0; e < cables.size(); ++e) {
+    const auto& c = cables[e];
+    elements::CablePoints x(static_cast<Index>(c.nodes.size()), 3);
+    for (std::size_t i = 0; i < c.nodes.size(); ++i) x.row(static_cast<Index>(i)) = position(c.nodes[i]);
+    const auto r = elements::cable_response(x, c.stiffness, c.rest_length, with_matrix);
+    if (!r.taut) continue;  // slack: no energy, force or stiffness
+    energies.cables += r.energy;
+    const auto& dofs = cable_dofs_[e];
+    for (std::size_t a = 0; a < dofs.size(); ++a) force[dofs[a]] += r.force[static_cast<Index>(a)];
+    if (with_matrix) {
+      const double* k = r.stiffness.data();
+      for (const ScatterEntry* s = cable_entries_.data() + cable_offsets_[e];
+           s != cable_entries_.data() + cable_offsets_[e + 1]; ++s) {
+        values[s->slot] += 0.5 * (k[s->local] + k[s->transposed]);
+      }
+    }
+  }
   if (with_matrix) {
     for (int slot : diagonal_slots_) values[slot] += shift_;
   }
@@ -229,6 +270,20 @@ ElementState element_state(const model::Model& model, const VectorX& u) {
     const elements::SpringResponse r = h.law.evaluate(theta, h.rest_angle, h.stiffness);
     s.hinge_moment[e] = h.length * r.moment;
     s.hinge_energy[e] = h.length * r.energy;
+  }
+  const auto& cables = model.cables();
+  const auto nc = static_cast<Index>(cables.size());
+  s.cable_length.resize(nc);
+  s.cable_tension.resize(nc);
+  s.cable_energy.resize(nc);
+  for (Index e = 0; e < nc; ++e) {
+    const auto& c = cables[e];
+    elements::CablePoints p(static_cast<Index>(c.nodes.size()), 3);
+    for (std::size_t i = 0; i < c.nodes.size(); ++i) p.row(static_cast<Index>(i)) = x.row(c.nodes[i]);
+    const auto r = elements::cable_response(p, c.stiffness, c.rest_length, false);
+    s.cable_length[e] = r.length;
+    s.cable_tension[e] = r.tension;
+    s.cable_energy[e] = r.energy;
   }
   return s;
 }

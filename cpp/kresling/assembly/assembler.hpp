@@ -9,6 +9,8 @@
 /// symmetrised element by element and shifted by `shift` on the diagonal, as MERLIN2 does.
 /// It is stored either whole or as its lower triangle only (what the factorisations read:
 /// half the scatter work). Hinges of zero stiffness contribute nothing and are skipped.
+/// Cables (if the model has any) are assembled after bars and hinges; a model without
+/// cables runs exactly the bar and hinge loops it always did.
 
 #include <cstdint>
 #include <vector>
@@ -26,7 +28,8 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 struct Energies {
   double bars = 0.0;
   double hinges = 0.0;
-  double total() const { return bars + hinges; }
+  double cables = 0.0;
+  double total() const { return bars + hinges + cables; }
 };
 
 /// Where one entry of an element matrix goes: its slot in the matrix's value array and the
@@ -73,7 +76,7 @@ class Assembler {
 
  private:
   const model::Model* model_;
-  std::vector<Index> connectivity_;  // every element's nodes, bars then hinges
+  std::vector<Index> connectivity_;  // every element's nodes, bars, hinges, then cables
   std::vector<Index> rows_;
   Index size_ = 0;
   double shift_ = 0.0;
@@ -82,6 +85,9 @@ class Assembler {
   // The stored entries of each element matrix: element e's are [offsets[e], offsets[e+1]).
   std::vector<ScatterEntry> bar_entries_, hinge_entries_;
   std::vector<int> bar_offsets_, hinge_offsets_;
+  std::vector<ScatterEntry> cable_entries_;
+  std::vector<int> cable_offsets_;
+  std::vector<std::vector<Index>> cable_dofs_;
   std::vector<int> diagonal_slots_;
 };
 
@@ -94,6 +100,9 @@ struct ElementState {
   VectorX hinge_angle;    ///< dihedral angle per hinge [rad]
   VectorX hinge_moment;   ///< L0 M(theta) per hinge
   VectorX hinge_energy;   ///< stored energy per hinge
+  VectorX cable_length;   ///< total length of each cable's path [mm]
+  VectorX cable_tension;  ///< tension per cable (0 when slack) [N]
+  VectorX cable_energy;   ///< stored energy per cable
 };
 ElementState element_state(const model::Model& model, const VectorX& u);
 

@@ -99,6 +99,25 @@ void check_hinge(const Hinge& h, std::size_t i, const NodeMatrix& X, double scal
   }
 }
 
+void check_cable(const Cable& c, std::size_t i, const NodeMatrix& X, double scale) {
+  const ElementRef e{"cable", i, c.nodes.data(), static_cast<int>(c.nodes.size())};
+  if (c.nodes.size() < 2 || c.nodes.size() > kMaxCableNodes) {
+    throw std::invalid_argument("cable " + std::to_string(i) + ": has " +
+                                std::to_string(c.nodes.size()) + " nodes, must have 2 to " +
+                                std::to_string(kMaxCableNodes));
+  }
+  check_nodes(e, X.rows());
+  positive(e, "stiffness", c.stiffness);
+  positive(e, "rest length", c.rest_length);
+  for (std::size_t k = 0; k + 1 < c.nodes.size(); ++k) {
+    if (!((X.row(c.nodes[k + 1]) - X.row(c.nodes[k])).norm() > 1e-12 * scale)) {
+      throw std::invalid_argument(e.name() + ": nodes " + std::to_string(c.nodes[k]) + " and " +
+                                  std::to_string(c.nodes[k + 1]) +
+                                  " coincide (a segment needs a direction)");
+    }
+  }
+}
+
 }  // namespace
 
 void check_hinge_geometry(const NodeMatrix& X, const std::array<Index, 4>& nodes,
@@ -107,11 +126,12 @@ void check_hinge_geometry(const NodeMatrix& X, const std::array<Index, 4>& nodes
 }
 
 Model::Model(NodeMatrix nodes, std::vector<Bar> bars, std::vector<Hinge> hinges,
-             std::vector<std::uint8_t> fixed)
+             std::vector<std::uint8_t> fixed, std::vector<Cable> cables)
     : nodes_(std::move(nodes)),
       bars_(std::move(bars)),
       hinges_(std::move(hinges)),
-      fixed_(std::move(fixed)) {
+      fixed_(std::move(fixed)),
+      cables_(std::move(cables)) {
   if (nodes_.rows() == 0) throw std::invalid_argument("nodes: the model has no nodes");
   for (Index i = 0; i < nodes_.rows(); ++i) {
     for (int k = 0; k < 3; ++k) {
@@ -131,6 +151,21 @@ Model::Model(NodeMatrix nodes, std::vector<Bar> bars, std::vector<Hinge> hinges,
   const double scale = extent(nodes_);
   for (std::size_t i = 0; i < bars_.size(); ++i) check_bar(bars_[i], i, nodes_, scale);
   for (std::size_t i = 0; i < hinges_.size(); ++i) check_hinge(hinges_[i], i, nodes_, scale);
+  for (std::size_t i = 0; i < cables_.size(); ++i) check_cable(cables_[i], i, nodes_, scale);
+}
+
+Model Model::with_cable_rest_lengths(const std::vector<double>& rest_lengths) const {
+  if (rest_lengths.size() != cables_.size()) {
+    throw std::invalid_argument("rest_lengths: has " + std::to_string(rest_lengths.size()) +
+                                " entries, the model has " + std::to_string(cables_.size()) +
+                                " cables");
+  }
+  Model copy = *this;
+  for (std::size_t i = 0; i < rest_lengths.size(); ++i) {
+    require_positive("rest_lengths[" + std::to_string(i) + "]", rest_lengths[i]);
+    copy.cables_[i].rest_length = rest_lengths[i];
+  }
+  return copy;
 }
 
 NodeMatrix Model::deformed(const VectorX& u) const {

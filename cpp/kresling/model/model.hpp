@@ -1,7 +1,8 @@
 #pragma once
 /// \file model.hpp
-/// A bar-and-hinge model: nodes, bars, rotational-spring hinges and supports. Immutable once
-/// built; the constructor validates everything and names the offending element.
+/// A bar-and-hinge model: nodes, bars, rotational-spring hinges, optional sliding cables and
+/// supports. Immutable once built; the constructor validates everything and names the
+/// offending element.
 
 #include <array>
 #include <cstdint>
@@ -30,6 +31,17 @@ struct Hinge {
   elements::SpringLaw law;
 };
 
+/// A tendon through nodes[0] (anchor), nodes[1..k-2] (frictionless guides) and nodes[k-1]
+/// (anchor): tension only, energy from its total length (elements/cable.hpp).
+struct Cable {
+  std::vector<Index> nodes;  ///< k >= 2 distinct nodes, in the order the cable runs
+  double stiffness = 0.0;    ///< axial rigidity EA [N]
+  double rest_length = 0.0;  ///< L [mm]: the actuation input (pulling shortens it)
+};
+
+/// Most nodes a cable may pass through (its 3k x 3k tangent's entries are indexed in 16 bits).
+constexpr std::size_t kMaxCableNodes = 85;
+
 /// Throw std::invalid_argument (naming hinge `index`) when its nodes are out of range or
 /// repeated, its axis has zero length, or a wing lies on the axis line: the dihedral angle
 /// is undefined there. Model validates every hinge with it; callers that compute angles
@@ -42,9 +54,11 @@ class Model {
   /// `fixed` has one entry per DOF (3 per node, x y z): nonzero = supported (u = 0).
   /// Throws std::invalid_argument naming the element and the problem for: non-finite or
   /// out-of-range data, repeated nodes in an element, zero-length bars, hinges whose wing
-  /// lies on the axis line, negative or non-finite stiffness, bad spring limits.
+  /// lies on the axis line, negative or non-finite stiffness, bad spring limits; cables with
+  /// fewer than 2 or more than kMaxCableNodes nodes, repeated nodes, coincident consecutive
+  /// nodes, or a stiffness or rest length that is not positive.
   Model(NodeMatrix nodes, std::vector<Bar> bars, std::vector<Hinge> hinges,
-        std::vector<std::uint8_t> fixed);
+        std::vector<std::uint8_t> fixed, std::vector<Cable> cables = {});
 
   Index num_nodes() const { return nodes_.rows(); }
   Index num_dofs() const { return 3 * nodes_.rows(); }
@@ -52,6 +66,11 @@ class Model {
   const std::vector<Bar>& bars() const { return bars_; }
   const std::vector<Hinge>& hinges() const { return hinges_; }
   const std::vector<std::uint8_t>& fixed() const { return fixed_; }
+  const std::vector<Cable>& cables() const { return cables_; }
+
+  /// A copy with the cables' rest lengths replaced (one per cable, positive): how a tendon
+  /// is pulled. Same elements, so an Assembler can rebind to it.
+  Model with_cable_rest_lengths(const std::vector<double>& rest_lengths) const;
 
   /// Node coordinates X + u, with u ordered like the DOFs.
   NodeMatrix deformed(const VectorX& u) const;
@@ -61,6 +80,7 @@ class Model {
   std::vector<Bar> bars_;
   std::vector<Hinge> hinges_;
   std::vector<std::uint8_t> fixed_;
+  std::vector<Cable> cables_;
 };
 
 }  // namespace kresling::model
