@@ -59,3 +59,25 @@ def leaves_a_figure_open(out_dir, quick=True):
 
     plt.figure()
     return Section("Leaves a pyplot figure open")
+
+
+def with_views(out_dir, quick=True):
+    """Two interactive views (plotly figures as JSON, one with frames and a title holding
+    ``</b>``) and no checks."""
+    import sys
+
+    sys.path.insert(0, str(__import__("pathlib").Path(__file__).parent))
+    from kresling.view import view_model, view_path
+    from view_cases import miura_sheet
+
+    out_dir.mkdir(parents=True, exist_ok=True)
+    model, topo, family, path = miura_sheet()
+    section = Section("Views")
+    first = out_dir / "first.json"
+    view_path(model, path, triangles=topo.triangles, hinge_family=family, max_frames=4,
+              title="a <b>bold</b> title").write_json(first)
+    section.add_view(first, "A path <b>animated</b>.")
+    second = out_dir / "second.json"
+    view_model(model).write_json(second)
+    section.add_view(second, "The sheet at rest.")
+    return section

@@ -14,9 +14,9 @@ from kresling.view import FAMILY_STYLES, element_energy, view_model, view_path, 
 from kresling.view.animation import select_rows
 from kresling.view.fields import hinge_angle_change
 from kresling.view.surface import orient_triangles, triangles_from_hinges
-from view_cases import kresling_bending, miura_sheet
+from view_cases import kresling_bending, miura_sheet, page_figure
 
-ROUNDING = 0.5e-4 + 1e-12  # coordinates are rounded to 1e-4 mm
+ROUNDING = 0.5e-10 + 1e-12  # coordinates are rounded to 1e-10 mm
 
 
 @pytest.fixture(scope="module")
@@ -38,11 +38,12 @@ def trace(fig_or_frame, name, figure=None):
 
 
 def segments(line):
-    """(E, 2, 3) end points of the segments of a line trace, and its per-point colours."""
+    """(E, 2, 3) end points of the segments of a line trace: consecutive points of its
+    polylines (separated by gaps)."""
     xyz = np.column_stack([np.array(line.x, dtype=float), np.array(line.y, dtype=float),
                            np.array(line.z, dtype=float)])
-    assert np.isnan(xyz[2::3]).all()
-    return np.stack([xyz[0::3], xyz[1::3]], axis=1)
+    both = ~np.isnan(xyz[:-1]).any(axis=1) & ~np.isnan(xyz[1:]).any(axis=1)
+    return np.stack([xyz[:-1][both], xyz[1:][both]], axis=1)
 
 
 def edge_nodes(ends, points):
@@ -94,8 +95,9 @@ def test_mesh_and_creases_follow_the_path(miura):
         # Every crease family's lines end at the displaced nodes too.
         for name in ("mountain", "valley", "bend", "boundary"):
             ends = segments(trace(frame, name, fig))
-            edge_nodes(ends, points)
-            assert np.abs(np.round(ends, 4) - ends).max() < 1e-9   # rounded to 1e-4 mm
+            edges = edge_nodes(ends, points)
+            assert len({tuple(e) for e in edges.tolist()}) == len(edges)   # each edge once
+            assert np.abs(np.round(ends, 10) - ends).max() < 1e-12  # rounded to 1e-10 mm
 
 
 def test_the_marker_follows_the_frame(miura):
@@ -121,7 +123,8 @@ def test_default_curve_is_the_load_factor_against_the_dof_that_moves_most(miura)
     assert dof == 3 * 8 + 2  # the pulled corner rises most
     assert fig.layout.xaxis.title.text == "uz of node 8 [mm]"
     curve = trace(fig, "path")
-    assert np.abs(np.array(curve.x) - path.displacement[:, dof]).max() <= ROUNDING
+    x = path.displacement[:, dof]   # to 6 significant digits of the largest
+    assert np.abs(np.array(curve.x) - x).max() <= 5e-6 * np.abs(x).max()
     assert np.allclose(curve.y, path.load_factor)
     last = fig.frames[-1]
     assert trace(last, "increment shown", fig).y[0] == pytest.approx(1.0)
@@ -150,9 +153,9 @@ def test_creases_are_coloured_by_family(miura):
         line = trace(fig, name).line
         assert (line.color, line.width, line.dash) == FAMILY_STYLES[name]
     assert FAMILY_STYLES["mountain"][0] == "#d62728" and FAMILY_STYLES["valley"][0] == "#1f77b4"
-    # The boundary is the edges of one triangle: 8 on the 2 x 2 sheet.
-    assert len(trace(fig, "boundary").x) == 3 * 8
-    counts = {name: len(trace(fig, name).x) // 3 for name in ("mountain", "valley", "bend")}
+    # The boundary is the edges of one triangle: 8 on the 2 x 2 sheet, one closed polyline.
+    assert len(segments(trace(fig, "boundary"))) == 8 and len(trace(fig, "boundary").x) == 9
+    counts = {name: len(segments(trace(fig, name))) for name in ("mountain", "valley", "bend")}
     assert counts == {"mountain": int((family == "mountain").sum()),
                       "valley": int((family == "valley").sum()),
                       "bend": int((family == "bend").sum())}
@@ -290,8 +293,44 @@ def test_coordinates_are_rounded_in_the_page(miura, tmp_path):
     z_lists = re.findall(r'"z":\[([^\]]*)\]', figure_json)   # every 3D trace and its frames
     assert len(z_lists) >= len(path.load_factor) * 3
     decimals = [len(d) for z in z_lists for d in re.findall(r"\.(\d+)", z)]
-    assert decimals and max(decimals) <= 4
+    assert decimals and max(decimals) <= 10
     assert '"bdata"' not in figure_json    # plain numbers, not base64 float64 arrays
+
+
+@pytest.fixture(scope="module")
+def kresling_page(tmp_path_factory):
+    """A 350-increment bending test as a page of 200 frames, and its figure's JSON."""
+    specimen, path = kresling_bending(steps=350)
+    page = write_html(view_path(specimen, path, max_frames=200),
+                      tmp_path_factory.mktemp("page") / "view.html")
+    return specimen, path, page_figure(page.read_text(encoding="utf-8"))
+
+
+@pytest.mark.parametrize("increment", [1, 173, 350])
+def test_the_page_holds_the_path_to_1e_9_mm(kresling_page, increment):
+    """The frames in the page's JSON are the path: every node of the mesh, and every point of
+    the crease lines, at ``model.nodes + path.displacement[K - 1]`` to 1e-9 mm."""
+    specimen, path, (data, layout, frames) = kresling_page
+    names = [frame["name"] for frame in frames]
+    assert str(increment) in names and len(names) == 200
+    frame = frames[names.index(str(increment))]
+    expected = specimen.model.nodes + path.displacement[increment - 1].reshape(-1, 3)
+    by_trace = dict(zip(frame["traces"], frame["data"]))
+    mesh = by_trace[0]
+    xyz = np.column_stack([mesh["x"], mesh["y"], mesh["z"]])
+    assert xyz.shape == expected.shape
+    assert np.abs(xyz - expected).max() <= 1e-9
+    lines = [i for i, trace in enumerate(data) if trace["type"] == "scatter3d"
+             and trace.get("mode") == "lines"]
+    assert {data[i]["name"] for i in lines} >= {"valley", "mountain", "polygon_edge"}
+    for i in lines:
+        points = np.array([p for p in zip(by_trace[i]["x"], by_trace[i]["y"], by_trace[i]["z"])
+                           if None not in p], dtype=float)
+        distance = np.linalg.norm(points[:, None, :] - expected[None, :, :], axis=2).min(axis=1)
+        assert distance.max() <= 1e-9, data[i]["name"]
+    # The figure's initial data is increment 1, as exactly.
+    first = np.column_stack([data[0]["x"], data[0]["y"], data[0]["z"]])
+    assert np.abs(first - specimen.model.nodes - path.displacement[0].reshape(-1, 3)).max() <= 1e-9
 
 
 # -- a Kresling specimen -----------------------------------------------------------------

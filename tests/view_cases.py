@@ -54,3 +54,20 @@ def kresling_bending(steps=40, deflection=5.0, design=Design(8, 0.8, 30), cells=
     prescribed[specimen.level_nodes(cells // 2), 1] = -deflection
     return specimen, solve_displacement_control(specimen.model, prescribed, steps,
                                                 extrapolation=2)
+
+
+def page_figure(page):
+    """The figure an HTML page of :func:`kresling.view.write_html` holds, parsed from the
+    JSON the page passes to plotly: ``(data, layout, frames)`` (lists and dicts; frames
+    empty for a page without them)."""
+    import json
+
+    decoder = json.JSONDecoder()
+    call = page.index("Plotly.newPlot(")
+    data, end = decoder.raw_decode(page, page.index("[", call))
+    layout, end = decoder.raw_decode(page, page.index("{", end))
+    frames = []
+    if "Plotly.addFrames(" in page[end:]:
+        frames, _ = decoder.raw_decode(page, page.index("[", page.index("Plotly.addFrames(",
+                                                                        end)))
+    return data, layout, frames

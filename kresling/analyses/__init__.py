@@ -4,7 +4,8 @@ orientation study (Appendix A), the facet angle Psi of the built cells (figure 3
 snap-through test of bistability strength (section 3.5).
 
 Submodules beyond these: ``table3`` (Table 3 side by side), ``plots`` (figures 3.5-3.7,
-3.14, 3.16), ``specimen_views`` (FOLD export, 3D plot). The report's section on them is
+3.14, 3.16), ``specimen_views`` (FOLD export, 3D plot), ``paths`` (the bending and
+snap-through paths with every node at every increment, for views). The report's section on them is
 :mod:`kresling.report.sections.analyses`.
 """
 

@@ -143,6 +143,36 @@ def write_specimen_fold(path, specimen, **options):
     return write_fold_document(path, specimen_fold(specimen, **options))
 
 
+def _equal_axes(ax, points, view=None) -> None:
+    """Equal scales on x, y and z around ``points``, few ticks, labels clear of the ticks.
+
+    An axis seen end on (looking along x or y, e.g. ``view=(10, 0)``) gets no ticks and no
+    label: they would fall on top of each other."""
+    from matplotlib.ticker import MaxNLocator
+
+    low, high = points.min(axis=0), points.max(axis=0)
+    span = np.maximum(high - low, 1e-9)
+    pad = 0.02 * span.max()
+    ax.set_xlim(low[0] - pad, high[0] + pad), ax.set_ylim(low[1] - pad, high[1] + pad)
+    ax.set_zlim(low[2] - pad, high[2] + pad)
+    # Equal scales; zoomed out a little so that the tick labels and axis labels of a tall or
+    # wide specimen stay inside the axes' box.
+    ax.set_box_aspect(span + 2 * pad, zoom=0.88)
+    for axis, name in zip((ax.xaxis, ax.yaxis, ax.zaxis), "xyz"):
+        axis.set_major_locator(MaxNLocator(nbins=4, steps=[1, 2, 2.5, 5, 10]))
+        axis.set_label_text(f"{name} [mm]", fontsize=9)
+        axis.labelpad = 11 if name == "z" else 4
+    ax.tick_params(labelsize=7, pad=1)
+    ax.patch.set_alpha(0.0)   # a neighbour's labels reaching into this axes stay visible
+    if view is not None:
+        azimuth = np.radians(view[1])
+        end_on = {"x": abs(np.sin(azimuth)) < 0.2, "y": abs(np.cos(azimuth)) < 0.2}
+        for name, hidden in end_on.items():
+            if hidden:
+                getattr(ax, f"set_{name}ticks")([])
+                getattr(ax, f"set_{name}label")("")
+
+
 def plot_specimen(specimen, displacement=None, *, scale: float = 1.0, ax=None,
                   undeformed: bool = True, title: str = "", view=None):
     """Draw a specimen in 3D: facets, creases by family, optionally displaced.
@@ -183,14 +213,9 @@ def plot_specimen(specimen, displacement=None, *, scale: float = 1.0, ax=None,
                                                  linewidths=0.9))
     if undeformed and displacement is not None:
         ax.add_collection3d(Line3DCollection(X[edges], colors="0.75", linewidths=0.4))
-    span = np.ptp(np.vstack([X, Y]), axis=0)
-    low = np.minimum(X.min(axis=0), Y.min(axis=0))
-    ax.set_xlim(low[0], low[0] + span[0]), ax.set_ylim(low[1], low[1] + span[1])
-    ax.set_zlim(low[2], low[2] + span[2])
-    ax.set_box_aspect(np.maximum(span, 1e-9))
-    ax.set_xlabel("x [mm]"), ax.set_ylabel("y [mm]"), ax.set_zlabel("z [mm]")
     if view is not None:
         ax.view_init(*view)
+    _equal_axes(ax, np.vstack([X, Y]), view)
     d = specimen.design
     states = "extended" if set(specimen.states) == {1} else \
         "contracted" if set(specimen.states) == {0} else f"states {list(specimen.states)}"

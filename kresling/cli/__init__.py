@@ -15,8 +15,8 @@ import os
 import sys
 
 # Subcommand modules, in the order ``kresling --help`` lists them.
-_COMMANDS = ("design", "bend", "snap", "simulate", "sweep", "pattern", "fit", "manipulator",
-             "reproduce")
+_COMMANDS = ("design", "bend", "snap", "simulate", "view", "sweep", "explore", "pattern", "fit",
+             "manipulator", "reproduce")
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -26,6 +26,12 @@ def register(subparsers) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--plot", metavar="FILE.png",
                         help="write the moment-angle figure (like thesis figures 3.5-3.7)")
+    parser.add_argument("--view", metavar="FILE.html",
+                        help="write an interactive page of the bending test in both states "
+                             "(two specimens animated together beside both moment-angle "
+                             "curves; FILE.html#frame=K opens at increment K)")
+    parser.add_argument("--view-frames", type=int, default=100, metavar="M",
+                        help="at most M increments in the page (default 100)")
     parser.set_defaults(func=run)
 
 
@@ -38,6 +44,10 @@ def run(args) -> int:
     from kresling.analyses import bending_stiffness, snap_through
 
     design = design_from_args(args)
+    if args.view:
+        from kresling.view import check_writable
+
+        check_writable(args.view)   # before the runs, not after
     if args.deflection_rad is None:
         protocol, options = "5mm", {}
     else:
@@ -66,6 +76,11 @@ def run(args) -> int:
         print_table(rows, ("quantity", "value", "unit", "meaning"))
     if args.plot:
         _plot(bending, args.plot)
+    if args.view:
+        from kresling.view import view_bending, write_html
+
+        write_html(view_bending(design, protocol if args.deflection_rad is None else "0.001rad",
+                                max_frames=args.view_frames, **options), args.view)
     for name, run_result in (("extended", bending.extended), ("contracted", bending.contracted),
                              ("snap-through", snap)):
         if not run_result.completed:

@@ -37,6 +37,9 @@ def register(subparsers) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--plot", metavar="FILE.png",
                         help="write the force-travel figure (like thesis figure 3.16)")
+    parser.add_argument("--view", metavar="FILE.html",
+                        help="write an interactive page of the snap-through path beside the "
+                             "force-travel curve (FILE.html#frame=K opens at increment K)")
     parser.set_defaults(func=run)
 
 
@@ -44,6 +47,10 @@ def run(args) -> int:
     from kresling.analyses import snap_through
 
     design = design_from_args(args)
+    if args.view:
+        from kresling.view import check_writable
+
+        check_writable(args.view)   # before the run, not after
     result = snap_through(design, steps=args.steps)
     summary = {key: finite_or_none(value) for key, value in result.summary().items()}
     summary["design"] = {"n": design.n, "lam": design.lam, "Lc": design.Lc, "R": design.R}
@@ -60,6 +67,10 @@ def run(args) -> int:
         from kresling.analyses.plots import plot_snap_through
 
         plot_snap_through(result).figure.savefig(args.plot, dpi=150)
+    if args.view:
+        from kresling.view import view_snap_through, write_html
+
+        write_html(view_snap_through(design, steps=args.steps, result=result), args.view)
     if not result.completed:
         print(f"kresling snap: warning: the run stopped early: {result.message}", file=sys.stderr)
         return 1

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import base64
 import csv
+import json
 import math
 from html import escape
 from pathlib import Path
@@ -35,6 +36,9 @@ figure { display: inline-block; margin: 0.5em 1em 1em 0; max-width: 100%;
          vertical-align: top; }
 figure img { max-width: 100%; height: auto; border: 1px solid #ddd; }
 figcaption { max-width: 640px; }
+figure.view { display: block; margin: 0.5em 0 1.2em; }
+figure.view > div { width: 100%; border: 1px solid #ddd; }
+figure.view figcaption { max-width: 900px; }
 .wide { overflow-x: auto; } td.mark { white-space: nowrap; }
 figcaption, .note { font-size: 12.5px; color: #555; }
 pre { background: #f7f7f7; padding: 0.6em; overflow-x: auto; font-size: 12px; }
@@ -68,15 +72,17 @@ def format_number(value, tolerance: float = 0.0) -> str:
 def render_html(document: dict, out_dir) -> str:
     """The page for a report document (``report.json``'s content) written in ``out_dir``."""
     mode = escape(document["mode"])
+    views = any(record.get("views") for record in document["sections"])
     parts = [
         "<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
         '<meta name="viewport" content="width=device-width, initial-scale=1">',
         f"<title>kresling: reproduction of the thesis ({mode})</title>",
-        f"<style>{_STYLE}</style></head><body>",
+        f"<style>{_STYLE}</style>", _plotly_script() if views else "", "</head><body>",
         "<h1>Bistable generalized Kresling origami: the thesis, reproduced</h1>",
         _header(document), summary_table_html(document),
     ]
-    parts += [_section_html(record, Path(out_dir)) for record in document["sections"]]
+    counter = iter(range(1, 1_000_000))
+    parts += [_section_html(record, Path(out_dir), counter) for record in document["sections"]]
     parts.append("</body></html>")
     return "\n".join(parts)
 
@@ -127,7 +133,7 @@ def _outcome_class(record: dict) -> str:
     return "pass"
 
 
-def _section_html(record: dict, out_dir: Path) -> str:
+def _section_html(record: dict, out_dir: Path, counter=None) -> str:
     key = escape(record["key"])
     parts = [f'<section id="{key}"><h2>{escape(record["part"])}: {escape(record["title"])}</h2>',
              f'<p class="{_outcome_class(record)}">{_checks_sentence(record)}'
@@ -142,6 +148,9 @@ def _section_html(record: dict, out_dir: Path) -> str:
     if record["checks"]:
         parts.append(_checks_table(record["checks"]))
     parts += [_figure_html(item, out_dir) for item in record["figures"]]
+    counter = counter if counter is not None else iter(range(1, 1_000_000))
+    parts += [_view_html(item, out_dir, f"view-{next(counter)}")
+              for item in record.get("views", [])]
     parts += [_table_html(item, out_dir) for item in record["tables"]]
     parts.append("</section>")
     return "\n".join(parts)
@@ -205,6 +214,30 @@ def _figure_html(item: dict, out_dir: Path) -> str:
     size = f' width="{width}"' if width else ""
     data = base64.b64encode(png).decode("ascii")
     return (f'<figure><img src="data:image/png;base64,{data}"{size} alt="{caption}">'
+            f'<figcaption>{caption} <a href="{href}">{path}</a></figcaption></figure>')
+
+
+def _plotly_script() -> str:
+    """plotly's JavaScript, inline (the page stays self-contained and offline)."""
+    from plotly.offline import get_plotlyjs
+
+    return f'<script type="text/javascript">{get_plotlyjs()}</script>'
+
+
+def _view_html(item: dict, out_dir: Path, element_id: str) -> str:
+    """An interactive view: the figure's JSON (frames included) drawn by plotly; its slider
+    and play button step through the frames."""
+    caption, path, href = escape(item["caption"]), escape(item["path"]), _href(item["path"])
+    figure = json.loads((out_dir / item["path"]).read_text(encoding="utf-8"))
+    height = int(figure.get("layout", {}).get("height") or 650)
+    # "</" would end the script early; "<\/" is the same string to JavaScript.
+    text = json.dumps(figure, separators=(",", ":")).replace("</", "<\\/")
+    script = (f"(function () {{ var fig = {text}; var id = '{element_id}';"
+              " Plotly.newPlot(id, fig.data, fig.layout, {responsive: true, displaylogo: false})"
+              ".then(function () { if (fig.frames && fig.frames.length) {"
+              " return Plotly.addFrames(id, fig.frames); } }); })();")
+    return (f'<figure class="view"><div id="{element_id}" style="height:{height}px"></div>'
+            f"<script>{script}</script>"
             f'<figcaption>{caption} <a href="{href}">{path}</a></figcaption></figure>')
 
 

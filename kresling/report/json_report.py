@@ -9,7 +9,10 @@ Layout::
                    "checks": [{"name", "value", "reference", "source", "unit", "rtol",
                                "atol", "tolerance", "difference", "relative_difference",
                                "passed", "note"}],
-                   "figures": [{"path", "caption"}], "tables": [{"path", "caption"}]}]}
+                   "figures": [{"path", "caption"}], "tables": [{"path", "caption"}],
+                   "views": [{"path", "caption"}]}]}
+
+A view is an interactive plotly figure saved as JSON beside the page.
 
 Paths are relative to the report's directory. Non-finite numbers are written as ``null``
 (JSON has no NaN); such a check never passes.
@@ -71,6 +74,7 @@ def _section_record(run, out_dir) -> dict:
         "checks": [check_record(check) for check in run.checks],
         "figures": _files(section.figures, out_dir) if section else [],
         "tables": _files(section.tables, out_dir) if section else [],
+        "views": _files(getattr(section, "views", []), out_dir) if section else [],
     }
 
 

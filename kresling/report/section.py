@@ -81,6 +81,10 @@ class Section:
         PNG files (inside the report's directory) and their captions.
     tables : list of (Path, str)
         CSV files and their captions.
+    views : list of (Path, str)
+        Interactive views: plotly figures saved as JSON (``Figure.write_json``, frames
+        included) inside the report's directory, and their captions; the page draws them
+        with plotly's JavaScript, inlined once.
     seconds : float
         Wall time the section took (set by the report).
     """
@@ -90,6 +94,7 @@ class Section:
     checks: list = field(default_factory=list)
     figures: list = field(default_factory=list)
     tables: list = field(default_factory=list)
+    views: list = field(default_factory=list)
     seconds: float = 0.0
 
     @property
@@ -101,3 +106,6 @@ class Section:
 
     def add_table(self, path: Path, caption: str) -> None:
         self.tables.append((Path(path), caption))
+
+    def add_view(self, path: Path, caption: str) -> None:
+        self.views.append((Path(path), caption))

@@ -89,7 +89,7 @@ def _animate_args(names, duration):
                     "transition": {"duration": 0}, "fromcurrent": True}]
 
 
-def slider(names, num_steps: int, active: int = 0) -> dict:
+def slider(names, num_steps: int, active: int = 0, prefix: str = "increment ") -> dict:
     """A slider with one step per frame, labelled by increment.
 
     Parameters
@@ -100,10 +100,12 @@ def slider(names, num_steps: int, active: int = 0) -> dict:
         S, shown as "increment K / S".
     active : int
         Index of the step shown first.
+    prefix : str, default "increment "
+        What the frames are (a FOLD file's: "frame ").
     """
     return dict(
         active=int(active), x=0.04, len=0.92, y=0.0, yanchor="top", pad=dict(t=36, b=6),
-        currentvalue=dict(prefix="increment ", suffix=f" / {num_steps}", visible=True,
+        currentvalue=dict(prefix=prefix, suffix=f" / {num_steps}", visible=True,
                           xanchor="left", font=dict(size=14)),
         transition=dict(duration=0),
         steps=[dict(label=name, method="animate", args=_animate_args([name], 0))

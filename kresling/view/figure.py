@@ -3,6 +3,8 @@ its load-displacement curve (:func:`view_path`)."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import plotly.graph_objects as go
 
@@ -12,19 +14,25 @@ from kresling.view.fields import FIELDS, check_field, edge_values, field_edges, 
     significant_decimals
 from kresling.view.inputs import view_inputs
 from kresling.view.surface import (crease_groups, family_style, line_trace, mesh_trace,
-                                   rounded, segments_xyz)
+                                   polyline_order, rounded, segments_xyz)
 
-__all__ = ["view_model", "view_path"]
+__all__ = ["view_model", "view_path", "PathPanel", "PathCurve", "animated_figure"]
 
 _FIELD_WIDTH = 7  # px
 
 
 class _Scene:
     """The traces of the 3D scene for one model, in a fixed order: the panels, then the
-    creases by family (or, with a field, the field's edges and the boundary)."""
+    creases by family (or, with a field, the field's edges and the boundary).
 
-    def __init__(self, inputs, field, values, scene="scene", colorbar_x=None):
+    ``values`` sets the field's colour range (every value the scene, or the scenes sharing
+    the range, will show); ``show_scale`` draws its colour bar, ``show_legend`` puts the
+    scene's traces in the legend (a second scene shares the first one's entries)."""
+
+    def __init__(self, inputs, field, values, scene="scene", colorbar_x=None,
+                 show_scale=True, show_legend=True):
         self.inputs, self.field, self.scene = inputs, field, scene
+        self.show_legend = show_legend
         model = inputs.model
         self.groups = crease_groups(model.hinges, inputs.hinge_family, inputs.triangles)
         if field is not None:
@@ -42,24 +50,32 @@ class _Scene:
             largest = float(np.ceil(largest * 10.0 ** self.decimals) / 10.0 ** self.decimals)
             self.crange = (-largest, largest) if spec.signed else \
                 (min(0.0, float(values.min()) if values.size else 0.0), largest)
+            self.show_scale = show_scale
             self.colorbar = dict(title=dict(text=spec.label, side="right"), len=0.75,
                                  thickness=14)
             if colorbar_x is not None:
                 self.colorbar.update(x=colorbar_x, xanchor="left")
+        others = []
+        self.styles = {family: family_style(family, others) for family in self.groups}
+        self.orders = {family: polyline_order(edges) for family, edges in self.groups.items()}
 
     def traces(self, points, values=None, *, coordinates_only=False):
         """The scene's traces at node positions ``points`` (N, 3) [mm] (and the field's
         edge values)."""
         out = []
+        legend = None if self.show_legend else False
         if len(self.inputs.triangles):
-            out.append(mesh_trace(points, self.inputs.triangles, scene=self.scene,
-                                  coordinates_only=coordinates_only))
-        others = []
+            mesh = mesh_trace(points, self.inputs.triangles, scene=self.scene,
+                              coordinates_only=coordinates_only)
+            if not coordinates_only:
+                mesh.update(legendgroup="panels", showlegend=self.show_legend)
+            out.append(mesh)
         for family, edges in self.groups.items():
-            colour, width, dash = family_style(family, others)
+            colour, width, dash = self.styles[family]
             out.append(line_trace(points, edges, name=family, colour=colour, width=width,
-                                  dash=dash, scene=self.scene,
-                                  coordinates_only=coordinates_only))
+                                  dash=dash, scene=self.scene, order=self.orders[family],
+                                  coordinates_only=coordinates_only, legendgroup=family,
+                                  showlegend=legend))
         if self.field is not None:
             out.append(self._field_trace(points, values, coordinates_only))
         return out
@@ -71,10 +87,11 @@ class _Scene:
             return go.Scatter3d(x=x, y=y, z=z, line=dict(color=colour))
         line = dict(color=colour, colorscale=FIELDS[self.field].colorscale,
                     cmin=self.crange[0], cmax=self.crange[1], width=_FIELD_WIDTH,
-                    showscale=True, colorbar=self.colorbar)
+                    showscale=self.show_scale, colorbar=self.colorbar)
         return go.Scatter3d(x=x, y=y, z=z, mode="lines", line=line,
                             name=FIELDS[self.field].label, hoverinfo="name",
-                            scene=self.scene, connectgaps=False)
+                            scene=self.scene, connectgaps=False,
+                            legendgroup="field", showlegend=self.show_legend)
 
 
 def _describe(model):
@@ -97,25 +114,25 @@ def _box_trace(points_list, scene="scene"):
     """Two invisible points at the box's corners: with ``aspectmode="data"`` the scene's
     scale then stays the same in every frame (the view holds still while playing)."""
     low, high = _box(points_list)
-    return go.Scatter3d(x=rounded([low[0], high[0]]), y=rounded([low[1], high[1]]),
-                        z=rounded([low[2], high[2]]), mode="markers",
+    return go.Scatter3d(x=rounded([low[0], high[0]], 4), y=rounded([low[1], high[1]], 4),
+                        z=rounded([low[2], high[2]], 4), mode="markers",
                         marker=dict(size=1, opacity=0), hoverinfo="skip", showlegend=False,
                         name="extent", scene=scene)
 
 
-def _scene_layout(points_list):
+def _scene_layout(points_list, distance=2.2):
     """Equal scales on x, y, z (``aspectmode="data"``), axes fixed to the box of every
-    frame."""
+    frame; the camera at least ``distance`` from the centre (in plotly's scene units)."""
     low, high = _box(points_list)
     axes = {}
     for k, a in enumerate("xyz"):
         axes[f"{a}axis"] = dict(title=dict(text=f"{a} [mm]"),
-                                range=rounded([low[k], high[k]]))
+                                range=rounded([low[k], high[k]], 4))
     # plotly scales the box to sides span / (geometric mean of the spans); the camera
     # steps back by the longest side so that a tall or wide model fits.
     span = np.maximum(high - low, 1e-12)
     longest = float(span.max() / np.exp(np.log(span).mean()))
-    eye = np.array([1.0, 1.0, 0.7]) / np.linalg.norm([1.0, 1.0, 0.7]) * max(1.4 * longest, 2.2)
+    eye = np.array([1.0, 1.0, 0.7]) / np.linalg.norm([1.0, 1.0, 0.7]) * max(1.4 * longest, distance)
     return dict(aspectmode="data", camera=dict(eye=dict(zip("xyz", rounded(eye, 3)))), **axes)
 
 
@@ -136,7 +153,7 @@ def view_model(model, u=None, *, triangles=None, hinge_family=None, field=None,
     grey, join cyan (a Kresling specimen's polygon edges purple, its polygon spokes light
     grey dashed); other names get colours of their own. With a ``field``, the edges are
     coloured by it instead (the family lines are then left out), with a colour bar.
-    Coordinates are rounded to 1e-4 mm in the figure.
+    Coordinates are rounded to 1e-10 mm in the figure.
 
     Parameters
     ----------
@@ -194,21 +211,22 @@ def view_path(model, path, *, triangles=None, hinge_family=None, field=None, cur
     with a marker at that increment. A slider ("increment K / S") and play/pause buttons
     step through the increments; frame ``"K"`` shows increment K, row ``K - 1`` of the
     path's arrays. To keep the figure (and an HTML file of it) small, at most
-    ``max_frames`` increments become frames, and coordinates are rounded to 1e-4 mm
-    (field values to 6 significant digits of the largest) in the figure; the curve keeps
-    every increment.
+    ``max_frames`` increments become frames, coordinates are rounded to 1e-10 mm (field
+    values to 6 significant digits of the largest) and each crease family is drawn as few
+    polylines as it allows; the curve keeps every increment.
 
     Parameters
     ----------
     model : kresling.model.Model or an object with ``.model`` and ``.hinge_family``
         As in :func:`view_model`.
-    path : kresling.solvers.PathResult
-        ``displacement`` (S, 3N) [mm] and ``load_factor`` (S,).
+    path : kresling.solvers.PathResult or an object with ``displacement`` (S, 3N)
+        ``displacement`` [mm] and (for the default curve) ``load_factor`` (S,).
     triangles, hinge_family, field
         As in :func:`view_model`. A field's colour range is fixed over the frames.
-    curve : (array_like, array_like, str, str), optional
+    curve : (array_like, array_like, str, str) or False, optional
         ``(x, y, x_label, y_label)`` with x and y of shape (S,). Default: the load factor
-        against the displacement of the DOF that moves most over the path [mm].
+        against the displacement of the DOF that moves most over the path [mm]. False: no
+        curve (the scene alone).
     frame_stride : int, optional
         Show every ``frame_stride``-th increment (and the last). Default: up to
         ``max_frames`` evenly spaced increments, the first and last included.
@@ -233,72 +251,218 @@ def view_path(model, path, *, triangles=None, hinge_family=None, field=None, cur
     >>> fig = view_path(model, path, field="energy")         # doctest: +SKIP
     >>> write_html(fig, "path.html")                          # doctest: +SKIP
     """
-    from plotly.subplots import make_subplots
-
     check_field(field)
     inputs = view_inputs(model, triangles=triangles, hinge_family=hinge_family)
     model = inputs.model
-    displacement = np.asarray(path.displacement, dtype=float)
+    displacement = _check_path(model, path)
     num_steps = len(displacement)
-    if num_steps == 0:
-        raise ValueError("path has no increments: nothing to show")
-    if displacement.ndim != 2 or displacement.shape[1] != 3 * len(model.nodes):
-        raise ValueError(f"path.displacement has shape {displacement.shape}: must be "
-                         f"(S, {3 * len(model.nodes)}) for this model")
-    x, y, x_label, y_label = check_curve(curve if curve is not None
-                                         else default_curve(model, path), num_steps)
+    curves = []
+    x_label = y_label = ""
+    if curve is not False:
+        x, y, x_label, y_label = check_curve(curve if curve is not None
+                                             else default_curve(model, path), num_steps)
+        curves = [PathCurve(x, y, "path", "#444444")]
     rows = select_rows(num_steps, frame_stride, max_frames)
-    names = [frame_name(r) for r in rows]
-    points = [_points(model, displacement[r]) for r in rows]
-    values = None
-    if field is not None:
-        edges = field_edges(model, field)
-        values = [edge_values(model, field, displacement[r], edges=edges) for r in rows]
-
-    domain_end = 0.56
-    fig = make_subplots(rows=1, cols=2, specs=[[{"type": "scene"}, {"type": "xy"}]],
-                        column_widths=[0.62, 0.38], horizontal_spacing=0.14)
-    scene = _Scene(inputs, field, np.concatenate(values) if values else None,
-                   colorbar_x=domain_end + 0.005)
-    first = scene.traces(points[0], values[0] if values else None)
-    for trace in first:
-        fig.add_trace(trace, row=1, col=1)
-    moving = list(range(len(first)))
-    fig.add_trace(_box_trace(points), row=1, col=1)
-    curve_decimals = (significant_decimals(x), significant_decimals(y))
-    fig.add_trace(go.Scatter(
-        x=rounded(x, curve_decimals[0]), y=rounded(y, curve_decimals[1]), mode="lines",
-        name="path", line=dict(color="#444444", width=2), showlegend=False,
-        hovertemplate=f"{x_label}: %{{x}}<br>{y_label}: %{{y}}<extra></extra>"), row=1, col=2)
-
-    def marker(row, full=False):
-        args = dict(x=rounded(x[[row]], curve_decimals[0]), y=rounded(y[[row]], curve_decimals[1]))
-        if not full:
-            return go.Scatter(**args)
-        return go.Scatter(**args, mode="markers", name="increment shown", showlegend=False,
-                          cliponaxis=False,
-                          marker=dict(color="#d62728", size=12, line=dict(color="white",
-                                                                          width=1.5)),
-                          hovertemplate="shown: %{x}, %{y}<extra></extra>")
-
-    fig.add_trace(marker(rows[0], full=True), row=1, col=2)
-    marker_index = len(fig.data) - 1
-    fig.frames = [go.Frame(name=name,
-                           data=scene.traces(p, v, coordinates_only=True) + [marker(r)],
-                           traces=moving + [marker_index])
-                  for name, r, p, v in zip(names, rows, points, values or [None] * len(rows))]
-    fig.update_xaxes(title_text=x_label, row=1, col=2)
-    fig.update_yaxes(title_text=y_label, row=1, col=2)
     default = f"Equilibrium path of a bar-and-hinge model ({_describe(model)}), " \
               f"{num_steps} increments"
     if field is not None:
         default += f": {FIELDS[field].label}"
+    return animated_figure([PathPanel(inputs, displacement)], rows,
+                           [frame_name(r) for r in rows], curves=curves, x_label=x_label,
+                           y_label=y_label, field=field, title=title or default,
+                           total=num_steps)
+
+
+def _check_path(model, path) -> np.ndarray:
+    """The path's displacement as (S, 3N), or a ValueError naming what is wrong."""
+    displacement = np.asarray(path.displacement, dtype=float)
+    if len(displacement) == 0:
+        raise ValueError("path has no increments: nothing to show")
+    if displacement.ndim != 2 or displacement.shape[1] != 3 * len(model.nodes):
+        raise ValueError(f"path.displacement has shape {displacement.shape}: must be "
+                         f"(S, {3 * len(model.nodes)}) for this model")
+    return displacement
+
+
+@dataclass(frozen=True)
+class PathPanel:
+    """One 3D scene of an animated figure: a model and its displacements.
+
+    Attributes
+    ----------
+    inputs : kresling.view.inputs.ViewInputs
+        The model, its triangles and families (:func:`kresling.view.inputs.view_inputs`).
+    displacement : ndarray, shape (S, 3N)
+        One row per increment [mm].
+    title : str
+        Shown above the scene (with two scenes or more).
+    """
+
+    inputs: object
+    displacement: np.ndarray
+    title: str = ""
+
+
+@dataclass(frozen=True)
+class PathCurve:
+    """A curve beside the scenes, with a marker that follows the frame.
+
+    Attributes
+    ----------
+    x, y : ndarray, shape (S,)
+        One value per increment.
+    name : str
+        Legend name (a single curve is not put in the legend).
+    colour : str
+    """
+
+    x: np.ndarray
+    y: np.ndarray
+    name: str
+    colour: str
+
+
+_MARKER_COLOUR = "#d62728"
+
+
+def animated_figure(panels, rows, names, *, curves=(), x_label="", y_label="", field=None,
+                    title="", total=None, prefix="increment ", height=700) -> go.Figure:
+    """Scenes animated together over the same increments, beside curves whose markers
+    follow the frame.
+
+    :func:`view_path` is one scene and one curve; a bending test in both states is two
+    scenes and two curves, a FOLD file's frames one scene and no curve.
+
+    Parameters
+    ----------
+    panels : sequence of PathPanel
+        One scene each (one or two), side by side. A panel with fewer rows than a frame
+        asks for shows its last row.
+    rows : sequence of int
+        The rows that become frames, ascending.
+    names : sequence of str
+        The frames' names (the numbers ``#frame=K`` refers to), one per row.
+    curves : sequence of PathCurve
+        Drawn on one pair of axes, right of the scenes; none: the scenes alone.
+    x_label, y_label : str
+        The curves' axis titles.
+    field : str, optional
+        Colour the edges by a field (see :data:`kresling.view.FIELDS`); its colour range is
+        shared by every scene and frame.
+    title : str
+    total : int, optional
+        Shown on the slider as "increment K / total" (default: the largest name).
+    prefix : str, default "increment "
+        What a frame is, on the slider.
+    height : int, default 700
+        Figure height [px].
+
+    Returns
+    -------
+    plotly.graph_objects.Figure
+    """
+    from plotly.subplots import make_subplots
+
+    check_field(field)
+    rows = [int(r) for r in rows]
+    names = [str(name) for name in names]
+    if not panels or len(panels) > 2:
+        raise ValueError(f"panels has {len(panels)} entries: must have one or two")
+    if len(rows) != len(names) or not rows:
+        raise ValueError(f"rows ({len(rows)}) and names ({len(names)}) must have one entry per "
+                         "frame, at least one")
+    points, values = [], []
+    for panel in panels:
+        model = panel.inputs.model
+        last = len(panel.displacement) - 1
+        points.append([_points(model, panel.displacement[min(r, last)]) for r in rows])
+        if field is not None:
+            edges = field_edges(model, field)
+            values.append([edge_values(model, field, panel.displacement[min(r, last)],
+                                       edges=edges) for r in rows])
+    with_curve = bool(curves)
+    scenes_end = (0.56 if len(panels) == 1 else 0.62) if with_curve else 1.0
+    specs = [[{"type": "scene"}] * len(panels) + ([{"type": "xy"}] if with_curve else [])]
+    widths = [scenes_end / len(panels)] * len(panels) + ([1.0 - scenes_end] if with_curve
+                                                          else [])
+    fig = make_subplots(rows=1, cols=len(specs[0]), specs=specs, column_widths=widths,
+                        horizontal_spacing=0.0)
+    shared = np.concatenate([np.concatenate(v) for v in values]) if values else None
+    moving, scenes = [], []
+    for k, panel in enumerate(panels):
+        scene_name = "scene" if k == 0 else f"scene{k + 1}"
+        scene = _Scene(panel.inputs, field, shared, scene=scene_name,
+                       colorbar_x=scenes_end + 0.005, show_scale=k == len(panels) - 1,
+                       show_legend=k == 0)
+        scenes.append(scene)
+        first = scene.traces(points[k][0], values[k][0] if values else None)
+        for trace in first:
+            fig.add_trace(trace, row=1, col=k + 1)
+        moving.append(list(range(len(fig.data) - len(first), len(fig.data))))
+        fig.add_trace(_box_trace(points[k], scene=scene_name), row=1, col=k + 1)
+
+    marker_indices, decimals = [], []
+    single = len(curves) == 1
+    for curve in curves:
+        x, y = np.asarray(curve.x, dtype=float), np.asarray(curve.y, dtype=float)
+        decimals.append((significant_decimals(x), significant_decimals(y)))
+    for curve, (dx, dy) in zip(curves, decimals):
+        fig.add_trace(go.Scatter(
+            x=rounded(curve.x, dx), y=rounded(curve.y, dy), mode="lines", name=curve.name,
+            line=dict(color=curve.colour, width=2), showlegend=not single,
+            hovertemplate=("" if single else f"{curve.name}<br>")
+            + f"{x_label}: %{{x}}<br>{y_label}: %{{y}}<extra></extra>"),
+            row=1, col=len(panels) + 1)
+
+    def marker(curve, dx, dy, row, full=False):
+        row = min(row, len(curve.x) - 1)
+        args = dict(x=rounded(np.asarray(curve.x, dtype=float)[[row]], dx),
+                    y=rounded(np.asarray(curve.y, dtype=float)[[row]], dy))
+        if not full:
+            return go.Scatter(**args)
+        colour = _MARKER_COLOUR if single else curve.colour
+        return go.Scatter(**args, mode="markers", name="increment shown", showlegend=False,
+                          cliponaxis=False,
+                          marker=dict(color=colour, size=12, line=dict(color="white",
+                                                                       width=1.5)),
+                          hovertemplate="shown: %{x}, %{y}<extra></extra>")
+
+    for curve, (dx, dy) in zip(curves, decimals):
+        fig.add_trace(marker(curve, dx, dy, rows[0], full=True), row=1, col=len(panels) + 1)
+        marker_indices.append(len(fig.data) - 1)
+
+    frames = []
+    for i, (name, row) in enumerate(zip(names, rows)):
+        data, traces = [], []
+        for k, scene in enumerate(scenes):
+            data += scene.traces(points[k][i], values[k][i] if values else None,
+                                 coordinates_only=True)
+            traces += moving[k]
+        data += [marker(curve, dx, dy, row) for curve, (dx, dy) in zip(curves, decimals)]
+        frames.append(go.Frame(name=name, data=data, traces=traces + marker_indices))
+    fig.frames = frames
+    total = max(int(name) for name in names) if total is None else int(total)
+    layout = {}
+    for k in range(len(panels)):
+        # A narrow scene (one of two) needs the camera further back to hold a squat model.
+        layout["scene" if k == 0 else f"scene{k + 1}"] = _scene_layout(
+            points[k], 2.2 if len(panels) == 1 else 2.7)
     fig.update_layout(
-        title=dict(text=title or default, x=0.5, xanchor="center"),
-        scene=_scene_layout(points), template="plotly_white", height=700,
-        margin=dict(l=10, r=20, t=100, b=130), uirevision="view",
+        title=dict(text=title, x=0.5, xanchor="center"), template="plotly_white",
+        height=height, margin=dict(l=10, r=20, t=100, b=130), uirevision="view",
         legend=dict(orientation="h", x=0.0, y=1.0, yanchor="bottom"),
-        sliders=[slider(names, num_steps)], updatemenus=[play_buttons()])
-    fig.layout.scene.domain.x = [0.0, domain_end]
-    fig.layout.xaxis.domain = [domain_end + 0.14, 1.0]
+        sliders=[slider(names, total, prefix=prefix)], updatemenus=[play_buttons()], **layout)
+    step = scenes_end / len(panels)
+    for k, panel in enumerate(panels):
+        domain = [round(k * step, 4), round((k + 1) * step, 4)]
+        fig.layout["scene" if k == 0 else f"scene{k + 1}"].domain.x = domain
+        if panel.title and len(panels) > 1:   # below the legend, above the scene
+            fig.layout["scene" if k == 0 else f"scene{k + 1}"].domain.y = [0.0, 0.93]
+            fig.add_annotation(text=f"<b>{panel.title}</b>", x=sum(domain) / 2, y=0.94,
+                               xref="paper", yref="paper", xanchor="center", yanchor="bottom",
+                               showarrow=False, font=dict(size=14))
+    if with_curve:
+        fig.layout.xaxis.domain = [round(scenes_end + 0.14, 4), 1.0]
+        fig.update_xaxes(title_text=x_label, row=1, col=len(panels) + 1)
+        fig.update_yaxes(title_text=y_label, row=1, col=len(panels) + 1)
     return fig

@@ -9,11 +9,12 @@ from __future__ import annotations
 
 import html as _html
 import json
+import os
 from pathlib import Path
 
 import plotly.graph_objects as go
 
-__all__ = ["write_html", "DIV_ID"]
+__all__ = ["write_html", "check_writable", "DIV_ID"]
 
 #: The id of the figure's element in the page.
 DIV_ID = "kresling-view"
@@ -99,6 +100,58 @@ def write_html(figure, path, *, initial_frame=None) -> Path:
                         1)
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(page, encoding="utf-8")
+    return path
+
+
+def check_writable(path) -> Path:
+    """Check, before any computation, that a page can be written at ``path``.
+
+    The file may exist (it is replaced) or not; missing parent folders are fine if they can
+    be made. Nothing is left behind: a probe file made to test the folder is removed.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+
+    Raises
+    ------
+    ValueError
+        Naming the path and why it cannot be written (a folder, a parent that is a file, a
+        folder without write permission).
+
+    Examples
+    --------
+    >>> check_writable("/")
+    Traceback (most recent call last):
+    ...
+    ValueError: cannot write '/': it is a folder
+    """
+    path = Path(path)
+    if path.is_dir():
+        raise ValueError(f"cannot write {str(path)!r}: it is a folder")
+    ancestor = path.parent
+    while not ancestor.exists() and ancestor != ancestor.parent:
+        ancestor = ancestor.parent
+    if not ancestor.is_dir():
+        raise ValueError(f"cannot write {str(path)!r}: {str(ancestor)!r} is not a folder")
+    if ancestor != path.parent:
+        if not os.access(ancestor, os.W_OK | os.X_OK):
+            raise ValueError(f"cannot write {str(path)!r}: no permission to make folders in "
+                             f"{str(ancestor)!r}")
+        return path
+    existed = path.exists()
+    try:
+        with open(path, "a", encoding="utf-8"):
+            pass
+    except OSError as error:
+        raise ValueError(f"cannot write {str(path)!r}: {error.strerror or error}") from None
+    if not existed:
+        path.unlink()
     return path
 
 

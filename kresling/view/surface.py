@@ -1,7 +1,11 @@
 """The folded surface: shaded panels (triangles) and creases drawn as lines by family.
 
 Coordinates go into the figure rounded to :data:`DECIMALS` decimals of a millimetre
-(1e-4 mm), which keeps the page small and is far below what a screen can show.
+(1e-10 mm): a page's frames then give the path's node positions to 1e-10 mm, and the
+numbers stay as short as that allows (a node that does not move, or a round coordinate,
+takes a few characters). The lines of a family are drawn as few polylines as its edges
+allow (:func:`polyline_order`), so each node is written about once per family, not once per
+edge end.
 """
 
 from __future__ import annotations
@@ -12,11 +16,11 @@ import numpy as np
 import plotly.graph_objects as go
 
 __all__ = ["DECIMALS", "FAMILY_STYLES", "triangles_from_hinges", "orient_triangles",
-           "crease_groups", "boundary_edges", "rounded", "segments_xyz", "mesh_trace",
-           "line_trace", "family_style"]
+           "crease_groups", "boundary_edges", "rounded", "segments_xyz", "polyline_order",
+           "polyline_xyz", "mesh_trace", "line_trace", "family_style"]
 
-#: Decimals kept of every coordinate in the figure [mm]: 4, i.e. 1e-4 mm.
-DECIMALS = 4
+#: Decimals kept of every coordinate in the figure [mm]: 10, i.e. 1e-10 mm.
+DECIMALS = 10
 
 #: Line style of each crease family: (colour, width [px], dash). A family not listed here
 #: gets a colour of its own from :data:`OTHER_COLOURS`.
@@ -216,6 +220,95 @@ def segments_xyz(points, edges) -> tuple:
     return tuple(rounded(flat[:, k]) for k in range(3))
 
 
+def polyline_order(edges) -> np.ndarray:
+    """Node indices that draw every edge once, as few polylines as the edges allow.
+
+    Each connected group of edges with ``2k`` odd-degree nodes becomes ``max(k, 1)``
+    polylines (an Euler trail through each after pairing its odd nodes), so a node is
+    listed about once per polyline through it instead of once per edge end.
+
+    Parameters
+    ----------
+    edges : array_like of int, shape (E, 2)
+        Distinct node pairs.
+
+    Returns
+    -------
+    ndarray of int
+        Node indices, ``-1`` between polylines; consecutive nodes of a polyline are the
+        ends of one edge, and every edge appears exactly once.
+
+    Examples
+    --------
+    >>> polyline_order([[0, 1], [1, 2], [2, 0], [2, 3]]).tolist()
+    [3, 2, 0, 1, 2]
+    """
+    edges = np.asarray(edges, dtype=np.int64).reshape(-1, 2)
+    if not len(edges):
+        return np.zeros(0, dtype=np.int64)
+    virtual = -2                      # joined to every odd node: then every degree is even
+    adjacency = {}
+    for e, (a, b) in enumerate(edges.tolist()):
+        adjacency.setdefault(a, []).append((b, e))
+        adjacency.setdefault(b, []).append((a, e))
+    odd = [v for v in sorted(adjacency) if len(adjacency[v]) % 2]
+    for k, v in enumerate(odd):
+        adjacency.setdefault(virtual, []).append((v, len(edges) + k))
+        adjacency[v].append((virtual, len(edges) + k))
+    used = np.zeros(len(edges) + len(odd), dtype=bool)
+    position = dict.fromkeys(adjacency, 0)
+    pieces = []
+    for start in ([virtual] if odd else []) + sorted(v for v in adjacency if v != virtual):
+        if position[start] >= len(adjacency[start]) or used[
+                [e for _, e in adjacency[start][position[start]:]]].all():
+            continue
+        stack, circuit = [start], []              # Hierholzer's algorithm
+        while stack:
+            v = stack[-1]
+            links = adjacency[v]
+            while position[v] < len(links) and used[links[position[v]][1]]:
+                position[v] += 1
+            if position[v] < len(links):
+                w, e = links[position[v]]
+                used[e] = True
+                stack.append(w)
+            else:
+                circuit.append(stack.pop())
+        piece = []
+        for v in circuit + [virtual]:             # split the circuit at the virtual node
+            if v == virtual:
+                if len(piece) > 1:
+                    pieces.append(piece)
+                piece = []
+            else:
+                piece.append(v)
+    out = []
+    for piece in pieces:
+        out += ([-1] if out else []) + piece
+    return np.asarray(out, dtype=np.int64)
+
+
+def polyline_xyz(points, order) -> tuple:
+    """x, y and z of the polylines of :func:`polyline_order` as plotly draws them.
+
+    Parameters
+    ----------
+    points : ndarray, shape (N, 3)
+        Node coordinates [mm].
+    order : ndarray of int
+        Node indices, ``-1`` between polylines.
+
+    Returns
+    -------
+    (list, list, list)
+        Rounded to :data:`DECIMALS`, ``None`` between polylines.
+    """
+    order = np.asarray(order, dtype=np.int64)
+    xyz = np.full((len(order), 3), np.nan)
+    xyz[order >= 0] = np.asarray(points, dtype=float)[order[order >= 0]]
+    return tuple(rounded(xyz[:, k]) for k in range(3))
+
+
 def mesh_trace(points, triangles, *, coordinates_only: bool = False, scene: str = "scene"):
     """The panels as a flat-shaded Mesh3d.
 
@@ -244,8 +337,9 @@ def mesh_trace(points, triangles, *, coordinates_only: bool = False, scene: str 
 
 
 def line_trace(points, edges, *, name: str, colour, width: float, dash: str = "solid",
-               coordinates_only: bool = False, scene: str = "scene", visible=True):
-    """Edges as one Scatter3d of separated segments.
+               coordinates_only: bool = False, scene: str = "scene", visible=True,
+               order=None, legendgroup=None, showlegend=None):
+    """Edges as one Scatter3d of polylines (see :func:`polyline_order`).
 
     Parameters
     ----------
@@ -256,14 +350,19 @@ def line_trace(points, edges, *, name: str, colour, width: float, dash: str = "s
         Legend name, line colour, width [px] and dash of the lines.
     coordinates_only : bool
         Only the coordinates (an animation frame's update).
+    order : ndarray of int, optional
+        ``polyline_order(edges)``, to reuse it (every frame draws the same polylines).
+    legendgroup, showlegend : optional
+        Passed to plotly (several scenes share one legend entry per family).
 
     Returns
     -------
     plotly.graph_objects.Scatter3d
     """
-    x, y, z = segments_xyz(points, edges)
+    x, y, z = polyline_xyz(points, polyline_order(edges) if order is None else order)
     if coordinates_only:
         return go.Scatter3d(x=x, y=y, z=z)
     return go.Scatter3d(x=x, y=y, z=z, mode="lines", name=name,
                         line=dict(color=colour, width=width, dash=dash), hoverinfo="name",
-                        scene=scene, visible=visible, connectgaps=False)
+                        scene=scene, visible=visible, connectgaps=False,
+                        legendgroup=legendgroup, showlegend=showlegend)

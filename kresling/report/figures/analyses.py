@@ -1,5 +1,7 @@
 """Figures of the analyses section of the report (see :mod:`kresling.report.sections.analyses`):
-3.5-3.7 and 3.15, 3.14, 3.16, A-1 and 3D views of the optimal specimen, plus its FOLD file.
+3.5-3.7 and 3.15, 3.14, 3.16, A-1 and 3D views of the optimal specimen, plus its FOLD file,
+and two interactive views of the optimum (its bending test in both states, its
+snap-through), saved as plotly JSON and drawn in the page.
 
 Figures are drawn on ``matplotlib.figure.Figure`` objects (no pyplot state)."""
 
@@ -18,8 +20,13 @@ from kresling.data.tables import merlin2_model_curves
 from kresling.geometry import Design
 from kresling.model.kresling_specimen import kresling_specimen
 from kresling.report.section import Section
+from kresling.view import view_bending, view_snap_through
 
-__all__ = ["draw_figures"]
+__all__ = ["draw_figures", "VIEW_FRAMES"]
+
+#: Frames of the interactive views (quick, full): the page stays a few MB and the views take
+#: well under a second to build; the curves keep every increment.
+VIEW_FRAMES = {True: 36, False: 71}
 
 #: Thesis figure of each Table 3 design's curves.
 FIGURES = {(8, 30.0, 0.8): "3.5", (8, 15.0, 0.8): "3.6", (4, 30.0, 0.7): "3.7",
@@ -73,17 +80,38 @@ def draw_figures(section: Section, out_dir: Path, table, studies, quick: bool) -
           "lambda = 0.9: axisymmetric to within 0.4 %.")
 
     _specimen_figure(section, out_dir)
+    _interactive_views(section, out_dir, quick)
+
+
+def _interactive_views(section: Section, out_dir: Path, quick: bool) -> None:
+    """The optimum's bending test (both states, one slider) and its snap-through, as
+    interactive views beside the static figures."""
+    optimum = Design(10, 0.9, 15)
+    frames = VIEW_FRAMES[bool(quick)]
+    path = out_dir / "optimal_bending_view.json"
+    view_bending(optimum, "5mm", max_frames=frames).write_json(path)
+    section.add_view(path, "Interactive: the optimum's bending test (5 mm in 350 increments) "
+                           f"in both stable states, {frames} increments shown; drag to turn, "
+                           "the slider or play to move through the test; right, both "
+                           "moment-angle curves with the increment shown (the axes of figures 3.5-3.7).")
+    path = out_dir / "optimal_snap_through_view.json"
+    view_snap_through(optimum, steps=100, max_frames=frames).write_json(path)
+    section.add_view(path, "Interactive: the optimum's snap-through test (one cell driven "
+                           f"from Le to Lc in 100 increments, {frames} shown) beside its "
+                           "force-travel curve (figure 3.16's axes).")
 
 
 def _specimen_figure(section: Section, out_dir: Path) -> None:
     d = Design(10, 0.9, 15)
-    figure = Figure(figsize=(12.0, 5.5), layout="constrained")
+    figure = Figure(figsize=(12.0, 6.0), layout="constrained")
+    # The tall extended column needs less width than the squat contracted stack.
+    grid = figure.add_gridspec(1, 3, width_ratios=[0.8, 1.1, 1.1])
     contracted = kresling_specimen(d, [0] * 4)
-    plot_specimen(kresling_specimen(d, [1] * 4), ax=figure.add_subplot(1, 3, 1, projection="3d"))
-    plot_specimen(contracted, ax=figure.add_subplot(1, 3, 2, projection="3d"))
+    plot_specimen(kresling_specimen(d, [1] * 4), ax=figure.add_subplot(grid[0], projection="3d"))
+    plot_specimen(contracted, ax=figure.add_subplot(grid[1], projection="3d"))
     bent = bending_test(d, 0)
     plot_specimen(contracted, bent.final_displacement, scale=2, view=(10, 0),
-                  ax=figure.add_subplot(1, 3, 3, projection="3d"),
+                  ax=figure.add_subplot(grid[2], projection="3d"),
                   title="contracted, end of the 5 mm bending test\n(seen along x) "
                         "displacements × 2")
     _save(figure, section, out_dir / "optimal_specimen.png",

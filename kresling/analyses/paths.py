@@ -1,0 +1,197 @@
+"""The whole paths of the bending and snap-through tests: every node's displacement at every
+increment, for views and animations.
+
+:func:`~kresling.analyses.bending_test` and :func:`~kresling.analyses.snap_through` run in
+C++ and keep, of each increment, what their results need (forces, deflections, energies).
+The functions here set up the same specimen, supports and drive and follow the same path
+with :func:`kresling.solvers.solve_displacement_control` (same solver options), which keeps
+every node's displacement: the curves they give are those of the C++ tests (to round-off).
+
+- :func:`bending_path`: a four-cell specimen in one state, nodes 0 and n/2 and the centre of
+  the end polygons pinned, the middle polygon driven sideways (-y);
+- :func:`snap_through_path`: one cell built extended, its bottom polygon fixed, its top
+  polygon driven down to ``Lc``, free to twist.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from kresling.analyses.bending import PROTOCOLS
+from kresling.analyses.snap_through import DEFAULT_STEPS
+from kresling.geometry import Design, state_index
+from kresling.model.kresling_specimen import kresling_specimen
+from kresling.solvers.displacement_control import solve_displacement_control
+
+__all__ = ["BendingPath", "SnapThroughPath", "bending_path", "snap_through_path"]
+
+
+@dataclass(frozen=True)
+class BendingPath:
+    """A bending test's path with every node's displacement.
+
+    Attributes
+    ----------
+    specimen : KreslingSpecimen
+        The four-cell specimen with its supports.
+    path : kresling.solvers.PathResult
+        One row per increment; ``path.displacement`` (S, 3N) [mm].
+    state : int
+        0 contracted, 1 extended.
+    module_length : float
+        L, two cells' height [mm].
+    deflection, force, angle, moment : ndarray, shape (S,)
+        Per increment, as :class:`~kresling.analyses.BendingResult` has them: the middle
+        polygon's centre deflection [mm], the summed reaction [N], delta = atan(y / L)
+        [rad] and M = F L [N*m].
+    """
+
+    specimen: object
+    path: object
+    state: int
+    module_length: float
+    deflection: np.ndarray
+    force: np.ndarray
+    angle: np.ndarray
+    moment: np.ndarray
+
+    @property
+    def state_name(self) -> str:
+        return "extended" if self.state == 1 else "contracted"
+
+
+@dataclass(frozen=True)
+class SnapThroughPath:
+    """A snap-through test's path with every node's displacement.
+
+    Attributes
+    ----------
+    specimen : KreslingSpecimen
+        One cell, built extended, its bottom polygon fixed.
+    path : kresling.solvers.PathResult
+        One row per increment; ``path.displacement`` (S, 3N) [mm].
+    travel, force : ndarray, shape (S,)
+        The drive's travel [mm] and the summed reaction at the driven nodes [N] (positive:
+        the cell resists compression), as :class:`~kresling.analyses.SnapThroughResult`
+        has them after its first entry (the built state).
+    """
+
+    specimen: object
+    path: object
+    travel: np.ndarray
+    force: np.ndarray
+
+
+def bending_path(design: Design, state, protocol="5mm", *, deflection=None,
+                 deflection_angle=None, steps=None, cells=4, parameters=None,
+                 extrapolation=2, **solver) -> BendingPath:
+    """The three-point bending test of :func:`~kresling.analyses.bending_test`, every node
+    at every increment.
+
+    Parameters
+    ----------
+    design : Design
+    state : {0, 1, "contracted", "extended"}
+    protocol : {"5mm", "0.001rad"}
+        The presets of :data:`kresling.analyses.PROTOCOLS`.
+    deflection, deflection_angle, steps, cells, parameters, extrapolation, **solver
+        As for :class:`~kresling.analyses.BendingTester`.
+
+    Returns
+    -------
+    BendingPath
+
+    Raises
+    ------
+    ValueError
+        As :func:`~kresling.analyses.bending_test`: an odd n, an odd cell count, a
+        deflection that is zero or as large as the polygon's radius, bad options.
+
+    Examples
+    --------
+    >>> from kresling import Design
+    >>> bent = bending_path(Design(10, 0.9, 15), "extended", "0.001rad")
+    >>> bent.path.displacement.shape, round(float(bent.moment[-1] / bent.angle[-1]), 4)
+    ((10, 165), 3.2835)
+    """
+    if protocol not in PROTOCOLS:
+        raise ValueError(f"protocol = {protocol!r} is invalid: must be one of {sorted(PROTOCOLS)}")
+    state = state_index(state)
+    settings = dict(PROTOCOLS[protocol])
+    if deflection is not None:
+        settings.update(deflection=float(deflection), deflection_angle=0.0)
+    if deflection_angle is not None:
+        settings.update(deflection_angle=float(deflection_angle))
+    if steps is not None:
+        settings["steps"] = steps
+    n = design.n
+    if n % 2:
+        raise ValueError(f"n = {n} is invalid: must be even for the bending test: each end is "
+                         "pinned at vertices 0 and n/2, which must be opposite")
+    if cells < 2 or cells % 2:
+        raise ValueError(f"cells = {cells!r} is invalid: must be an even number >= 2 (the load "
+                         "acts on the middle polygon)")
+    module_length = 2.0 * design.height(state)
+    drive = module_length * np.tan(settings["deflection_angle"]) \
+        if settings["deflection_angle"] else settings["deflection"]
+    if drive == 0.0 or abs(drive) >= design.R:
+        raise ValueError(f"deflection = {drive!r} is invalid: must be non-zero and smaller than "
+                         f"the polygon's radius R = {design.R:g} mm")
+    fixed = np.zeros(((cells + 1) * (n + 1), 3), dtype=bool)
+    for level in (0, cells):
+        for j in (0, n // 2, n):
+            fixed[level * (n + 1) + j] = True
+    specimen = kresling_specimen(design, [state] * cells, parameters=parameters, fixed=fixed)
+    prescribed = np.zeros(fixed.shape)
+    prescribed[specimen.level_nodes(cells // 2), 1] = -drive
+    path = solve_displacement_control(specimen.model, prescribed, settings["steps"],
+                                      extrapolation=extrapolation, **solver)
+    centre_y = 3 * specimen.centre(cells // 2) + 1
+    deflection_mm = -np.asarray(path.displacement, dtype=float).reshape(
+        -1, specimen.model.num_dofs)[:, centre_y]
+    force = np.asarray(path.constraint_force, dtype=float).reshape(len(deflection_mm), -1) \
+        .sum(axis=1)
+    return BendingPath(specimen=specimen, path=path, state=state, module_length=module_length,
+                       deflection=deflection_mm, force=force,
+                       angle=np.arctan(deflection_mm / module_length),
+                       moment=force * module_length / 1000.0)
+
+
+def snap_through_path(design: Design, *, steps=DEFAULT_STEPS, parameters=None,
+                      extrapolation=2, **solver) -> SnapThroughPath:
+    """The snap-through test of :func:`~kresling.analyses.snap_through`, every node at every
+    increment (the drive from ``Le`` to ``Lc``; not the release to the second stable state).
+
+    Parameters
+    ----------
+    design : Design
+    steps : int, default :data:`kresling.analyses.snap_through.DEFAULT_STEPS`
+    parameters, extrapolation, **solver
+        As for :class:`~kresling.analyses.SnapThroughTester`.
+
+    Returns
+    -------
+    SnapThroughPath
+
+    Examples
+    --------
+    >>> from kresling import Design
+    >>> snap = snap_through_path(Design(8, 0.8, 30))
+    >>> peak = int(snap.force.argmax())
+    >>> round(float(snap.force[peak]), 2), round(float(snap.travel[peak]), 2)
+    (4.34, 5.82)
+    """
+    n = design.n
+    fixed = np.zeros((2 * (n + 1), 3), dtype=bool)
+    fixed[: n + 1] = True
+    specimen = kresling_specimen(design, [1], [1], parameters=parameters, fixed=fixed)
+    prescribed = np.zeros(fixed.shape)
+    prescribed[specimen.level_nodes(1), 2] = -(design.height(1) - design.height(0))
+    path = solve_displacement_control(specimen.model, prescribed, steps,
+                                      extrapolation=extrapolation, **solver)
+    displacement = np.asarray(path.displacement, dtype=float).reshape(-1, specimen.model.num_dofs)
+    travel = -displacement[:, 3 * specimen.centre(1) + 2]
+    force = np.asarray(path.constraint_force, dtype=float).reshape(len(travel), -1).sum(axis=1)
+    return SnapThroughPath(specimen=specimen, path=path, travel=travel, force=force)
