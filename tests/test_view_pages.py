@@ -283,6 +283,7 @@ def test_kresling_snap_view(tmp_path):
     page = (tmp_path / "snap.html").read_text(encoding="utf-8")
     data, layout, frames = page_figure(page)
     assert len(frames) == 31 and layout["xaxis"]["title"]["text"] == "travel d [mm]"
+    assert page.count(get_plotlyjs()[:200]) == 1 and not external_urls(page)
     assert layout["sliders"][0]["currentvalue"]["suffix"] == " / 30"
 
 
@@ -292,6 +293,7 @@ def test_kresling_view_of_a_fold_file(folding, tmp_path):
     assert result.returncode == 0 and result.stderr == ""
     page = (tmp_path / "sheet.html").read_text(encoding="utf-8")
     assert "var start = 2;" in page and "<title>sheet.fold" in page
+    assert page.count(get_plotlyjs()[:200]) == 1 and not external_urls(page)
     result = run_kresling("view", str(path), "-o", "far.html", "--frame", "12", cwd=tmp_path)
     assert result.returncode == 0
     assert "--frame 12 is out of range (sheet.fold has frames 0 to 3): opening frame 3" in \
