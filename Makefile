@@ -1,4 +1,5 @@
-# Two commands on a fresh Debian machine (run as root): `make demo` and `make test`.
+# Two commands on a fresh Debian machine (run as root): `make demo` and `make test`
+# (`make docs` builds the documentation site).
 # Both install what is missing: Debian packages with apt-get, Python packages with pip into
 # .venv/ at the repository root. Later runs only rebuild what changed.
 
@@ -13,15 +14,17 @@ APT_PACKAGES := g++ make libeigen3-dev libsuitesparse-dev liblapack-dev libgtest
 # 20 s and 500 MB to install).
 APT_TEST_PACKAGES := chromium
 REPORT_DIR := report
+DOCS_BUILD := docs/_build/html
 # What the compiled extension depends on: any change reinstalls it (incrementally).
 CORE_SOURCES := CMakeLists.txt pyproject.toml $(shell find cmake cpp -type f 2>/dev/null)
 
-.PHONY: demo test test-cpp test-python install system-deps test-deps benchmark clean help
+.PHONY: demo test test-cpp test-python install system-deps test-deps benchmark docs clean help
 
 help:
 	@echo "make demo   - the optimal design's geometry, then reproduce the thesis: $(REPORT_DIR)/report.html"
 	@echo "make test   - C++ unit tests (ctest) and the Python test suite (pytest)"
 	@echo "make benchmark - solver speed and memory against MERLIN2 (prints tables)"
+	@echo "make docs   - the documentation site: $(DOCS_BUILD)/index.html"
 	@echo "make clean  - remove build/ and .venv/"
 
 demo: install
@@ -79,16 +82,23 @@ $(VENV)/.venv-ready:
 	touch $@
 
 # Editable install with a persistent build directory: C++ rebuilds are incremental, and the
-# same CMake build also compiles the GoogleTest suite for ctest.
+# same CMake build also compiles the GoogleTest suite for ctest. The test extra is for
+# `make test`, the docs extra for `make docs` and for the test that builds the docs.
 $(VENV)/.installed: $(VENV)/.venv-ready $(CORE_SOURCES) | system-deps
 	$(PY) -m pip install -q --no-build-isolation \
 	  -Cbuild-dir=$(BUILD_DIR) -Ccmake.define.KRESLING_BUILD_TESTS=ON \
 	  -Ccmake.define.KRESLING_BUILD_BENCHMARKS=ON \
-	  -e ".[test]"
+	  -e ".[test,docs]"
 	touch $@
 
 benchmark: install
 	$(PY) benchmarks/solver_speed.py
+
+# The documentation site, warnings as errors. The notebooks and the gallery's scripts run
+# during the build (about a minute; later builds redo only what changed and the notebooks).
+docs: install
+	$(PY) -m sphinx -W --keep-going -q -b html docs $(DOCS_BUILD)
+	@echo "Open $(DOCS_BUILD)/index.html in a browser."
 
 clean:
 	rm -rf build $(VENV)

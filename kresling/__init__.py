@@ -23,7 +23,7 @@ import logging
 from kresling.geometry import Design, design_quantities
 from kresling.model import Model
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 __all__ = ["Design", "Model", "design_quantities", "__version__"]
 
 logging.getLogger(__name__).addHandler(logging.NullHandler())

@@ -15,7 +15,7 @@ __all__ = ["BAR_LAWS", "SPRING_LAWS", "FOLD_LIMITS"]
 #: (5, 1).
 BAR_LAWS = {"linear": 0, "ogden": 1}
 #: Spring laws by name (docs/model.md, 'Spring laws'): "enhanced_linear" (MERLIN2's, with
-#: limits), "linear", "super_linear_bend" (M ~ |dtheta|^(4/3)).
+#: limits), "linear", "super_linear_bend" (``M ~ |dtheta|^(4/3)``).
 SPRING_LAWS = {"linear": 0, "enhanced_linear": 1, "super_linear_bend": 2}
 
 #: MERLIN2's default limits of the enhanced linear law for fold hinges [rad] (5 and 355 deg).

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+__all__ = ["path"]
+
 _HERE = Path(__file__).resolve().parent
 
 

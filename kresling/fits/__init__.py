@@ -13,7 +13,7 @@ Bending stiffness (eqns 20-23)::
     result.K, result.ratio                                       # N*m/rad per state, ratio
 
 Conventions: sample SD (n-1); Student-t confidence intervals; outliers flagged by the
-modified z-score (|z| > 3.5), never removed; experimental K_B from a least-squares line
+modified z-score (``|z| > 3.5``), never removed; experimental K_B from a least-squares line
 with intercept, model K_B through the origin; contracted-state fits past 0.03 rad.
 Synthetic records of known truth (:mod:`kresling.fits.synthetic`) test all of it.
 """

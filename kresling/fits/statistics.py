@@ -148,7 +148,7 @@ def modified_z_scores(values) -> np.ndarray:
 
 
 def flag_outliers(values, threshold: float = OUTLIER_THRESHOLD) -> np.ndarray:
-    """Boolean mask of values whose |modified z-score| exceeds ``threshold``.
+    """Boolean mask of values whose absolute modified z-score exceeds ``threshold``.
 
     Flagged values are for a person to look at; no summary in this package drops them.
 
