@@ -12,6 +12,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from kresling import _core
+from kresling._validation import as_bool, as_finite_real, as_float_array
 
 __all__ = ["Assembly", "assemble", "tangent_stiffness"]
 
@@ -43,7 +44,7 @@ class Assembly:
 def _displacement(model, u):
     if u is None:
         return np.zeros(model.num_dofs)
-    u = np.asarray(u, dtype=float).ravel()
+    u = as_float_array("u", u).ravel()
     if u.shape != (model.num_dofs,):
         raise ValueError(f"u has {u.size} entries: must have {model.num_dofs} (3 per node)")
     if not np.isfinite(u).all():
@@ -65,7 +66,8 @@ def assemble(model, u=None, *, stiffness=True, shift=0.0) -> Assembly:
         Added to the tangent's diagonal (MERLIN2's solvers use 1e-8).
     """
     u = _displacement(model, u)
-    eb, eh, force, K = _core.solvers.assemble(model._core, u, float(shift), bool(stiffness))
+    eb, eh, force, K = _core.solvers.assemble(model._core, u, as_finite_real("shift", shift),
+                                              as_bool("stiffness", stiffness))
     matrix = None
     if K is not None:
         data, indices, indptr, shape = K

@@ -15,9 +15,9 @@ import math
 import numpy as np
 
 from kresling import _core
-from kresling._validation import as_integer, as_integer_array, as_real
+from kresling._validation import as_float_array, as_integer, as_integer_array, as_real, show
 
-__all__ = ["Design", "design_quantities", "STATES", "state_index"]
+__all__ = ["Design", "design_quantities", "STATES", "state_index", "as_design"]
 
 #: The two stable states by name; the integer codes are the thesis's (0 and 1).
 STATES = {"contracted": 0, "extended": 1}
@@ -137,7 +137,10 @@ class Design:
     def psi_ratio(self) -> float:
         """Facet-angle ratio Psi_ext / Psi_con (compared with the K_B ratio in section 3.4).
 
-        ``inf`` when ``Lc = 0``: the traditional Kresling folds flat (Psi_con = 0).
+        ``inf`` when ``Lc = 0``: the traditional Kresling folds flat (Psi_con = 0); also
+        where the ratio exceeds the largest float (Psi_con below about 1e-308 rad, i.e.
+        ``Lc / R`` below about 1e-308): the ratio is then beyond what a float holds, and
+        ``inf`` is its rounding, as IEEE arithmetic rounds an overflow.
         """
         return self.psi_ext / self.psi_con if self.psi_con > 0.0 else math.inf
 
@@ -228,8 +231,22 @@ class Design:
         )
 
 
+def as_design(value, name: str = "design") -> Design:
+    """``value`` if it is a :class:`Design`; otherwise a ValueError naming ``name``.
+
+    >>> as_design((10, 0.9, 15))
+    Traceback (most recent call last):
+    ...
+    ValueError: design = (10, 0.9, 15) is invalid: must be a kresling.Design, e.g. Design(n=10, lam=0.9, Lc=15)
+    """
+    if not isinstance(value, Design):
+        raise ValueError(f"{name} = {show(value)} is invalid: must be a kresling.Design, e.g. "
+                         "Design(n=10, lam=0.9, Lc=15)")
+    return value
+
+
 def _scalar_or_array(function, alpha):
-    array = np.asarray(alpha, dtype=float)
+    array = as_float_array("alpha", alpha)
     result = function(array)
     return float(result) if array.ndim == 0 else result
 
@@ -248,7 +265,8 @@ def design_quantities(n, lam, Lc, R=30.0) -> dict:
     dict of str to ndarray
         Keys ``n, R, lam, Lc`` (the broadcast inputs) and ``phi, gamma, P, V, M, Vg, Mg,
         theta_g, alpha0, alpha_e, Le, Psi_con, Psi_ext, Psi_ratio``; every array has the
-        broadcast shape. ``Psi_ratio`` is ``inf`` where ``Lc = 0`` (Psi_con = 0).
+        broadcast shape. ``Psi_ratio`` is ``inf`` where ``Lc = 0`` (Psi_con = 0) or where it
+        exceeds the largest float (see :attr:`Design.psi_ratio`).
 
     Raises
     ------
@@ -266,8 +284,13 @@ def design_quantities(n, lam, Lc, R=30.0) -> dict:
     >>> q["Le"].shape
     (100, 100)
     """
-    n_b, lam_b, Lc_b, R_b = np.broadcast_arrays(np.asarray(n), np.asarray(lam, float),
-                                                np.asarray(Lc, float), np.asarray(R, float))
+    arrays = [as_float_array(name, value) if name != "n" else np.asarray(value)
+              for name, value in (("n", n), ("lam", lam), ("Lc", Lc), ("R", R))]
+    try:
+        n_b, lam_b, Lc_b, R_b = np.broadcast_arrays(*arrays)
+    except ValueError as error:
+        raise ValueError(f"n, lam, Lc, R have shapes {[a.shape for a in arrays]} that do not "
+                         f"broadcast together ({error})") from None
     shape = n_b.shape
     n_flat = as_integer_array("n", n_b.ravel())
     table = _core.geometry.derive_table(n_flat, R_b.ravel(), lam_b.ravel(), Lc_b.ravel())

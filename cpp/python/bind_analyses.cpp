@@ -139,6 +139,24 @@ void bind_analyses(py::module_& m) {
           },
           py::arg("design"), py::arg("state"));
 
+  m.def(
+      "bending_drive",
+      [](const Design& design, int state, int cells, double deflection, double deflection_angle,
+         int steps) {
+        analyses::BendingOptions o;
+        o.deflection = deflection;
+        o.deflection_angle = deflection_angle;
+        o.steps = steps;
+        o.cells = cells;
+        return analyses::bending_drive(design, state, o);
+      },
+      py::arg("design"), py::arg("state"), py::arg("cells"), py::arg("deflection"),
+      py::arg("deflection_angle"), py::arg("steps"),
+      "The bending test's checks of its inputs; returns the imposed motion [mm].");
+  m.def("check_snap_design", &analyses::check_snap_design, py::arg("design"));
+  m.def("check_bending_state", &analyses::check_bending_state, py::arg("design"),
+        py::arg("state"));
+
   py::class_<analyses::SnapThroughTest>(m, "SnapThroughTest")
       .def(py::init([](int n, int steps, const SpecimenParameters& parameters,
                        const solvers::DisplacementControlOptions& solver) {

@@ -9,6 +9,7 @@
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/solvers/displacement_control.hpp"
 #include "kresling/solvers/force_control.hpp"
+#include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/linear_stiffness.hpp"
 
 namespace py = pybind11;
@@ -77,15 +78,17 @@ StopRule stop_rule(const py::object& callable) {
   };
 }
 
-NewtonOptions newton(double tolerance, int max_iterations) {
-  if (!(tolerance > 0)) throw std::invalid_argument("tolerance must be > 0");
-  if (max_iterations < 1) throw std::invalid_argument("max_iterations must be >= 1");
-  return {tolerance, max_iterations};
-}
+// Checked by the solvers (kresling/solvers/limits.hpp).
+NewtonOptions newton(double tolerance, int max_iterations) { return {tolerance, max_iterations}; }
 
 }  // namespace
 
 void bind_solvers(py::module_& m) {
+  // The documented bounds of the solvers' controls (kresling/solvers/limits.hpp).
+  m.attr("MAX_STEPS") = kMaxSteps;
+  m.attr("MAX_BISECTIONS") = kMaxBisections;
+  m.attr("MAX_ITERATIONS") = kMaxIterations;
+  m.attr("MAX_SHIFT") = kMaxShift;
   m.def(
       "assemble",
       [](const Model& model, const VectorX& u, double shift, bool with_matrix) {
@@ -113,12 +116,12 @@ void bind_solvers(py::module_& m) {
         out["bar_stress"] = s.bar_stress;
         out["bar_energy"] = s.bar_energy;
         out["hinge_energy"] = s.hinge_energy;
-        return out;
-      },
-      py::arg("model"), py::arg("u"));
         out["cable_length"] = s.cable_length;
         out["cable_tension"] = s.cable_tension;
         out["cable_energy"] = s.cable_energy;
+        return out;
+      },
+      py::arg("model"), py::arg("u"));
 
   py::class_<DisplacementControlOptions>(m, "DisplacementControlOptions")
       .def(py::init<>())

@@ -1,8 +1,18 @@
 #include <pybind11/pybind11.h>
 
 #include "bindings.hpp"
+#include "kresling/core/interrupt.hpp"
+
+namespace py = pybind11;
 
 PYBIND11_MODULE(_core, m) {
+  // Ctrl-C stops a long C++ call: the core's loops run Python's signal handlers (with the
+  // GIL; they run on the main thread only), and an exception they raise (KeyboardInterrupt)
+  // unwinds the call and is raised in Python.
+  kresling::set_interrupt_check([] {
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  });
   m.doc() = "kresling's C++ core (geometry, bar-and-hinge solver, kinematics). "
             "Use the Python API in the kresling package; this module is internal.";
   auto geometry = m.def_submodule("geometry", "Generalized Kresling cell geometry");
@@ -18,4 +28,7 @@ PYBIND11_MODULE(_core, m) {
   auto kinematics = m.def_submodule(
       "kinematics", "Constant-curvature manipulator kinematics (thesis ch. 4, Appendix E)");
   kresling::python::bind_kinematics(kinematics);
+  auto arm = m.def_submodule(
+      "arm", "The manipulator as a structure: arm model, tendons, load and pull analyses");
+  kresling::python::bind_arm(arm);
 }

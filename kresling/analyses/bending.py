@@ -18,7 +18,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling import _core
-from kresling.geometry import Design, state_index
+from kresling._validation import as_finite_real, as_integer, show
+from kresling.geometry import Design, as_design, state_index
 from kresling.model.kresling_specimen import SpecimenParameters
 from kresling.solvers.displacement_control import displacement_control_options
 
@@ -106,6 +107,23 @@ class BendingComparison:
         return self.extended.completed and self.contracted.completed
 
 
+def protocol_settings(protocol, deflection=None, deflection_angle=None, steps=None) -> dict:
+    """A protocol's preset (:data:`PROTOCOLS`) with overrides, each checked for its type:
+    ``deflection`` [mm] and ``deflection_angle`` [rad] finite numbers, ``steps`` an integer
+    (ranges are the core's to check)."""
+    if not isinstance(protocol, str) or protocol not in PROTOCOLS:
+        raise ValueError(f"protocol = {show(protocol)} is invalid: must be one of "
+                         f"{sorted(PROTOCOLS)}")
+    preset = dict(PROTOCOLS[protocol])
+    if deflection is not None:
+        preset.update(deflection=as_finite_real("deflection", deflection), deflection_angle=0.0)
+    if deflection_angle is not None:
+        preset.update(deflection_angle=as_finite_real("deflection_angle", deflection_angle))
+    if steps is not None:
+        preset["steps"] = as_integer("steps", steps, minimum=1)
+    return preset
+
+
 class BendingTester:
     """A bending test for one polygon size, reusable across designs (for sweeps).
 
@@ -136,25 +154,18 @@ class BendingTester:
 
     def __init__(self, n, protocol="5mm", *, deflection=None, deflection_angle=None, steps=None,
                  cells=4, parameters=None, extrapolation=2, **solver):
-        if protocol not in PROTOCOLS:
-            raise ValueError(f"protocol = {protocol!r} is invalid: must be one of {sorted(PROTOCOLS)}")
-        preset = dict(PROTOCOLS[protocol])
-        if deflection is not None:
-            preset.update(deflection=float(deflection), deflection_angle=0.0)
-        if deflection_angle is not None:
-            preset.update(deflection_angle=float(deflection_angle))
-        if steps is not None:
-            preset["steps"] = steps
-        self.n = n
+        preset = protocol_settings(protocol, deflection, deflection_angle, steps)
+        self.n = as_integer("n", n, minimum=3)
         self.parameters = parameters or SpecimenParameters()
-        self.settings = dict(preset, cells=cells)
+        self.settings = dict(preset, cells=as_integer("cells", cells))
         options = displacement_control_options(extrapolation=extrapolation, **solver)
         self._core = _core.analyses.BendingTest(
-            int(n), float(preset["deflection"]), float(preset["deflection_angle"]),
-            int(preset["steps"]), int(cells), self.parameters.to_core(), options)
+            self.n, preset["deflection"], preset["deflection_angle"], preset["steps"],
+            self.settings["cells"], self.parameters.to_core(), options)
 
     def run(self, design: Design, state) -> BendingResult:
         """Bend ``design`` (same n) in ``state`` (0/1 or "contracted"/"extended")."""
+        design = as_design(design)
         state = state_index(state)
         if design.n != self.n:
             raise ValueError(f"design.n = {design.n} is invalid: this tester is for n = {self.n}")
@@ -200,10 +211,12 @@ def bending_test(design: Design, state, protocol="5mm", **options) -> BendingRes
     >>> round(r.stiffness, 4)    # N*m/rad; MERLIN2: 2.797835, thesis: 2.79
     2.7978
     """
+    design = as_design(design)
     return BendingTester(design.n, protocol, **options).run(design, state)
 
 
 def bending_stiffness(design: Design, protocol="5mm", **options) -> BendingComparison:
     """K_B in both states and their ratio (see :func:`bending_test` for the options)."""
+    design = as_design(design)
     tester = BendingTester(design.n, protocol, **options)
     return BendingComparison(extended=tester.run(design, 1), contracted=tester.run(design, 0))

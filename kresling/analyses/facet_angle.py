@@ -6,11 +6,14 @@ the creases) and larger in the extended one (the facets stand up, loads go into 
 facets). The thesis compares the ratio Psi_ext / Psi_con with the K_B ratio over the design
 space (figures 3.9-3.12).
 
-Here Psi is read from the built bar-and-hinge model: the rest angles of the hinges on the
-polygon edges of a single cell, both end polygons (2n hinges; each hinge's angle is taken on
-its interior side, ``min(theta, 2 pi - theta)``, since the wing order fixes which side the
-dihedral angle is measured on). They equal ``Design.psi_ext`` / ``psi_con`` (closed form)
-to rounding.
+Here Psi is read from the built bar-and-hinge model: the dihedral angles at the hinges on
+the polygon edges of a single cell, both end polygons (2n hinges; each taken on its interior
+side, ``min(theta, 2 pi - theta)``, since the wing order fixes which side the dihedral angle
+is measured on), computed from the model's nodes with ``atan2(|m x n|, m . n)`` of the two
+wings' normals. That is exact to rounding at every angle, where the model's rest angles
+(MERLIN2's arccosine, kept for its forces) carry up to ~1e-8 rad near a flat fold (a
+nearly flat extended cell, lam -> 0.5 with Lc = 0). They equal ``Design.psi_ext`` /
+``psi_con`` (closed form) to rounding.
 """
 
 from __future__ import annotations
@@ -19,7 +22,7 @@ import math
 
 import numpy as np
 
-from kresling.geometry import Design, state_index
+from kresling.geometry import Design, as_design, state_index
 from kresling.model.kresling_specimen import kresling_specimen
 
 __all__ = ["facet_angles", "facet_angle", "facet_angle_ratio"]
@@ -41,9 +44,14 @@ def facet_angles(design: Design, state) -> np.ndarray:
     ndarray, shape (2 n,)
         The bottom polygon's n edges, then the top polygon's (hinge order of the model).
     """
+    design = as_design(design)
     specimen = kresling_specimen(design, [state_index(state)], chirality=[design.chirality])
-    angles = specimen.model.hinge_rest_angle[specimen.hinge_family == "polygon_edge"]
-    return np.minimum(angles, 2 * math.pi - angles)
+    model = specimen.model
+    hinges = model.hinges[specimen.hinge_family == "polygon_edge"]
+    a, b, c, d = (model.nodes[hinges[:, k]] for k in range(4))
+    axis = b - a
+    m, n = np.cross(c - a, axis), np.cross(axis, b - d)   # the wings' normals (MERLIN2's)
+    return np.arctan2(np.linalg.norm(np.cross(m, n), axis=1), np.einsum("ij,ij->i", m, n))
 
 
 def facet_angle(design: Design, state) -> float:

@@ -31,8 +31,10 @@ import numpy as np
 import scipy.sparse
 import scipy.sparse.linalg
 
+from kresling import _core
+from kresling._validation import as_finite_real, as_integer
 from kresling.assembly import tangent_stiffness
-from kresling.geometry import Design, state_index
+from kresling.geometry import Design, as_design, state_index
 from kresling.model.kresling_specimen import SpecimenParameters, kresling_specimen
 
 __all__ = ["LinearBendingTester", "linear_bending_stiffness"]
@@ -73,13 +75,14 @@ class LinearBendingTester:
     """
 
     def __init__(self, n, *, cells=4, parameters=None):
-        if int(n) != n or n < 4 or n % 2:
+        n, cells = as_integer("n", n), as_integer("cells", cells)
+        if n < 4 or n % 2:
             raise ValueError(f"n = {n!r} is invalid: must be even for the bending test: each end "
                              "is pinned along a line through two opposite points of its polygon")
-        if int(cells) != cells or cells < 2 or cells % 2:
+        if cells < 2 or cells % 2:
             raise ValueError(f"cells = {cells!r} is invalid: must be an even number >= 2 (the "
                              "load acts on the middle polygon)")
-        self.n, self.cells = int(n), int(cells)
+        self.n, self.cells = n, cells
         self.parameters = parameters or SpecimenParameters()
 
     def run(self, design: Design, state, *, angle=0.0, pin_offset=0.0) -> float:
@@ -95,12 +98,14 @@ class LinearBendingTester:
         pin_offset : float
             Further turn of the pin line alone [rad] (0: perpendicular to the load).
         """
+        design = as_design(design)
         state = state_index(state)
         if design.n != self.n:
             raise ValueError(f"design.n = {design.n} is invalid: this tester is for n = {self.n}")
-        for name, value in (("angle", angle), ("pin_offset", pin_offset)):
-            if not math.isfinite(value):
-                raise ValueError(f"{name} = {value!r} is invalid: must be a finite angle [rad]")
+        angle = as_finite_real("angle", angle)
+        pin_offset = as_finite_real("pin_offset", pin_offset)
+        # The nonlinear test's check of the design in this state (Lc > 0 when contracted).
+        _core.analyses.check_bending_state(design._core, state)
         specimen = kresling_specimen(design, [state] * self.cells, parameters=self.parameters)
         T, imposed = self._transformation(specimen, float(angle), float(pin_offset))
         K = (T.T @ tangent_stiffness(specimen.model) @ T).tocsc()
@@ -181,5 +186,6 @@ def linear_bending_stiffness(design: Design, state, *, parameters=None, angle=0.
     >>> round(linear_bending_stiffness(Design(8, 0.8, 30), "extended"), 4)  # 0.001 rad: 2.7560
     2.756
     """
+    design = as_design(design)
     return LinearBendingTester(design.n, cells=cells, parameters=parameters).run(
         design, state, angle=angle, pin_offset=pin_offset)

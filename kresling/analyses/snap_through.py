@@ -40,7 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling import _core
-from kresling.geometry import Design
+from kresling.geometry import Design, as_design
 from kresling.model.kresling_specimen import SpecimenParameters
 from kresling._validation import as_integer
 from kresling.solvers.displacement_control import displacement_control_options
@@ -159,7 +159,7 @@ class SnapThroughTester:
     """
 
     def __init__(self, n, *, steps=DEFAULT_STEPS, parameters=None, extrapolation=2, **solver):
-        self.n = int(n)
+        self.n = as_integer("n", n, minimum=3)
         self.steps = as_integer("steps", steps, minimum=1)
         self.parameters = parameters or SpecimenParameters()
         options = displacement_control_options(extrapolation=extrapolation, **solver)
@@ -168,6 +168,7 @@ class SnapThroughTester:
 
     def run(self, design: Design) -> SnapThroughResult:
         """Drive ``design`` (same n) from extended to contracted."""
+        design = as_design(design)
         if design.n != self.n:
             raise ValueError(f"design.n = {design.n} is invalid: this tester is for n = {self.n}")
         d = self._core.run(design._core)
@@ -196,7 +197,8 @@ def snap_through(design: Design, *, steps=DEFAULT_STEPS, parameters=None,
     Raises
     ------
     ValueError
-        For steps < 1 or bad parameters.
+        For steps outside [1, 100000], Lc = 0 (the drive would fold the cell flat) or bad
+        parameters.
 
     Examples
     --------
@@ -207,4 +209,5 @@ def snap_through(design: Design, *, steps=DEFAULT_STEPS, parameters=None,
     >>> r.bistable, round(r.stable_height, 1)
     (True, 33.9)
     """
+    design = as_design(design)
     return SnapThroughTester(design.n, steps=steps, parameters=parameters, **solver).run(design)

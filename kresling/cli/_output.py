@@ -38,9 +38,10 @@ def print_json(obj) -> None:
 
 
 def print_table(rows, headers) -> None:
-    """Print ``rows`` (sequences of cells) under ``headers``, columns aligned."""
+    """Print ``rows`` (sequences of cells) under ``headers``, columns aligned (no rows: the
+    headers alone)."""
     cells = [[_format(c) for c in row] for row in rows]
-    widths = [max(len(h), *(len(r[i]) for r in cells)) for i, h in enumerate(headers)]
+    widths = [max([len(h)] + [len(r[i]) for r in cells]) for i, h in enumerate(headers)]
     print("  ".join(h.ljust(w) for h, w in zip(headers, widths)).rstrip())
     print("  ".join("-" * w for w in widths))
     for row in cells:

@@ -79,6 +79,9 @@ def run(args) -> int:
     print(f"configuration ({result['config']}), step k = {args.k:g}; markers [mm], frame of eqn 26")
     print_table([(i + 1, *p) for i, p in enumerate(state.markers)], ("marker", "x", "y", "z"))
     print()
+    if not flexible:
+        print("every module is extended (rigid): no tendon lengths or motor counts to set")
+        return 0
     print_table([(name, *row) for name, row in result["tendon_lengths"].items()],
                 ("module", "l1 [mm]", "l2 [mm]", "l3 [mm]"))
     print()

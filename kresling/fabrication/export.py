@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
+from kresling.fabrication._checks import png_pixels
 from kresling.fabrication.dxf import write_dxf
 from kresling.fabrication.layers import CutSheet
 from kresling.fabrication.fold import fold_angles, fold_document, write_fold
@@ -99,6 +100,8 @@ def write_sheet(sheet: CutSheet, path, *, dpi: float = 96.0) -> Path:
     if suffix == ".dxf":
         return write_dxf(sheet, path)
     if suffix == ".png":
+        width, height = sheet.size
+        dpi = png_pixels(width + 10.0, height + 10.0, dpi)  # svg_document's 5 mm margins
         # A preview: lines thick enough to see at screen resolution.
         return render_png(svg_document(sheet, stroke_width=0.35), path, dpi=dpi)
     raise ValueError(f"file extension {suffix!r} is invalid for a cut sheet: must be one of "

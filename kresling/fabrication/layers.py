@@ -11,6 +11,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from kresling.fabrication._checks import cut_path_count, sheet_size
 from kresling.fabrication.planar import mirror_x
 
 __all__ = ["CutPath", "CutLayer", "CutSheet"]
@@ -86,6 +87,12 @@ class CutSheet:
     layers: tuple
     pieces: tuple = ()
     notes: tuple = field(default=())
+
+    def __post_init__(self):
+        count = sum(len(layer.paths) for layer in self.layers)
+        cut_path_count(count, "cut a smaller design (fewer or shorter creases)")
+        if count:
+            sheet_size(f"the cut sheet {self.title!r}", *self.size)
 
     def bounds(self) -> np.ndarray:
         """``[[xmin, ymin], [xmax, ymax]]`` of every path [mm], shape (2, 2)."""

@@ -33,9 +33,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from kresling.fabrication._checks import non_negative, positive
+from kresling.fabrication._checks import non_negative, positive, sheet_size
 from kresling.fabrication.planar import barycentric, convex_overlap, mirror_x, signed_area
-from kresling.geometry import Design
+from kresling.geometry import Design, as_design
 
 __all__ = ["CreasePattern", "crease_pattern", "CREASE_KINDS", "FACE_KINDS"]
 
@@ -176,6 +176,7 @@ def crease_pattern(design: Design, *, tab_height: float = 8.0, closing_tab_width
         If a parameter is not a finite positive number, the tabs would overlap on the base
         polygon, or the closing tab does not fit in the facet it is glued to.
     """
+    design = as_design(design)
     positive("tab_height", tab_height)
     positive("closing_tab_width", closing_tab_width)
     non_negative("tab_clearance", tab_clearance)
@@ -195,6 +196,8 @@ def crease_pattern(design: Design, *, tab_height: float = 8.0, closing_tab_width
                                    tab_clearance)
     polygon = _base_polygon(n, R, centre_x=0.5 * n * P, top_y=-tab_height - polygon_spacing)
     points = np.vstack([bottom, top, tips, closing, polygon])
+    width, height = np.ptp(points, axis=0)
+    sheet_size(f"the crease pattern of {design!r}", width, height)
 
     B, T = np.arange(n + 1), np.arange(n + 1, 2 * n + 2)
     A, (CB, CT), Q = 2 * n + 2 + np.arange(n), 3 * n + 2 + np.arange(2), 3 * n + 4 + np.arange(n)

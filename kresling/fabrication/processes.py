@@ -18,7 +18,7 @@ from typing import ClassVar
 
 import numpy as np
 
-from kresling.fabrication._checks import non_negative, positive
+from kresling.fabrication._checks import cut_path_count, non_negative, positive
 from kresling.fabrication.layers import CutLayer, CutPath, CutSheet
 from kresling.fabrication.pattern import CreasePattern
 from kresling.fabrication.planar import clip_convex, dashes, offset_polygon, shorten, signed_area
@@ -81,6 +81,13 @@ class Paper:
     def cut_sheet(self, pattern: CreasePattern) -> CutSheet:
         """The three cut passes of a paper cell. Returns a :class:`CutSheet`."""
         half_kerf = 0.5 * self.kerf
+        lines = [(pattern.points[a], pattern.points[b]) for kind in ("valley", "tab", "seam")
+                 for a, b in pattern.edges_of_kind(kind)]
+        lengths = np.array([np.linalg.norm(b - a) for a, b in lines])
+        cut_path_count(int(np.maximum(np.floor((lengths - self.tie_length)
+                                               / (self.dash_length + self.tie_length)), 0).sum()),
+                       f"lengthen the dashes (dash_length = {self.dash_length:g} mm, "
+                       f"tie_length = {self.tie_length:g} mm) or cut a smaller design")
         perforated = [dash for kind in ("valley", "tab", "seam")
                       for a, b in pattern.edges_of_kind(kind)
                       for dash in dashes(pattern.points[a], pattern.points[b], self.dash_length,

@@ -64,6 +64,19 @@ def read_stiffness_table(path, *, names=None, units=None, on_invalid="raise",
                             skipped=table.skipped, source=table.path)
 
 
+def _record_path(listing: Path, name: str, table, row) -> Path:
+    """The record ``name`` of a list of runs, in the list's folder or below it: an absolute
+    path or one leaving that folder (``../``) is refused, so a list can only point at the
+    records shipped beside it."""
+    relative = Path(name)
+    folder = listing.resolve().parent
+    resolved = (folder / relative).resolve()
+    if relative.is_absolute() or (resolved != folder and folder not in resolved.parents):
+        raise table.error(row, "record", f"{name!r} is invalid: must be a file in the list's "
+                          f"folder {str(folder)!r} or below it (a relative path without '..')")
+    return listing.parent / relative
+
+
 def read_crease_runs(path, *, names=None, units=None, on_invalid="raise", record_names=None,
                      record_units=None, negate=()):
     """Read a list of runs and the machine record of each.
@@ -91,7 +104,7 @@ def read_crease_runs(path, *, names=None, units=None, on_invalid="raise", record
                           "use one unit for all")
     runs, skipped = [], list(table.skipped)
     for row in range(len(table)):
-        record_path = Path(path).parent / table.columns["record"][row]
+        record_path = _record_path(Path(path), table.columns["record"][row], table, row)
         if not record_path.is_file():
             raise table.error(row, "record", f"no record file {str(record_path)!r}")
         record = read_machine_record(record_path, names=record_names, units=record_units,

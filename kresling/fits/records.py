@@ -17,7 +17,6 @@ in which case the row is skipped and reported instead.
 
 from __future__ import annotations
 
-import csv
 import logging
 import math
 from dataclasses import dataclass, field
@@ -25,6 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
+from kresling._validation import csv_cells
 from kresling.fits.units import CANONICAL, conversion_factor, normalize_unit, split_header
 
 __all__ = ["Field", "RecordError", "SkippedRow", "Table", "read_table", "read_header",
@@ -225,8 +225,16 @@ def _load(path: Path):
     text_lines = text.splitlines()
     index, metadata = _preamble(text_lines, path)
     delimiter = _delimiter(text_lines[index])
-    return text_lines, index, metadata, delimiter, next(csv.reader([text_lines[index]],
-                                                                   delimiter=delimiter))
+    return text_lines, index, metadata, delimiter, _cells(text_lines[index], delimiter, path,
+                                                          index + 1)
+
+
+def _cells(text, delimiter, path, line):
+    """One line's cells; csv's errors (a field over its 128 KiB limit) as a RecordError."""
+    try:
+        return csv_cells(text, path, line, delimiter)
+    except ValueError as error:
+        raise RecordError(path, line, None, str(error).split(": ", 1)[1]) from None
 
 
 def _preamble(text_lines, path):
@@ -305,13 +313,14 @@ def _parse_rows(text_lines, header_index, delimiter, layout, table, on_invalid):
     for index in range(header_index + 1, len(text_lines)):
         number, text = index + 1, text_lines[index].strip()
         reason = "blank line" if not text else "comment line" if text.startswith("#") else None
-        cells = [] if reason else next(csv.reader([text], delimiter=delimiter))
-        if not reason and not any(c.strip() for c in cells):
-            reason = "empty row"
         if reason:
             table.skipped.append(SkippedRow(table.path, number, reason))
             continue
         try:
+            cells = _cells(text, delimiter, table.path, number)
+            if not any(c.strip() for c in cells):
+                table.skipped.append(SkippedRow(table.path, number, "empty row"))
+                continue
             rows.append(_parse_cells(cells, width, layout, table.headers, table.path, number))
             lines.append(number)
         except RecordError as error:

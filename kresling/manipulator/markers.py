@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from kresling._validation import as_integer, csv_records
 from kresling.manipulator.forward import marker_distances
 from kresling.manipulator.model import Manipulator, configuration_name, parse_configuration
 from kresling.manipulator.protocol import pseudo_linkage
@@ -122,20 +123,23 @@ def read_markers(path, modules: int = 3) -> MarkerData:
         markers or steps out of range, or repeated (config, step, marker) rows; the message
         gives the file, line and column.
     """
+    modules = as_integer("modules", modules, minimum=1)
     path = Path(path)
     source = path.name
-    with open(path, newline="", encoding="utf-8") as handle:
-        reader = csv.DictReader(handle)
-        header = [h.strip() for h in (reader.fieldnames or [])]
+    with open(path, newline="", encoding="utf-8", errors="replace") as handle:
+        records = csv_records(handle, source)
+        first = next(records, None)
+        header = [h.strip() for h in (first[1] if first else [])]
         missing = [c for c in COLUMNS if c not in header]
         if missing:
             raise ValueError(f"{source}: missing column(s) {', '.join(repr(c) for c in missing)}; "
                              f"the header must name {', '.join(COLUMNS)} (found {header})")
-        reader.fieldnames = header
+        position = {name: header.index(name) for name in COLUMNS}
         config, step, marker, xy, seen = [], [], [], [], {}
-        for row in reader:
-            line = reader.line_num
-            cells = {c: (row.get(c) or "").strip() for c in COLUMNS}
+        for line, row in records:
+            if not row:
+                continue  # a blank line, as csv.DictReader skips it
+            cells = {c: (row[k] if k < len(row) else "").strip() for c, k in position.items()}
             try:
                 name = configuration_name(parse_configuration(cells["config"], modules))
             except ValueError:

@@ -5,13 +5,15 @@ from __future__ import annotations
 import numpy as np
 
 from kresling import _core
+from kresling._validation import (as_float_array, as_integer, as_integer_array,
+                                  show)
 # The law tables live in kresling.laws (the element kernels name laws too); these names
 # stay importable from here and from kresling.model.
 from kresling.laws import BAR_LAWS, FOLD_LIMITS, SPRING_LAWS  # noqa: F401
 
 
 def _per_element(name, value, count, dtype=float):
-    array = np.asarray(value, dtype=dtype)
+    array = as_float_array(name, value)
     if array.ndim == 0:
         array = np.full(count, array, dtype=dtype)
     if array.shape != (count,):
@@ -20,13 +22,44 @@ def _per_element(name, value, count, dtype=float):
 
 
 def _law_codes(name, value, table, count):
-    values = [value] * count if isinstance(value, str) else list(value)
+    if isinstance(value, str):
+        values = [value] * count
+    elif isinstance(value, (list, tuple, np.ndarray)):
+        values = list(value)
+    else:
+        raise ValueError(f"{name} = {show(value)} is invalid: must be one of {sorted(table)} "
+                         f"or a list of {count} of them")
     if len(values) != count:
         raise ValueError(f"{name} has {len(values)} entries: must be a name or {count} names")
-    unknown = sorted({v for v in values if v not in table})
+    unknown = [v for v in values if not isinstance(v, str) or v not in table]
     if unknown:
-        raise ValueError(f"{name} = {unknown[0]!r} is invalid: must be one of {sorted(table)}")
+        raise ValueError(f"{name} = {show(unknown[0])} is invalid: must be one of {sorted(table)}")
     return np.array([table[v] for v in values], dtype=np.int64)
+
+
+def _index_rows(name, value, width):
+    """Element node indices as an (E, width) int64 array: integers only (1.7 is not node 1,
+    True is not node 1)."""
+    array = as_integer_array(name, value).astype(np.int64)
+    if array.size % width:
+        raise ValueError(f"{name} has {array.size} entries: must be rows of {width} node "
+                         "indices")
+    return np.ascontiguousarray(array.reshape(-1, width))
+
+
+def _mask(name, value):
+    """A boolean array from bools or 0/1 (NaN, 0.5 or 2 are not a support flag)."""
+    try:
+        array = np.asarray(value)
+    except (TypeError, ValueError) as error:
+        raise ValueError(f"{name} is invalid: must be an array of booleans ({error})") from None
+    if array.dtype == bool:
+        return array
+    if not np.issubdtype(array.dtype, np.number) or \
+            np.issubdtype(array.dtype, np.complexfloating) or \
+            not np.isin(array, (0, 1)).all():
+        raise ValueError(f"{name} is invalid: must be booleans (or 0/1), got {show(value)}")
+    return array.astype(bool)
 
 
 class Model:
@@ -82,11 +115,11 @@ class Model:
     def __init__(self, nodes, bars, hinges, *, bar_modulus, hinge_stiffness, bar_area=1.0,
                  bar_rest_length=None, bar_law="ogden", hinge_rest_angle=None, hinge_length=None,
                  hinge_law="enhanced_linear", hinge_limits=FOLD_LIMITS, fixed=None, cables=None):
-        nodes = np.ascontiguousarray(nodes, dtype=float)
+        nodes = np.ascontiguousarray(as_float_array("nodes", nodes))
         if nodes.ndim != 2 or nodes.shape[1] != 3:
             raise ValueError(f"nodes has shape {nodes.shape}: must be (N, 3)")
-        bars = np.ascontiguousarray(np.asarray(bars, dtype=np.int64).reshape(-1, 2))
-        hinges = np.ascontiguousarray(np.asarray(hinges, dtype=np.int64).reshape(-1, 4))
+        bars = _index_rows("bars", bars, 2)
+        hinges = _index_rows("hinges", hinges, 4)
         nb, nh = len(bars), len(hinges)
         for name, idx in (("bars", bars), ("hinges", hinges)):
             if idx.size and (idx.min() < 0 or idx.max() >= len(nodes)):
@@ -99,13 +132,13 @@ class Model:
             hinge_rest_angle = _core.elements.dihedral_angles(nodes, hinges)
         if hinge_length is None:
             hinge_length = np.linalg.norm(nodes[hinges[:, 1]] - nodes[hinges[:, 0]], axis=1)
-        limits = np.asarray(hinge_limits, dtype=float)
+        limits = as_float_array("hinge_limits", hinge_limits)
         limits = np.broadcast_to(limits, (nh, 2)) if limits.shape == (2,) else limits
         if limits.shape != (nh, 2):
             raise ValueError(f"hinge_limits has shape {limits.shape}: must be (2,) or ({nh}, 2)")
         if fixed is None:
             fixed = np.zeros((len(nodes), 3), dtype=bool)
-        fixed = np.asarray(fixed, dtype=bool)
+        fixed = _mask("fixed", fixed)
         if fixed.shape != nodes.shape:
             raise ValueError(f"fixed has shape {fixed.shape}: must be {nodes.shape}")
 
@@ -225,10 +258,11 @@ class Model:
 
     def dof(self, node: int, axis) -> int:
         """The DOF index of ``node``'s coordinate ``axis`` (0/1/2 or "x"/"y"/"z")."""
-        k = {"x": 0, "y": 1, "z": 2}.get(axis, axis)
-        if k not in (0, 1, 2) or not 0 <= node < self.num_nodes:
-            raise ValueError(f"dof({node!r}, {axis!r}): no such node or axis")
-        return 3 * int(node) + int(k)
+        node = as_integer("node", node, minimum=0, maximum=self.num_nodes - 1)
+        k = {"x": 0, "y": 1, "z": 2}.get(axis, axis) if isinstance(axis, (str, int)) else None
+        if isinstance(k, bool) or k not in (0, 1, 2):
+            raise ValueError(f"axis = {show(axis)} is invalid: must be 0, 1, 2 or 'x', 'y', 'z'")
+        return 3 * node + int(k)
 
     def element_state(self, u=None) -> dict:
         """Bar strains and axial forces, hinge angles and moments at displacement ``u``.
@@ -240,7 +274,15 @@ class Model:
             ``hinge_moment`` (H,) [N*mm]; ``cable_length`` (C,) [mm], ``cable_tension`` (C,)
             [N] (0 when slack).
         """
-        u = np.zeros(self.num_dofs) if u is None else np.asarray(u, dtype=float).ravel()
+        if u is None:
+            u = np.zeros(self.num_dofs)
+        else:
+            u = as_float_array("u", u).ravel()
+            if u.shape != (self.num_dofs,):
+                raise ValueError(f"u has {u.size} entries: must have {self.num_dofs} (3 per "
+                                 "node)")
+            if not np.isfinite(u).all():
+                raise ValueError("u contains NaN or inf")
         return {k: np.asarray(v) for k, v in _core.solvers.element_state(self._core, u).items()}
 
     def __repr__(self):

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from kresling._validation import as_float_array
+
 
 def dof_vector(model, name, value, *, allow_none=False):
     """A per-DOF vector from an array of shape (3N,) or (N, 3); None -> empty (core's 'none')."""
@@ -11,7 +13,7 @@ def dof_vector(model, name, value, *, allow_none=False):
         if allow_none:
             return np.zeros(0)
         raise ValueError(f"{name} is required")
-    array = np.asarray(value, dtype=float)
+    array = as_float_array(name, value)
     if array.shape not in ((model.num_dofs,), (model.num_nodes, 3)):
         raise ValueError(f"{name} has shape {array.shape}: must be ({model.num_dofs},) or "
                          f"({model.num_nodes}, 3)")

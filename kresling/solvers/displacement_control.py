@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from kresling import _core
 from kresling.solvers._inputs import dof_vector
-from kresling._validation import as_integer, as_positive_real
+from kresling._validation import as_bool, as_integer, as_positive_real, as_real
 from kresling.solvers.path import PathResult
 
 
@@ -26,12 +26,15 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
     prescribed : array_like, shape (3N,) or (N, 3)
         Total displacement of the imposed DOFs [mm].
     steps : int
-        Number of equal increments.
+        Number of equal increments, 1 to 100 000 (the path keeps every one).
     tolerance : float
         Newton tolerance on ||du_free||_2 [mm] (MERLIN2: 1e-6).
-    max_iterations, reject_iterations, max_bisections : int
+    max_iterations, reject_iterations : int
+        At most :data:`kresling._core.solvers.MAX_ITERATIONS` (10 000).
+    max_bisections : int
+        0 to 30: an increment may be cut to 1/2^max_bisections of its size.
     shift : float
-        Added to the tangent's diagonal (MERLIN2: 1e-8).
+        Added to the tangent's diagonal (MERLIN2: 1e-8); 0 to 1e-3 N/mm.
     extrapolation : {0, 1, 2}
         Starting guess of each increment's free DOFs: the previous equilibrium (0, MERLIN2's
         iteration sequence), or a linear (1) or quadratic (2) extrapolation along the path.
@@ -58,7 +61,7 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
     ------
     ValueError
         For bad input: shapes, NaN, nothing prescribed, a prescribed DOF that is also
-        supported, steps < 1.
+        supported, a count or the shift out of its range.
     """
     options = displacement_control_options(
         tolerance=tolerance, max_iterations=max_iterations, reject_iterations=reject_iterations,
@@ -82,9 +85,9 @@ def displacement_control_options(*, tolerance=1e-6, max_iterations=50, reject_it
     o.max_iterations = as_integer("max_iterations", max_iterations, minimum=1)
     o.reject_iterations = as_integer("reject_iterations", reject_iterations, minimum=1)
     o.max_bisections = as_integer("max_bisections", max_bisections, minimum=0)
-    o.shift = float(shift)
+    o.shift = as_real("shift", shift)
     o.extrapolation = int(extrapolation)
-    o.merlin2_steps = bool(merlin2_steps)
+    o.merlin2_steps = as_bool("merlin2_steps", merlin2_steps)
     if stop is not None and not callable(stop):
         raise ValueError(f"stop = {stop!r} is invalid: must be None or a callable")
     o.stop = stop

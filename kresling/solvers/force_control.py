@@ -6,7 +6,7 @@ import math
 
 from kresling import _core
 from kresling.solvers._inputs import dof_vector
-from kresling._validation import as_integer, as_positive_real
+from kresling._validation import as_integer, as_positive_real, as_real
 from kresling.solvers.path import PathResult
 
 
@@ -36,7 +36,7 @@ def solve_force_control(model, forces, steps, *, tolerance=1e-6, max_iterations=
         model._core, dof_vector(model, "forces", forces), as_integer("steps", steps, minimum=1),
         as_positive_real("tolerance", tolerance),
         as_integer("max_iterations", max_iterations, minimum=1),
-        as_integer("max_bisections", max_bisections, minimum=0), float(shift),
+        as_integer("max_bisections", max_bisections, minimum=0), as_real("shift", shift),
         dof_vector(model, "initial", initial, allow_none=True), _stop(stop))
     return PathResult._from_core(d)
 
@@ -80,15 +80,17 @@ def solve_mgdcm(model, forces, *, initial_load_factor=0.01, max_increments=100,
     """
     if monitor_dof is None:
         monitor_dof = -1
-    elif not 0 <= int(monitor_dof) < model.num_dofs:
-        raise ValueError(f"monitor_dof = {monitor_dof!r} is invalid: must be a DOF index in "
-                         f"[0, {model.num_dofs})")
+    else:
+        monitor_dof = as_integer("monitor_dof", monitor_dof, minimum=0,
+                                 maximum=model.num_dofs - 1)
     d = _core.solvers.mgdcm(
-        model._core, dof_vector(model, "forces", forces), float(initial_load_factor),
-        as_integer("max_increments", max_increments, minimum=1), float(max_load_factor),
-        int(monitor_dof),
-        float(max_displacement), float(max_step_factor), as_positive_real("tolerance", tolerance),
-        as_integer("max_iterations", max_iterations, minimum=1), float(shift),
+        model._core, dof_vector(model, "forces", forces),
+        as_real("initial_load_factor", initial_load_factor),
+        as_integer("max_increments", max_increments, minimum=1),
+        as_real("max_load_factor", max_load_factor), monitor_dof,
+        as_real("max_displacement", max_displacement),
+        as_real("max_step_factor", max_step_factor), as_positive_real("tolerance", tolerance),
+        as_integer("max_iterations", max_iterations, minimum=1), as_real("shift", shift),
         dof_vector(model, "initial", initial, allow_none=True), _stop(stop))
     return PathResult._from_core(d)
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from kresling import _core
+from kresling._validation import as_integer, show
 from kresling.assembly import _displacement
 
 
@@ -32,7 +33,10 @@ def condensed_stiffness(model, dofs, u=None) -> np.ndarray:
     ValueError
         For bad DOFs, or when the free part is singular (a mechanism the supports allow).
     """
-    dofs = [int(d) for d in dofs]
+    if isinstance(dofs, (str, bytes)) or not hasattr(dofs, "__iter__"):
+        raise ValueError(f"dofs = {show(dofs)} is invalid: must be a sequence of DOF indices")
+    dofs = [as_integer(f"dofs[{k}]", d, minimum=0, maximum=model.num_dofs - 1)
+            for k, d in enumerate(dofs)]
     S, singular = _core.solvers.condensed_stiffness(model._core, _displacement(model, u), dofs)
     if singular:
         raise ValueError("condensed_stiffness: the free DOFs form a mechanism (K_ff is "

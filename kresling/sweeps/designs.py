@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from kresling._validation import as_integer, as_integer_array, as_real
+from kresling._validation import as_float_array, as_integer, as_integer_array, as_real
 from kresling.geometry import Design, design_quantities
 
 __all__ = ["DesignSet", "design_grid", "as_design_set", "THESIS_N", "THESIS_LAM"]
@@ -153,12 +153,19 @@ def as_design_set(designs) -> DesignSet:
         missing = [k for k in ("n", "Lc", "lam") if k not in designs]
         if missing:
             raise ValueError(f"designs is missing the column(s) {', '.join(missing)}")
-        n = np.atleast_1d(designs["n"])
-        R = np.broadcast_to(np.asarray(designs.get("R", 30.0), float), n.shape)
-        return _checked(n, np.atleast_1d(designs["Lc"]), np.atleast_1d(designs["lam"]), R,
+        n = np.atleast_1d(np.asarray(designs["n"]))
+        try:
+            R = np.broadcast_to(as_float_array("R", designs.get("R", 30.0)), n.shape)
+        except ValueError as error:
+            raise ValueError(f"designs['R'] does not match designs['n'] ({error})") from None
+        return _checked(n, np.atleast_1d(as_float_array("Lc", designs["Lc"])),
+                        np.atleast_1d(as_float_array("lam", designs["lam"])), R,
                         {"kind": "list"})
     if isinstance(designs, (Design, str, bytes)):
         raise ValueError("designs must be a collection of designs (wrap one Design in a list)")
+    if not hasattr(designs, "__iter__"):
+        raise ValueError(f"designs = {designs!r} is invalid: must be Design objects, a DesignSet "
+                         "or a mapping of columns")
     items = list(designs)
     bad = [type(d).__name__ for d in items if not isinstance(d, Design)]
     if bad:

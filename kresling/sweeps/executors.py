@@ -8,8 +8,11 @@ without starting processes or pickling results. Processes isolate a crash in the
 
 from __future__ import annotations
 
+import ctypes
 import multiprocessing
 import os
+import signal
+import sys
 from concurrent.futures import Executor, ProcessPoolExecutor, ThreadPoolExecutor
 
 __all__ = ["ExecutorHandle", "default_workers", "make_executor"]
@@ -38,7 +41,8 @@ class ExecutorHandle:
         if self.kind == "processes":
             # spawn: workers start clean (no threads or locks inherited from the parent).
             return ProcessPoolExecutor(self.workers,
-                                       mp_context=multiprocessing.get_context("spawn"))
+                                       mp_context=multiprocessing.get_context("spawn"),
+                                       initializer=_die_with_parent, initargs=(os.getpid(),))
         return ThreadPoolExecutor(self.workers, thread_name_prefix="kresling-sweep")
 
     def rebuild(self) -> bool:
@@ -50,8 +54,29 @@ class ExecutorHandle:
         return True
 
     def shutdown(self, interrupted: bool = False) -> None:
-        if self.owned:
-            self.executor.shutdown(wait=not interrupted, cancel_futures=True)
+        if not self.owned:
+            return
+        if interrupted and isinstance(self.executor, ProcessPoolExecutor):
+            # The workers would finish the chunk they are on (up to a minute) before
+            # noticing; their results are not wanted: stop them now.
+            for process in list((getattr(self.executor, "_processes", None) or {}).values()):
+                if process.is_alive():
+                    process.terminate()
+        self.executor.shutdown(wait=not interrupted, cancel_futures=True)
+
+
+def _die_with_parent(parent: int) -> None:
+    """In a worker process: ask Linux to end it (SIGTERM) when the sweep's process dies, even
+    by SIGKILL, so that no worker outlives a killed sweep. Elsewhere: nothing."""
+    if not sys.platform.startswith("linux"):
+        return
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(1, signal.SIGTERM)  # PR_SET_PDEATHSIG
+    except (OSError, AttributeError):  # pragma: no cover - no prctl
+        return
+    if os.getppid() != parent:  # the parent died before the call
+        os._exit(1)
 
 
 def make_executor(executor, workers) -> ExecutorHandle:

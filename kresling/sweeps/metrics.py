@@ -203,6 +203,9 @@ def resolve_metrics(names) -> tuple:
     """
     if isinstance(names, (str, Metric)):
         names = [names]
+    if not isinstance(names, (list, tuple)) and not hasattr(names, "__iter__"):
+        raise ValueError(f"metrics = {names!r} is invalid: must be a metric name or a list of "
+                         f"them, from {', '.join(METRICS)}")
     names = list(names)
     if not names:
         raise ValueError("metrics is empty: name at least one of " + ", ".join(METRICS))
@@ -210,7 +213,7 @@ def resolve_metrics(names) -> tuple:
     for name in names:
         if isinstance(name, Metric):
             metrics.append(name)
-        elif name in METRICS:
+        elif isinstance(name, str) and name in METRICS:
             metrics.append(METRICS[name])
         else:
             raise ValueError(f"unknown metric {name!r}: must be one of {', '.join(METRICS)}")

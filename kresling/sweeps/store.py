@@ -14,14 +14,14 @@ keeps two processes from writing one directory at once.
 
 from __future__ import annotations
 
-import csv
 import json
 import logging
 import os
 from datetime import datetime, timezone
 from pathlib import Path
 
-from kresling.sweeps.table import format_row, parse_value
+from kresling._validation import csv_cells, show
+from kresling.sweeps.table import column_kind, format_row, parse_value
 
 try:  # POSIX; without it the directory is simply not locked
     import fcntl
@@ -76,8 +76,9 @@ class SweepStore:
         try:
             manifest_path, results_path = directory / MANIFEST, directory / RESULTS
             if manifest_path.exists():
-                _check_same(directory, json.loads(manifest_path.read_text()), manifest)
-                manifest = dict(json.loads(manifest_path.read_text()), complete=False)
+                found = _read_manifest(manifest_path)
+                _check_same(directory, found, manifest)
+                manifest = dict(found, complete=False)
             elif results_path.exists():
                 raise ValueError(f"{directory} holds {RESULTS} but no {MANIFEST}: not a "
                                  f"sweep directory this package wrote; use another directory")
@@ -113,6 +114,21 @@ class SweepStore:
         """Release the directory's lock (rows already appended stay)."""
         _release(self._lock)
         self._lock = None
+
+
+def _read_manifest(path: Path) -> dict:
+    """The manifest on disk; a damaged one (cut short, not JSON, not an object) is a
+    ValueError naming the file."""
+    data = path.read_bytes()
+    try:
+        manifest = json.loads(data.decode("utf-8"))
+    except (UnicodeDecodeError, json.JSONDecodeError) as error:
+        raise ValueError(f"{path} is damaged (not JSON: {error}); it says what sweep the "
+                         f"directory holds: delete the directory to start again") from None
+    if not isinstance(manifest, dict) or not isinstance(manifest.get("columns"), list):
+        raise ValueError(f"{path} is damaged (not a sweep manifest: no list of columns); "
+                         f"delete the directory to start again")
+    return manifest
 
 
 def _identity(manifest: dict, key: str):
@@ -151,20 +167,31 @@ def _read_rows(path: Path, columns, check_row) -> dict:
         return {}
     data = path.read_bytes()
     whole = data[: data.rfind(b"\n") + 1]
-    lines = whole.decode("utf-8").splitlines()
-    if not lines or next(csv.reader(lines[:1])) != list(columns):
+    lines = whole.split(b"\n")[:-1]  # the file writes "\n" only (format_row)
+    if not lines or _fields(path, 1, lines[0]) != list(columns):
         raise ValueError(f"{path} does not start with the header this sweep writes")
     rows = {}
-    for number, fields in enumerate(csv.reader(lines[1:]), start=2):
+    for number, line in enumerate(lines[1:], start=2):
+        fields = _fields(path, number, line)
         if len(fields) != len(columns):
             if number < len(lines):
                 raise ValueError(f"{path}, line {number}: {len(fields)} fields, expected "
                                  f"{len(columns)} (damaged file)")
             whole = whole[: whole.rstrip(b"\n").rfind(b"\n") + 1]  # drop a partial last row
             break
-        row = tuple(parse_value(name, text) for name, text in zip(columns, fields))
+        row = []
+        for name, text in zip(columns, fields):
+            try:
+                row.append(parse_value(name, text))
+            except ValueError:
+                raise ValueError(f"{path}, line {number}: column {name!r} = {show(text)} is "
+                                 f"not a {column_kind(name)} (damaged file)") from None
+        row = tuple(row)
         if check_row is not None:
-            check_row(row)
+            try:
+                check_row(row)
+            except ValueError as error:
+                raise ValueError(f"{path}, line {number}: {error}") from None
         rows.setdefault(row[columns.index("index")], row)
     if len(whole) != len(data):
         logger.warning("%s: dropped an incomplete last line (%d bytes) left by an interrupted "
@@ -172,6 +199,16 @@ def _read_rows(path: Path, columns, check_row) -> dict:
         with open(path, "r+b") as f:
             f.truncate(len(whole))
     return rows
+
+
+def _fields(path: Path, number: int, line: bytes) -> list:
+    """The fields of one line of results.csv (UTF-8, as written); bytes that are not, or a
+    line csv cannot read, are a ValueError naming the file and line."""
+    try:
+        text = line.decode("utf-8")
+    except UnicodeDecodeError:
+        raise ValueError(f"{path}, line {number}: not UTF-8 text (damaged file)") from None
+    return csv_cells(text.rstrip("\r"), path, number)
 
 
 def _write_atomic(path: Path, text: str) -> None:

@@ -18,6 +18,8 @@ import io
 
 import numpy as np
 
+from kresling._validation import csv_records, show
+
 __all__ = ["SweepTable", "DESIGN_COLUMNS", "STATUS_COLUMNS", "OK", "FAILED"]
 
 #: Leading and trailing columns of every sweep table (metric columns go between them).
@@ -164,12 +166,22 @@ class SweepTable:
     @classmethod
     def read_csv(cls, path) -> "SweepTable":
         """Read a table written by :meth:`to_csv` or by a sweep."""
-        with open(path, newline="") as f:
-            reader = csv.reader(f)
-            header = next(reader)
-            rows = list(reader)
-        columns = {name: [parse_value(name, row[k]) for row in rows]
-                   for k, name in enumerate(header)}
+        with open(path, newline="", encoding="utf-8", errors="replace") as f:
+            records = list(csv_records(f, path))
+        if not records:
+            raise ValueError(f"{path} is empty: a sweep table starts with its header line")
+        header = records[0][1]
+        columns = {name: [] for name in header}
+        for line, row in records[1:]:
+            if len(row) != len(header):
+                raise ValueError(f"{path}, line {line}: {len(row)} fields, expected "
+                                 f"{len(header)}")
+            for name, text in zip(header, row):
+                try:
+                    columns[name].append(parse_value(name, text))
+                except ValueError:
+                    raise ValueError(f"{path}, line {line}: column {name!r} = {show(text)} is "
+                                     f"not a {column_kind(name)}") from None
         return cls(columns)
 
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "kresling/core/check.hpp"
+#include "kresling/solvers/limits.hpp"
 
 namespace kresling::analyses {
 
@@ -24,15 +25,16 @@ void check(int n, const BendingOptions& o) {
                   "even for the bending test: each end is pinned at vertices 0 and n/2, which "
                   "must be opposite");
   }
-  if (o.cells < 2 || o.cells % 2 != 0) {
-    throw_invalid("cells", o.cells, "an even number >= 2 (the load acts on the middle polygon)");
+  if (o.cells < 2 || o.cells % 2 != 0 || o.cells > 100000) {
+    throw_invalid("cells", o.cells,
+                  "an even number >= 2 and <= 100000 (the load acts on the middle polygon)");
   }
   require_finite("deflection", o.deflection);
   require_finite("deflection_angle", o.deflection_angle);
   if (std::abs(o.deflection_angle) >= 1.0) {
     throw_invalid("deflection_angle", o.deflection_angle, "smaller than 1 rad in magnitude");
   }
-  if (o.steps < 1) throw_invalid("steps", o.steps, "an integer >= 1");
+  solvers::check_steps("steps", o.steps);
 }
 
 }  // namespace
@@ -57,9 +59,18 @@ BendingTest::BendingTest(int n, BendingOptions options)
   }
 }
 
-BendingResult BendingTest::run(const geometry::Design& design, int state) {
-  const BendingOptions& o = options_;
+void check_bending_state(const geometry::Design& design, int state) {
   if (state != 0 && state != 1) throw_invalid("state", state, "0 (contracted) or 1 (extended)");
+  if (state == 0 && !(design.parameters().Lc > 0.0)) {
+    throw_invalid("Lc", design.parameters().Lc,
+                  "> 0 for the bending test in the contracted state: at Lc = 0 the cells fold "
+                  "flat (module length 0, no bending stiffness to measure)");
+  }
+}
+
+double bending_drive(const geometry::Design& design, int state, const BendingOptions& o) {
+  check(design.parameters().n, o);
+  check_bending_state(design, state);
   const double module_length = 2.0 * design.height(static_cast<geometry::State>(state));
   const double deflection = o.deflection_angle != 0.0
                                 ? module_length * std::tan(o.deflection_angle)
@@ -70,6 +81,17 @@ BendingResult BendingTest::run(const geometry::Design& design, int state) {
                   "non-zero and smaller than the polygon's radius R = " +
                       format_number(design.parameters().R) + " mm");
   }
+  return deflection;
+}
+
+BendingResult BendingTest::run(const geometry::Design& design, int state) {
+  const BendingOptions& o = options_;
+  if (design.parameters().n != builder_.n()) {
+    throw_invalid("design.n", design.parameters().n,
+                  "the test's n = " + std::to_string(builder_.n()));
+  }
+  const double deflection = bending_drive(design, state, o);
+  const double module_length = 2.0 * design.height(static_cast<geometry::State>(state));
   const int n = design.parameters().n;
   const model::KreslingSpecimen specimen =
       builder_.build(design, std::vector<int>(o.cells, state), fixed_);

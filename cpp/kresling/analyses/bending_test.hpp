@@ -78,6 +78,18 @@ class BendingTest {
 BendingResult bending_test(const geometry::Design& design, int state,
                            const BendingOptions& options = {});
 
+/// Throw std::invalid_argument unless `state` is 0 or 1 and, in the contracted state,
+/// Lc > 0 (a cell folded flat has no module length to bend): the bending tests' (nonlinear
+/// and linearised) check of the design in a state.
+void check_bending_state(const geometry::Design& design, int state);
+
+/// The transverse motion of the middle polygon a test with `options` imposes on `design` in
+/// `state` [mm], after every check of the inputs (the same the test makes): n even, the
+/// cell count, the steps, the state, Lc > 0 in the contracted state (a flat-folded cell has
+/// no module length), a deflection that is non-zero, finite and smaller than R. Throws
+/// std::invalid_argument naming the parameter.
+double bending_drive(const geometry::Design& design, int state, const BendingOptions& options);
+
 /// Least-squares slope of y on x through the origin (NaN for an empty or all-zero x).
 double slope_through_origin(const std::vector<double>& x, const std::vector<double>& y);
 

@@ -9,13 +9,14 @@
 #include "kresling/analyses/curve_features.hpp"
 #include "kresling/core/check.hpp"
 #include "kresling/solvers/energy_minimum.hpp"
+#include "kresling/solvers/limits.hpp"
 
 namespace kresling::analyses {
 
 namespace {
 
 const SnapThroughOptions& checked(const SnapThroughOptions& o) {
-  if (o.steps < 1) throw_invalid("steps", o.steps, "an integer >= 1");
+  solvers::check_steps("steps", o.steps);
   return o;
 }
 
@@ -45,6 +46,14 @@ std::string mm(double value) { return format_number(std::round(value * 1e3) / 1e
 
 }  // namespace
 
+void check_snap_design(const geometry::Design& design) {
+  if (!(design.parameters().Lc > 0.0)) {
+    throw_invalid("Lc", design.parameters().Lc,
+                  "> 0 for the snap-through test: at Lc = 0 the drive would end with the cell "
+                  "folded flat, where the hinges' law is infinite");
+  }
+}
+
 SnapThroughTest::SnapThroughTest(int n, SnapThroughOptions options)
     : options_(checked(options)),
       builder_(n, {1}, options_.specimen),
@@ -56,6 +65,7 @@ SnapThroughResult SnapThroughTest::run(const geometry::Design& design) {
   if (design.parameters().n != n) {
     throw_invalid("design.n", design.parameters().n, "the test's n = " + std::to_string(n));
   }
+  check_snap_design(design);
   SnapThroughResult r;
   r.extended_height = design.height(geometry::State::Extended);
   r.contracted_height = design.height(geometry::State::Contracted);

@@ -86,6 +86,11 @@ struct SnapThroughResult {
 /// The test for one polygon size, reusable across designs: the topology, the sparsity
 /// patterns and the symbolic factorisations are built once (a sweep runs many designs of one
 /// n through one SnapThroughTest).
+/// Throw std::invalid_argument unless `design` can be driven by the snap-through test:
+/// Lc > 0 (at Lc = 0 the drive ends with the cell folded flat, where the hinge law is
+/// infinite).
+void check_snap_design(const geometry::Design& design);
+
 class SnapThroughTest {
  public:
   /// Throws std::invalid_argument for n < 3, steps < 1 or bad specimen or solver options.

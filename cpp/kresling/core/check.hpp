@@ -17,6 +17,10 @@ std::string format_number(double value);
 /// Throw std::invalid_argument("<name> = <value> is invalid: must be <allowed>").
 [[noreturn]] void throw_invalid(const std::string& name, double value, const std::string& allowed);
 
+/// Throw unless lo <= value <= hi: "<name> = <value> is invalid: must be an integer in
+/// [lo, hi]" (counts with a documented upper bound: steps, iterations, bisections).
+void require_integer_in(const std::string& name, long long value, long long lo, long long hi);
+
 /// Throw unless `value` is finite (not NaN, not +-inf).
 void require_finite(const std::string& name, double value);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace kresling::elements {
 
@@ -23,6 +24,14 @@ SpringResponse enhanced_linear_spring(double theta, double theta0, double kp, do
   const double t = below ? theta1 : theta2;
   const double q = 0.5 * (below ? kPi / theta1 : kPi / (2.0 * kPi - theta2));
   const double x = theta - t;
+  // The law's domain is 0 < theta < 2 pi: at a hinge folded flat onto itself (theta = 0 or
+  // 2 pi, q |x| = pi/2) the moment is infinite. Said so (inf), not evaluated: tan and cos
+  // there give finite rounding noise (|M| ~ 1e16 kp) whose sign flips with the last bit of
+  // theta, which a solver would otherwise accept as an equilibrium force.
+  if (theta <= 0.0 || theta >= 2.0 * kPi || !(std::abs(q * x) < 0.5 * kPi)) {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {below ? -inf : inf, inf, inf};
+  }
   const double c = std::cos(q * x);
   SpringResponse r;
   r.moment = kp * (t - theta0) + kp * std::tan(q * x) / q;

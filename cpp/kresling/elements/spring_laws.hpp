@@ -35,6 +35,8 @@ SpringResponse linear_spring(double theta, double theta0, double kp);
 /// M = kp (theta1 - theta0) + kp tan(p/2 (theta - theta1)) / (p/2) with p = pi / theta1, so
 /// the moment grows without bound as the hinge closes flat (theta -> 0); above theta2 the
 /// mirror image with p = pi / (2 pi - theta2). M and dM/dtheta are continuous at the limits.
+/// Its domain is 0 < theta < 2 pi: at a hinge folded flat (theta = 0 or 2 pi) M, dM/dtheta
+/// and the energy are infinite (-inf / +inf for M), so no solver accepts such a state.
 SpringResponse enhanced_linear_spring(double theta, double theta0, double kp, double theta1,
                                       double theta2);
 

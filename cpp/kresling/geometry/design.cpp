@@ -63,7 +63,10 @@ DerivedQuantities derive(const DesignParameters& p) {
   d.theta_g = std::acos(std::clamp((d.P * d.P + d.Vg * d.Vg - d.Mg * d.Mg) / (2.0 * d.P * d.Vg),
                                    -1.0, 1.0));
   d.alpha0 = 2.0 * lam * d.gamma;
-  d.alpha_e = kPi - d.alpha0 - 2.0 * d.phi;
+  // pi - alpha0 - 2 phi, written as 2 gamma (1 - lam) (pi - 2 phi = 2 gamma): the plain
+  // difference cancels to exactly 0 as lam -> 1 (Design(28, 1 - 2^-52, 0, 1)), where this
+  // is positive for every lam < 1 (1 - lam is exact for lam >= 0.5) and accurate.
+  d.alpha_e = 2.0 * d.gamma * (1.0 - lam);
   // Le^2 = Lc^2 - 2 R^2 (cos a0 + cos(a0 + 2 phi)) = Lc^2 - 4 R^2 cos(a0 + phi) cos(phi)
   //      = Lc^2 + 4 R^2 sin(gamma (2 lam - 1)) cos(phi),
   // since a0 + phi - pi/2 = gamma (2 lam - 1). The last form is a sum of non-negative terms

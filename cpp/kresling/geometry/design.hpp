@@ -44,7 +44,7 @@ struct DerivedQuantities {
   double Mg = 0;       ///< generalized mountain crease, eqn 7
   double theta_g = 0;  ///< facet angle of the flat pattern (between P and Vg), eqn 5
   double alpha0 = 0;   ///< twist at the contracted state, 2 lam gamma
-  double alpha_e = 0;  ///< twist at the extended state, pi - alpha0 - 2 phi
+  double alpha_e = 0;  ///< twist at the extended state, pi - alpha0 - 2 phi = 2 gamma (1 - lam)
   double Le = 0;       ///< extended height
   double psi_con = 0;  ///< facet angle Psi (perimeter triangle vs base polygon), contracted
   double psi_ext = 0;  ///< facet angle Psi, extended

@@ -7,6 +7,7 @@
 #include <Eigen/Cholesky>
 
 #include "kresling/core/check.hpp"
+#include "kresling/core/interrupt.hpp"
 
 namespace kresling::kinematics {
 
@@ -14,6 +15,13 @@ namespace {
 
 constexpr double kMinDamping = 1e-12;
 constexpr double kMaxDamping = 1e8;
+// Seed grid: grid_points^3 samples (a million at most); Levenberg-Marquardt iterations.
+constexpr int kMaxGridPoints = 100;
+constexpr int kMaxIterations = 100000;
+
+void check_grid_points(int grid_points) {
+  require_integer_in("grid_points", grid_points, 2, kMaxGridPoints);
+}
 
 Eigen::Vector3d clamp_to(const Eigen::Vector3d& l, const TendonBounds& bounds) {
   return l.cwiseMax(bounds.lower).cwiseMin(bounds.upper);
@@ -21,10 +29,10 @@ Eigen::Vector3d clamp_to(const Eigen::Vector3d& l, const TendonBounds& bounds) {
 
 void validate(const InverseKinematicsOptions& options) {
   require_positive("tolerance", options.tolerance);
-  if (options.max_iterations < 1) throw_invalid("max_iterations", options.max_iterations, ">= 1");
+  require_integer_in("max_iterations", options.max_iterations, 1, kMaxIterations);
   require_positive("initial_damping", options.initial_damping);
-  if (options.grid_points < 2) throw_invalid("grid_points", options.grid_points, ">= 2");
-  if (options.starts < 1) throw_invalid("starts", options.starts, ">= 1");
+  check_grid_points(options.grid_points);
+  if (options.starts < 1) throw_invalid("starts", options.starts, "an integer >= 1");
 }
 
 InverseKinematicsResult solve_from_samples(const ChainModel& model,
@@ -78,7 +86,7 @@ void sample_workspace(const ChainModel& model, const Configuration& configuratio
                       Eigen::MatrixX3d& positions) {
   validate_configuration(model, configuration);
   validate(bounds, model.tendons);
-  if (grid_points < 2) throw_invalid("grid_points", grid_points, "an integer >= 2");
+  check_grid_points(grid_points);
   if (flexible_count(configuration) == 0) {  // all rigid: one reachable point
     lengths.resize(1, 3);
     lengths.row(0).setConstant(0.5 * (bounds.lower + bounds.upper));
@@ -93,6 +101,7 @@ void sample_workspace(const ChainModel& model, const Configuration& configuratio
   int row = 0;
   for (int i = 0; i < g; ++i) {
     for (int j = 0; j < g; ++j) {
+      check_interrupt();
       for (int k = 0; k < g; ++k, ++row) {
         const Eigen::Vector3d l(bounds.lower + i * step, bounds.lower + j * step,
                                 bounds.lower + k * step);
@@ -117,6 +126,7 @@ InverseKinematicsResult solve_from(const ChainModel& model, const Configuration&
   }
   double damping = options.initial_damping;
   while (out.distance >= options.tolerance && out.iterations < options.max_iterations) {
+    check_interrupt();
     ++out.iterations;
     const Eigen::Vector3d error = target - out.position;
     Eigen::Matrix3d J = tip_jacobian(model, configuration, out.tendon_lengths);

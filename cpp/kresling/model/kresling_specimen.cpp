@@ -52,8 +52,16 @@ Index node_index(int n, int level, int j) { return static_cast<Index>(level) * (
 KreslingSpecimenBuilder::KreslingSpecimenBuilder(int n, std::vector<int> chirality,
                                                  SpecimenParameters parameters)
     : n_(n), chirality_(std::move(chirality)), parameters_(parameters) {
-  if (n_ < 3) throw_invalid("n", n_, "an integer >= 3");
+  require_integer_in("n", n_, 3, kMaxSpecimenNodes);
   if (chirality_.empty()) throw std::invalid_argument("chirality: the specimen needs at least one cell");
+  // 64-bit: (cells + 1) (n + 1) overflows an int long before memory runs out.
+  const long long nodes = (static_cast<long long>(chirality_.size()) + 1) * (n_ + 1LL);
+  if (nodes > kMaxSpecimenNodes) {
+    throw std::invalid_argument(
+        "n, cells = " + std::to_string(n_) + ", " + std::to_string(chirality_.size()) +
+        " are invalid: a specimen of (cells + 1) (n + 1) = " + std::to_string(nodes) +
+        " nodes; must have at most " + std::to_string(kMaxSpecimenNodes));
+  }
   for (std::size_t i = 0; i < chirality_.size(); ++i) {
     if (chirality_[i] != 1 && chirality_[i] != -1) {
       throw_invalid("chirality[" + std::to_string(i) + "]", chirality_[i], "+1 or -1");

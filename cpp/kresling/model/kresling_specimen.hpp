@@ -37,6 +37,9 @@ enum class EdgeFamily : std::uint8_t {
 
 /// Stiffness assignment; defaults are the thesis's (Appendix B; docs/model.md,
 /// 'Material calibration').
+/// Largest specimen a builder makes: (cells + 1) (n + 1) nodes at most (and so n at most).
+inline constexpr long long kMaxSpecimenNodes = 1000000;
+
 struct SpecimenParameters {
   double kf = 0.047;                   ///< crease stiffness per unit length [N/rad]
   double valley_factor = 1.0;          ///< valley hinges: factor * kf

@@ -6,7 +6,9 @@
 #include <string>
 
 #include "kresling/core/check.hpp"
+#include "kresling/core/interrupt.hpp"
 #include "kresling/solvers/increments.hpp"
+#include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/newton.hpp"
 #include "kresling/solvers/rigid_body.hpp"
 
@@ -32,10 +34,18 @@ void extrapolate(const std::vector<double>& ts, const std::vector<VectorX>& us, 
 }
 
 void check_options(const DisplacementControlOptions& o) {
+  check_newton(o.newton);
+  require_integer_in("reject_iterations", o.reject_iterations, 1, kMaxIterations);
+  check_bisections(o.max_bisections);
+  check_shift(o.shift);
   if (o.extrapolation < 0 || o.extrapolation > 2) {
     throw_invalid("extrapolation", o.extrapolation, "0, 1 or 2");
   }
 }
+
+const char* const kNotFinite =
+    "the converged state's internal force or energy is not finite (an element's law is "
+    "singular there, e.g. a hinge folded flat)";
 
 }  // namespace
 
@@ -52,10 +62,11 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
                                 " entries, must have one per DOF (" + std::to_string(n) + ")");
   }
   if (!prescribed.allFinite()) throw std::invalid_argument("prescribed: contains NaN or inf");
-  if (steps < 1) throw_invalid("steps", steps, "an integer >= 1");
+  check_steps("steps", steps);
   if (initial.size() != 0 && initial.size() != n) {
     throw std::invalid_argument("initial: must be empty or have one entry per DOF");
   }
+  if (!initial.allFinite()) throw std::invalid_argument("initial: contains NaN or inf");
 
   std::vector<std::uint8_t> held = model.fixed();
   std::vector<Index> imposed;
@@ -128,9 +139,14 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
                           : outcome.failure;
             return false;
           }
+          PathStep step = record_step(*assembler_, trial, t_new, outcome, imposed, -1.0);
+          if (!finite_step(step)) {
+            failure = kNotFinite;
+            return false;
+          }
           u = trial;
           if (outcome.negative_eigenvalues >= 0) previous_negative = outcome.negative_eigenvalues;
-          result.steps.push_back(record_step(*assembler_, u, t_new, outcome, imposed, -1.0));
+          result.steps.push_back(std::move(step));
           path_t.push_back(t_new);
           path_u.push_back(u);
           if (path_t.size() > 3) {
@@ -157,6 +173,7 @@ NewtonOutcome damped_newton(assembly::Assembler& assembler, TangentSolver& solve
   NewtonOutcome out;
   VectorX force;
   while (out.iterations < options.max_iterations) {
+    check_interrupt();
     ++out.iterations;
     assembler.assemble(u, force, /*with_matrix=*/true);
     const FactorizeInfo info = solver.factorize(assembler.matrix());
@@ -192,6 +209,7 @@ PathResult DisplacementControl::solve_merlin2_steps(const VectorX& prescribed, i
   int rejections = 0;      // in a row
   std::string last_failure;
   while (moved <= 1.0 && rejections <= 20) {
+    check_interrupt();
     ++result.attempted_increments;
     VectorX trial = u;
     for (Index i : imposed) trial[i] += step_size * increment[i];
@@ -203,10 +221,17 @@ PathResult DisplacementControl::solve_merlin2_steps(const VectorX& prescribed, i
         damping == 1.0 ? newton_equilibrium(*assembler_, *solver_, trial, VectorX::Zero(u.size()),
                                             options_.newton, budget)
                        : damped_newton(*assembler_, *solver_, trial, options_.newton, damping);
-    if (!outcome.converged || outcome.iterations >= limit) {
-      last_failure = outcome.converged
-                         ? "Newton needed " + std::to_string(outcome.iterations) + " iterations"
-                         : outcome.failure;
+    PathStep step;
+    bool finite = true;
+    if (outcome.converged && outcome.iterations < limit) {
+      step = record_step(*assembler_, trial, moved + step_size / steps, outcome, imposed, -1.0);
+      finite = finite_step(step);
+    }
+    if (!outcome.converged || outcome.iterations >= limit || !finite) {
+      last_failure = !outcome.converged ? outcome.failure
+                     : !finite          ? std::string(kNotFinite)
+                                        : "Newton needed " + std::to_string(outcome.iterations) +
+                                              " iterations";
       ++rejections;
       if (rejections <= 10) {
         step_size *= 0.5;
@@ -221,7 +246,7 @@ PathResult DisplacementControl::solve_merlin2_steps(const VectorX& prescribed, i
     damping = 1.0;
     step_size = step_size < 1.0 ? std::min(step_size * 1.1, 1.0) : std::max(step_size * 0.9, 1.0);
     u = trial;
-    result.steps.push_back(record_step(*assembler_, u, moved, outcome, imposed, -1.0));
+    result.steps.push_back(std::move(step));
     if (options_.stop && options_.stop(result.steps.back())) {
       result.completed = true;
       return result;

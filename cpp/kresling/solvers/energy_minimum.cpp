@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include "kresling/core/check.hpp"
+#include "kresling/core/interrupt.hpp"
 #include "kresling/solvers/newton.hpp"
 
 namespace kresling::solvers {
@@ -43,6 +44,7 @@ EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
   EnergyMinimum out;
   Evaluation e;
   for (out.iterations = 0; out.iterations < o.max_iterations; ++out.iterations) {
+    check_interrupt();
     if (!evaluate(assembler, u, e)) {
       out.failure = "the energy or its derivatives are not finite (an element degenerated)";
       return out;

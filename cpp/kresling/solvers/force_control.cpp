@@ -6,7 +6,9 @@
 
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/core/check.hpp"
+#include "kresling/core/interrupt.hpp"
 #include "kresling/solvers/increments.hpp"
+#include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/newton.hpp"
 #include "kresling/solvers/rigid_body.hpp"
 
@@ -38,12 +40,19 @@ void check_inputs(const model::Model& model, const VectorX& forces, const Vector
   require_rigid_body_constrained(model, model.fixed());
 }
 
+const char* const kNotFinite =
+    "the converged state's internal force or energy is not finite (an element's law is "
+    "singular there, e.g. a hinge folded flat)";
+
 }  // namespace
 
 PathResult solve_force_control(const model::Model& model, const VectorX& forces, int steps,
                                const ForceControlOptions& options, const VectorX& initial) {
   check_inputs(model, forces, initial);
-  if (steps < 1) throw_invalid("steps", steps, "an integer >= 1");
+  check_steps("steps", steps);
+  check_newton(options.newton);
+  check_bisections(options.max_bisections);
+  check_shift(options.shift);
   assembly::Assembler assembler(model, assembly::unmasked_dofs(model.fixed()), options.shift,
                                 assembly::Storage::Lower);
   TangentSolver solver;
@@ -59,8 +68,13 @@ PathResult solve_force_control(const model::Model& model, const VectorX& forces,
             failure = outcome.failure;
             return false;
           }
+          PathStep step = record_step(assembler, trial, l_new, outcome, result.constraint_dofs, 1.0);
+          if (!finite_step(step)) {
+            failure = kNotFinite;
+            return false;
+          }
           u = trial;
-          result.steps.push_back(record_step(assembler, u, l_new, outcome, result.constraint_dofs, 1.0));
+          result.steps.push_back(std::move(step));
           return true;
         },
         [&] { return options.stop && options.stop(result.steps.back()); },
@@ -80,11 +94,19 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
   if (options.initial_load_factor == 0.0) {
     throw_invalid("initial_load_factor", 0.0, "non-zero (its sign sets the loading direction)");
   }
-  if (options.max_increments < 1) throw_invalid("max_increments", options.max_increments, ">= 1");
+  check_steps("max_increments", options.max_increments);
+  check_newton(options.newton);
+  check_shift(options.shift);
+  if (!(options.max_load_factor > 0.0)) {
+    throw_invalid("max_load_factor", options.max_load_factor, "> 0 (inf: no limit)");
+  }
+  if (!(options.max_displacement > 0.0)) {
+    throw_invalid("max_displacement", options.max_displacement, "> 0 (inf: no limit)");
+  }
   if (!(options.max_step_factor >= std::abs(options.initial_load_factor))) {
     throw_invalid("max_step_factor", options.max_step_factor, ">= |initial_load_factor|");
   }
-  if (options.monitor_dof >= model.num_dofs()) {
+  if (options.monitor_dof < -1 || options.monitor_dof >= model.num_dofs()) {
     throw_invalid("monitor_dof", static_cast<double>(options.monitor_dof), "a DOF of the model");
   }
   assembly::Assembler assembler(model, assembly::unmasked_dofs(model.fixed()), options.shift,
@@ -110,6 +132,7 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
     VectorX predictor;  // this increment's first-iteration dup
     NewtonOutcome outcome;
     while (outcome.iterations < options.newton.max_iterations) {
+      check_interrupt();
       ++outcome.iterations;
       assembler.assemble(trial, force, /*with_matrix=*/true);
       const FactorizeInfo info = solver.factorize(assembler.matrix());
@@ -154,12 +177,20 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
         break;
       }
     }
+    PathStep step;
+    if (outcome.converged && outcome.iterations <= options.shrink_above_iterations) {
+      step = record_step(assembler, trial, l_trial, outcome, result.constraint_dofs, 1.0);
+      if (!finite_step(step)) {
+        outcome.converged = false;
+        outcome.failure = kNotFinite;
+      }
+    }
     if (outcome.converged && outcome.iterations <= options.shrink_above_iterations) {
       u = trial;
       lambda = l_trial;
       direction = trial_direction;
       previous_predictor = predictor;
-      result.steps.push_back(record_step(assembler, u, lambda, outcome, result.constraint_dofs, 1.0));
+      result.steps.push_back(std::move(step));
       if (outcome.iterations < options.grow_below_iterations) {
         step_factor = std::copysign(std::min(std::abs(step_factor) * 1.5, options.max_step_factor),
                                     step_factor);
@@ -183,8 +214,9 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
       return result;
     }
   }
-  const bool has_criterion = std::isfinite(options.max_load_factor) || options.monitor_dof >= 0 ||
-                             static_cast<bool>(options.stop);
+  // A caller's rule is an optional early stop: running out of increments before it fires
+  // completes the path as it would without it.
+  const bool has_criterion = std::isfinite(options.max_load_factor) || options.monitor_dof >= 0;
   result.completed = !has_criterion;
   if (has_criterion) {
     result.message = "the step budget (" + std::to_string(options.max_increments) +

@@ -4,8 +4,11 @@
 /// goes from 0 to 1 in `steps` equal increments; an increment that fails is retried as two
 /// halves, recursively, down to 1/2^max_bisections of its size.
 
+#include <cmath>
 #include <string>
 
+#include "kresling/core/interrupt.hpp"
+#include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/path.hpp"
 
 namespace kresling::solvers {
@@ -15,17 +18,22 @@ namespace kresling::solvers {
 /// `stop()` is asked after every accepted attempt: true ends the march there (completed).
 /// `describe(k, t, reason)` words the message when increment k fails at parameter t for
 /// good (reason: why its full-size attempt failed). Returns result.completed.
+/// Throws std::invalid_argument for steps outside [1, kMaxSteps] or max_bisections outside
+/// [0, kMaxBisections]; calls check_interrupt() before every attempt.
 template <typename Attempt, typename Stop, typename Describe>
 bool march(int steps, int max_bisections, PathResult& result, Attempt&& attempt, Stop&& stop,
            Describe&& describe) {
+  check_steps("steps", steps);
+  check_bisections(max_bisections);
   const double nominal = 1.0 / steps;
-  const double smallest = nominal / double(1 << max_bisections);
+  const double smallest = std::ldexp(nominal, -max_bisections);
   double t = 0.0;
   for (int k = 1; k <= steps; ++k) {
     const double target = (k == steps) ? 1.0 : k * nominal;
     double dt = target - t;
     std::string first_failure;  // why the whole increment failed, the most telling reason
     while (t < target) {
+      check_interrupt();
       ++result.attempted_increments;
       const double t_new = (dt >= target - t) ? target : t + dt;
       std::string failure;

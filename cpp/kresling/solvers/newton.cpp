@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "kresling/core/interrupt.hpp"
+
 namespace kresling::solvers {
 
 VectorX gather_rows(const assembly::Assembler& assembler, const VectorX& full) {
@@ -42,6 +44,7 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
   double last_correction = INFINITY;
   const double tol = options.tolerance;
   while (out.iterations < limit) {
+    check_interrupt();
     ++out.iterations;
     if (factorized) {
       // Chord check first: the correction from the tangent already factorised (at the
@@ -65,7 +68,9 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
     assembler.assemble(u, force, /*with_matrix=*/true);
     const VectorX residual = gather_rows(assembler, external - force);
     if (!residual.allFinite()) {
-      out.failure = "the internal force is not finite (an element inverted or degenerated)";
+      out.failure =
+          "the internal force is not finite (an element inverted or degenerated, or a hinge "
+          "folded flat)";
       return out;
     }
     const FactorizeInfo info = solver.factorize(assembler.matrix());
@@ -101,6 +106,12 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
                 last_correction, tol);
   out.failure = "Newton did not converge in " + std::to_string(limit) + " iterations" + detail;
   return out;
+}
+
+bool finite_step(const PathStep& step) {
+  return std::isfinite(step.load_factor) && step.displacement.allFinite() &&
+         step.constraint_force.allFinite() && std::isfinite(step.energy_bars) &&
+         std::isfinite(step.energy_hinges);
 }
 
 PathStep record_step(assembly::Assembler& assembler, const VectorX& u, double load_factor,

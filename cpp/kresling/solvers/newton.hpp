@@ -36,6 +36,12 @@ VectorX gather_rows(const assembly::Assembler& assembler, const VectorX& full);
 /// Add a row-indexed vector into the full-length vector at the assembler's rows.
 void scatter_add_rows(const assembly::Assembler& assembler, const VectorX& reduced, VectorX& full);
 
+/// Whether a recorded step holds only finite numbers (displacement, constraint forces,
+/// energies). A solver accepts no step that does not: a state where an element's law is
+/// singular (a hinge folded flat) fails its increment instead of ending a "completed" path
+/// with NaN or 1e16 N forces.
+bool finite_step(const PathStep& step);
+
 /// Record a converged state as a path step: energies and the internal force re-evaluated
 /// at `u` itself (not at the last iterate), the constrained DOFs' forces times `sign`.
 PathStep record_step(assembly::Assembler& assembler, const VectorX& u, double load_factor,

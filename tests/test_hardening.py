@@ -1,0 +1,414 @@
+"""Reproducers of the defects a fuzzing audit found (each must stay fixed): bad input is a
+ValueError naming the parameter, the value and what is allowed (the command line: one line
+on stderr, exit 2), never another exception, a hang or a silent NaN. The C++ side of several
+is in cpp/tests/test_hardening.cpp."""
+
+import _thread
+import json
+import math
+import threading
+import time
+
+import numpy as np
+import pytest
+
+from kresling import Design, _core
+from kresling.cli import main
+from kresling.model import Model
+from kresling.model.kresling_specimen import kresling_specimen
+from kresling.solvers import (condensed_stiffness, solve_displacement_control,
+                              solve_force_control, solve_mgdcm)
+
+
+def run_cli(capsys, *argv):
+    """``kresling ARGV`` in this process: (exit status, stdout, stderr)."""
+    status = main(list(argv))
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def assert_one_line_error(status, err, command, *fragments):
+    assert status == 2, err
+    assert "Traceback" not in err
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"kresling {command}: error: "), err
+    for fragment in fragments:
+        assert fragment in lines[0], lines[0]
+
+
+def driven_cell(n=4, lam=0.7, Lc=30.0):
+    """One cell, bottom polygon fixed, top polygon driven down 5 mm; (model, prescribed)."""
+    specimen = kresling_specimen(Design(n, lam, Lc), [1])
+    fixed = np.zeros((specimen.model.num_nodes, 3), dtype=bool)
+    fixed[specimen.level_nodes(0)] = True
+    model = specimen.model.replace(fixed=fixed)
+    prescribed = np.zeros((model.num_nodes, 3))
+    prescribed[specimen.level_nodes(1), 2] = -5.0
+    return model, prescribed
+
+
+# 1. A subnormal bad value: std::stod threw out_of_range (an IndexError) in the message.
+def test_subnormal_bad_value_is_a_value_error():
+    with pytest.raises(ValueError, match=r"^Lc = -1e-310 is invalid: must be >= 0$"):
+        Design(10, 0.8, -1e-310)
+
+
+def test_subnormal_bad_value_on_the_command_line(capsys):
+    status, _, err = run_cli(capsys, "design", "--n", "10", "--lam", "0.8", "--Lc=-1e-310")
+    assert_one_line_error(status, err, "design", "Lc = -1e-310 is invalid")
+
+
+# 2. max_bisections >= 31 was undefined behaviour (1 << 31 and beyond).
+@pytest.mark.parametrize("bisections", [31, 32, 47, -1])
+def test_bisections_beyond_30_are_refused(bisections):
+    model, prescribed = driven_cell()
+    with pytest.raises(ValueError, match=rf"max_bisections = {bisections} is invalid: must be an "
+                                         r"integer"):
+        solve_displacement_control(model, prescribed, 2, max_bisections=bisections)
+
+
+def test_thirty_bisections_run():
+    model, prescribed = driven_cell()
+    assert solve_displacement_control(model, prescribed, 2, max_bisections=30).completed
+
+
+# 3. shift unchecked: 1e9, inf or -1e9 "converged" in one iteration with a wrong answer.
+@pytest.mark.parametrize("shift", [1e9, math.inf, -1e9, math.nan, None, "1e-8"])
+@pytest.mark.parametrize("solver", ["displacement", "force", "mgdcm"])
+def test_shift_out_of_range_is_refused(shift, solver):
+    model, prescribed = driven_cell()
+    with pytest.raises(ValueError, match=r"^shift = .* is invalid: must be"):
+        if solver == "displacement":
+            solve_displacement_control(model, prescribed, 2, shift=shift)
+        elif solver == "force":
+            solve_force_control(model, -0.01 * np.sign(prescribed), 2, shift=shift)
+        else:
+            solve_mgdcm(model, -0.01 * np.sign(prescribed), max_increments=2, shift=shift)
+
+
+def test_largest_shift_gives_the_same_path():
+    model, prescribed = driven_cell()
+    reference = solve_displacement_control(model, prescribed, 4)
+    shifted = solve_displacement_control(model, prescribed, 4, shift=_core.solvers.MAX_SHIFT)
+    assert shifted.completed
+    np.testing.assert_allclose(shifted.constraint_force, reference.constraint_force,
+                               rtol=1e-6, atol=1e-8)
+
+
+# 4. Lc = 0: snap forces of 4.9e13 N (a parabola through a -3.9e14 N sample at the flat
+# state) and bending errors that did not say why.
+def test_snap_through_at_lc_zero_names_lc(capsys):
+    from kresling.analyses import snap_through
+    with pytest.raises(ValueError, match=r"^Lc = 0 is invalid: must be > 0 for the snap-through"):
+        snap_through(Design(4, 0.6, 0.0))
+    status, out, err = run_cli(capsys, "snap", "--n", "4", "--lam", "0.6", "--Lc", "0")
+    assert_one_line_error(status, err, "snap", "Lc = 0 is invalid")
+    assert out == ""
+
+
+@pytest.mark.parametrize("extra", [[], ["--deflection-rad", "0.001"]])
+def test_bend_at_lc_zero_names_lc(capsys, extra):
+    status, _, err = run_cli(capsys, "bend", "--n", "10", "--lam", "0.8", "--Lc", "0", *extra)
+    assert_one_line_error(status, err, "bend", "Lc = 0 is invalid: must be > 0 for the bending "
+                                               "test in the contracted state")
+
+
+def test_linear_bending_at_lc_zero_names_lc():
+    from kresling.analyses import linear_bending_stiffness
+    with pytest.raises(ValueError, match=r"^Lc = 0 is invalid"):
+        linear_bending_stiffness(Design(8, 0.8, 0.0), "contracted")
+    assert math.isfinite(linear_bending_stiffness(Design(8, 0.8, 0.0), "extended"))
+
+
+def test_nearly_flat_snap_through_stops_before_the_flat_state():
+    # Lc far below rounding of R: the drive's last state is flat to working precision; the
+    # hinge law is infinite there, so the path stops before it and says why (no 1e13 N).
+    from kresling.analyses import snap_through
+    r = snap_through(Design(4, 0.6, 1e-300))
+    assert not r.completed and "not finite" in r.message
+    assert np.isfinite(r.force).all() and np.abs(r.force).max() < 1e6
+    assert math.isnan(r.snap_force)
+
+
+def test_random_designs_never_report_absurd_snap_forces():
+    from kresling.analyses import snap_through
+    rng = np.random.default_rng(7)
+    for _ in range(20):
+        d = Design(int(rng.integers(3, 13)), rng.uniform(0.51, 0.99),
+                   float(rng.choice([1e-9, rng.uniform(0, 1), rng.uniform(0, 100)])),
+                   float(10 ** rng.uniform(-1, 3)))
+        r = snap_through(d)
+        assert np.isfinite(r.force).all()
+        assert math.isnan(r.snap_force) or abs(r.snap_force) < 1e6, d
+
+
+# 5. kresling manipulator --config 111 crashed printing a table with no rows.
+def test_manipulator_with_every_module_rigid(capsys):
+    status, out, err = run_cli(capsys, "manipulator", "--config", "111")
+    assert status == 0 and err == ""
+    assert "every module is extended" in out
+    status, out, _ = run_cli(capsys, "manipulator", "--config", "111", "--json")
+    assert status == 0 and json.loads(out)["config"] == "111"
+
+
+# 6. Large integers: TypeErrors from numpy and from pybind11's int conversion.
+def test_large_integers_are_value_errors(capsys):
+    with pytest.raises(ValueError, match=r"^n = 100000000000000000000 is invalid: must be an "
+                                         r"integer >= 3 and <= 2147483647"):
+        Design(10**20, 0.8, 20)
+    model, prescribed = driven_cell()
+    with pytest.raises(ValueError, match=r"^steps = 2147483648 is invalid"):
+        solve_displacement_control(model, prescribed, 2**31)
+    with pytest.raises(ValueError, match=r"^steps = 100001 is invalid: must be an integer in "
+                                         r"\[1, 100000\]"):
+        solve_displacement_control(model, prescribed, 100001)
+    with pytest.raises(ValueError, match=r"^max_iterations = 2147483648 is invalid"):
+        solve_displacement_control(model, prescribed, 2, max_iterations=2**31)
+    status, _, err = run_cli(capsys, "design", "--n", str(10**20), "--lam", "0.8", "--Lc", "1")
+    assert_one_line_error(status, err, "design", "n = 100000000000000000000 is invalid")
+    status, _, err = run_cli(capsys, "snap", "--n", "4", "--lam", "0.8", "--Lc", "1", "--steps",
+                             str(10**20))
+    assert_one_line_error(status, err, "snap", "steps = 100000000000000000000 is invalid")
+
+
+# 7. A record or marker file with a line over 128 KiB raised _csv.Error.
+def test_csv_line_over_csvs_limit_names_file_and_line(tmp_path, capsys):
+    from kresling.fits.records import read_machine_record
+    from kresling.manipulator.markers import read_markers
+    record = tmp_path / "record.csv"
+    record.write_text("displacement (mm),force (N)\n0,0\n1," + "2" * 200_000 + "\n2,4\n")
+    with pytest.raises(ValueError, match=r"record.csv, line 3: not a CSV line \(field larger"):
+        read_machine_record(record)
+    assert len(read_machine_record(record, on_invalid="skip")) == 2
+    markers = tmp_path / "markers.csv"
+    markers.write_text("config,step,marker,x,y\n101,0,1,0," + "1" * 200_000 + "\n")
+    with pytest.raises(ValueError, match=r"markers.csv, line 2: not a CSV line"):
+        read_markers(markers)
+    status, _, err = run_cli(capsys, "fit", "bending", str(record), "--state", "extended",
+                             "--module-length", "60")
+    assert_one_line_error(status, err, "fit", "line 3")
+
+
+# 8. A damaged sweep directory: errors that named neither file nor line.
+@pytest.mark.parametrize("damage, message", [
+    (lambda lines: lines[:2] + [b"\xff\xfe\x00binary"] + lines[3:], r"line 3: not UTF-8"),
+    (lambda lines: lines[:2] + [b",".join([b"garbage"] * lines[1].count(b",")) + b",x"]
+     + lines[3:], r"line 3: column 'n' = 'garbage' is not a int"),
+])
+def test_damaged_results_name_file_and_line(tmp_path, damage, message):
+    from kresling.sweeps import design_grid, sweep
+    out = tmp_path / "sweep"
+    sweep(design_grid((4,), 2), ["psi_ratio"], out=out, progress=False, workers=1)
+    results = out / "results.csv"
+    lines = results.read_bytes().split(b"\n")
+    results.write_bytes(b"\n".join(damage(lines)))
+    (out / "manifest.json").write_text(
+        (out / "manifest.json").read_text().replace('"complete": true', '"complete": false'))
+    with pytest.raises(ValueError, match=r"results.csv, " + message):
+        sweep(design_grid((4,), 2), ["psi_ratio"], out=out, progress=False, workers=1)
+
+
+def test_truncated_manifest_names_the_file(tmp_path, capsys):
+    from kresling.sweeps import design_grid, sweep
+    out = tmp_path / "sweep"
+    sweep(design_grid((4,), 2), ["psi_ratio"], out=out, progress=False, workers=1)
+    manifest = out / "manifest.json"
+    manifest.write_bytes(manifest.read_bytes()[:40])
+    with pytest.raises(ValueError, match=r"manifest.json is damaged \(not JSON"):
+        sweep(design_grid((4,), 2), ["psi_ratio"], out=out, progress=False, workers=1)
+    status, _, err = run_cli(capsys, "sweep", "--n", "4", "--grid", "2", "--metrics",
+                             "psi_ratio", "--out", str(out), "--no-progress")
+    assert_one_line_error(status, err, "sweep", "manifest.json is damaged")
+
+
+def test_damaged_table_names_file_and_line(tmp_path):
+    from kresling.sweeps import SweepTable
+    path = tmp_path / "table.csv"
+    path.write_text("n,Lc,lam,R\n4,15.0,0.7,30.0\n4,oops,0.7,30.0\n")
+    with pytest.raises(ValueError, match=r"table.csv, line 3: column 'Lc' = 'oops' is not a "
+                                         r"float"):
+        SweepTable.read_csv(path)
+    path.write_text("")
+    with pytest.raises(ValueError, match=r"table.csv is empty"):
+        SweepTable.read_csv(path)
+
+
+# 9. Non-integers silently truncated.
+def test_non_integers_are_never_truncated():
+    from kresling.analyses import (BendingTester, LinearBendingTester, SnapThroughTester)
+    nodes = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]
+    with pytest.raises(ValueError, match=r"^bars\[0, 1\] = 1.7 is invalid: must be an integer"):
+        Model(nodes, [[0, 1.7]], [], bar_modulus=1.0, hinge_stiffness=1.0)
+    with pytest.raises(ValueError, match=r"^bars has dtype bool: must be integers"):
+        Model(nodes, [[False, True]], [], bar_modulus=1.0, hinge_stiffness=1.0)
+    with pytest.raises(ValueError, match=r"^steps = 2.7 is invalid"):
+        BendingTester(8, steps=2.7)
+    with pytest.raises(ValueError, match=r"^cells = 4.9 is invalid"):
+        BendingTester(8, cells=4.9)
+    with pytest.raises(ValueError, match=r"^cells = 4.9 is invalid"):
+        LinearBendingTester(8, cells=4.9)
+    with pytest.raises(ValueError, match=r"^n = 8.9 is invalid"):
+        SnapThroughTester(8.9)
+    model, _ = driven_cell()
+    with pytest.raises(ValueError, match=r"^node = 1.5 is invalid"):
+        model.dof(1.5, "x")
+    with pytest.raises(ValueError, match=r"^axis = True is invalid"):
+        model.dof(1, True)
+    assert model.dof(1.0, "y") == 4
+
+
+# 10. Long C++ runs ignored Ctrl-C and had no bound.
+def test_a_long_solve_stops_on_ctrl_c():
+    model, prescribed = driven_cell()
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    start = time.perf_counter()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            solve_displacement_control(model, prescribed, 100_000)
+    finally:
+        timer.cancel()
+    assert time.perf_counter() - start < 5.0
+
+
+def test_step_counts_are_bounded():
+    model, prescribed = driven_cell()
+    with pytest.raises(ValueError, match=r"^steps = 1000000000 is invalid: must be an integer "
+                                         r"in \[1, 100000\]"):
+        solve_displacement_control(model, prescribed, 10**9)
+    with pytest.raises(ValueError, match=r"^max_increments = 1000000000 is invalid"):
+        solve_mgdcm(model, -0.01 * np.sign(prescribed), max_increments=10**9)
+
+
+# 11. Silent NaN on accepted input.
+def test_element_state_of_nan_displacements_is_refused():
+    model, _ = driven_cell()
+    with pytest.raises(ValueError, match=r"u contains NaN or inf"):
+        model.element_state(np.full(model.num_dofs, np.nan))
+    with pytest.raises(ValueError, match=r"u has 3 entries"):
+        model.element_state([0.0, 0.0, 0.0])
+
+
+@pytest.mark.parametrize("solver", ["displacement", "displacement_merlin2", "force", "mgdcm"])
+def test_a_huge_initial_state_never_completes_with_nan(solver):
+    model, prescribed = driven_cell()
+    initial = np.zeros(model.num_dofs)
+    initial[-1] = 1e300
+    forces = -0.01 * np.sign(prescribed)
+    if solver.startswith("displacement"):
+        r = solve_displacement_control(model, prescribed, 2, initial=initial,
+                                       merlin2_steps=solver.endswith("merlin2"))
+    elif solver == "force":
+        r = solve_force_control(model, forces, 2, initial=initial)
+    else:
+        r = solve_mgdcm(model, forces, max_increments=3, initial=initial)
+    assert np.isfinite(r.constraint_force).all() and np.isfinite(r.energy).all()
+    assert r.completed or r.message
+
+
+def test_psi_ratio_overflow_is_documented_inf():
+    # Psi_con = 1.6e-312 rad: the ratio exceeds the largest float (documented: inf).
+    d = Design(70, 0.8, 2.4e-306, 825111)
+    assert d.psi_con > 0 and d.psi_ratio == math.inf
+    assert "exceeds the largest float" in type(d).psi_ratio.__doc__
+
+
+# 12. A valid design raised RuntimeError: near-flat hinges read with an arccosine.
+def test_facet_angle_of_a_nearly_flat_extended_cell():
+    from kresling.analyses import facet_angle, facet_angles
+    d = Design(15, 0.5000000000000001, 0.0)
+    assert np.ptp(facet_angles(d, 1)) <= 1e-12 * max(d.psi_ext, 1e-300) + 1e-15
+    assert facet_angle(d, 1) == pytest.approx(d.psi_ext, rel=1e-9)
+
+
+# 13. Fabrication without a size limit: 198 784 paths, a 41k x 181k px PNG.
+def test_fabrication_has_a_size_limit(tmp_path):
+    from kresling.fabrication import cut_sheet, write_pattern
+    with pytest.raises(ValueError, match=r"spans .* mm: a cut sheet must be at most 5000 mm"):
+        cut_sheet(Design(17, 0.82, 10000, 1621), "paper")
+    with pytest.raises(ValueError, match=r"the sheet would hold \d+ cut paths: at most 50000; "
+                                         r"lengthen the dashes \(dash_length = 0.001 mm"):
+        cut_sheet(Design(10, 0.9, 15), "paper", dash_length=1e-3, tie_length=1e-3)
+    with pytest.raises(ValueError, match=r"^dpi = 100000 is invalid for a .* sheet: the PNG "
+                                         r"would have .* pixels; must be at most"):
+        write_pattern(tmp_path / "big.png", Design(10, 0.9, 15), dpi=100_000)
+
+
+# 14. The property test's flaky example: alpha_e was exactly 0 at lam = 1 - 2^-52.
+def test_alpha_e_is_positive_for_every_lambda_below_one():
+    d = Design(28, 0.9999999999999998, 0, 1)
+    assert 0.0 < d.alpha_e <= d.alpha0 < math.pi
+    assert d.alpha_e == pytest.approx(math.pi - d.alpha0 - 2 * d.phi, abs=1e-15)
+
+
+# 15. The smaller ones.
+def test_analyses_given_a_non_design():
+    from kresling.analyses import (bending_test, facet_angle, linear_bending_stiffness,
+                                   snap_through)
+    for call in (lambda: snap_through("x"), lambda: bending_test((8, 0.8, 30), 1),
+                 lambda: linear_bending_stiffness(None, 1), lambda: facet_angle(8, 1)):
+        with pytest.raises(ValueError, match=r"^design = .* is invalid: must be a "
+                                             r"kresling.Design"):
+            call()
+
+
+def test_none_and_wrong_types_are_value_errors(tmp_path):
+    from kresling.manipulator.markers import read_markers
+    from kresling.sweeps import design_grid, sweep
+    nodes = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0.1]]
+    with pytest.raises(ValueError, match=r"^hinge_law = None is invalid: must be one of"):
+        Model(nodes, [[0, 1]], [[1, 2, 0, 3]], bar_modulus=1.0, hinge_stiffness=1.0,
+              hinge_law=None)
+    markers = tmp_path / "m.csv"
+    markers.write_text("config,step,marker,x,y\n")
+    with pytest.raises(ValueError, match=r"^modules = None is invalid"):
+        read_markers(markers, None)
+    with pytest.raises(ValueError, match=r"^metrics = None is invalid"):
+        sweep(design_grid((4,), 2), None, progress=False)
+    model, _ = driven_cell()
+    with pytest.raises(ValueError, match=r"^dofs = 3 is invalid: must be a sequence"):
+        condensed_stiffness(model, 3)
+    with pytest.raises(ValueError, match=r"^dofs\[0\] = 1.5 is invalid"):
+        condensed_stiffness(model, [1.5])
+
+
+@pytest.mark.parametrize("fixed", [np.nan, 0.5, 2, "yes"])
+def test_fixed_flags_are_booleans(fixed):
+    nodes = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]
+    mask = np.zeros((3, 3), dtype=object)
+    mask[0, 0] = fixed
+    with pytest.raises(ValueError, match=r"^fixed is invalid: must be booleans"):
+        Model(nodes, [[0, 1]], [], bar_modulus=1.0, hinge_stiffness=1.0, fixed=mask)
+
+
+def test_a_run_list_cannot_point_outside_its_folder(tmp_path):
+    from kresling.fits.crease_files import read_crease_runs
+    secret = tmp_path / "secret.csv"
+    secret.write_text("displacement (mm),force (N)\n0,0\n1,1\n")
+    folder = tmp_path / "runs"
+    folder.mkdir()
+    header = ("sample,run,record,Lp_mm,W_mm,vertex_x1_px,vertex_y1_px,upper_x1_px,upper_y1_px,"
+              "lower_x1_px,lower_y1_px,vertex_x2_px,vertex_y2_px,upper_x2_px,upper_y2_px,"
+              "lower_x2_px,lower_y2_px\n")
+    for record in ("../secret.csv", str(secret)):
+        (folder / "runs.csv").write_text(header + f"1,1,{record},10,20" + ",1" * 12 + "\n")
+        with pytest.raises(ValueError, match=r"column 'record': .* is invalid: must be a file "
+                                             r"in the list's folder"):
+            read_crease_runs(folder / "runs.csv")
+
+
+def test_a_killed_process_sweep_leaves_no_workers(tmp_path):
+    import multiprocessing
+    from kresling.sweeps.executors import make_executor
+    handle = make_executor("processes", 2)
+    futures = [handle.executor.submit(time.sleep, 30) for _ in range(2)]
+    time.sleep(1.0)
+    processes = list(handle.executor._processes.values())
+    assert processes and all(p.is_alive() for p in processes)
+    start = time.perf_counter()
+    handle.shutdown(interrupted=True)
+    for p in processes:
+        p.join(5)
+    assert not any(p.is_alive() for p in processes)
+    assert time.perf_counter() - start < 5
+    del futures, multiprocessing
