@@ -185,3 +185,14 @@ def test_monitor_stop_under_displacement_control(folder):
     z = sim.path.displacement[:, 3 * 2 + 2]
     # 0.5 mm per increment: the first increment past 1.2 mm is the third.
     assert sim.completed and sim.path.num_steps == 3 and z[-1] > 1.2 >= z[-2]
+
+
+def test_progress_bar_does_not_count_as_a_stopping_rule():
+    # An MGDCM run without a stop completes when its increments run out, bar or no bar.
+    from pathlib import Path
+    problem = Path(__file__).parent / "data" / "merlin2_examples" / "kresling_folding" / \
+        "problem.toml"
+    shown = simulate(problem, progress=True)
+    hidden = simulate(problem, progress=False)
+    assert shown.completed and hidden.completed
+    np.testing.assert_array_equal(shown.path.displacement, hidden.path.displacement)
