@@ -94,10 +94,10 @@ $(VENV)/.installed: $(VENV)/.venv-ready $(CORE_SOURCES) | system-deps
 benchmark: install
 	$(PY) benchmarks/solver_speed.py
 
-# The documentation site, warnings as errors. The notebooks and the gallery's scripts run
-# during the build (about a minute; later builds redo only what changed and the notebooks).
+# The documentation site, warnings as errors. Every page is rebuilt and the notebooks and
+# the gallery's scripts run each time (under a minute), so no page shows stale output.
 docs: install
-	$(PY) -m sphinx -W --keep-going -q -b html docs $(DOCS_BUILD)
+	$(PY) -m sphinx -E -W --keep-going -q -b html docs $(DOCS_BUILD)
 	@echo "Open $(DOCS_BUILD)/index.html in a browser."
 
 clean:

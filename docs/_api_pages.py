@@ -10,14 +10,17 @@ from __future__ import annotations
 
 import importlib
 import inspect
+import pkgutil
 from pathlib import Path
 
-#: The public packages, in the order of the reference (the layers, bottom up, then the top).
-PACKAGES = (
+#: The public packages in the order of the reference (the layers, bottom up, then the top);
+#: any other public module of the package with an ``__all__`` follows (see :func:`packages`).
+ORDER = (
     "kresling",
     "kresling.geometry",
     "kresling.io",
     "kresling.model",
+    "kresling.laws",
     "kresling.elements",
     "kresling.assembly",
     "kresling.solvers",
@@ -28,10 +31,32 @@ PACKAGES = (
     "kresling.fits",
     "kresling.fabrication",
     "kresling.manipulator",
+    "kresling.plots",
     "kresling.report",
     "kresling.data",
     "kresling.data.tables",
 )
+#: Documented elsewhere: the command line has its own reference page (its modules' functions
+#: are not an API).
+NOT_IN_REFERENCE = {"kresling.cli"}
+
+
+def packages() -> tuple:
+    """:data:`ORDER`, then every other top-level public module or subpackage of ``kresling``
+    that has an ``__all__`` (so a new one is in the reference without editing this file)."""
+    import kresling
+
+    found = []
+    for info in pkgutil.iter_modules(kresling.__path__, "kresling."):
+        name = info.name
+        if name.rpartition(".")[2].startswith("_") or name in ORDER or name in NOT_IN_REFERENCE:
+            continue
+        if hasattr(importlib.import_module(name), "__all__"):
+            found.append(name)
+    return ORDER + tuple(sorted(found))
+
+
+PACKAGES = packages()
 
 GROUPS = (("Classes", inspect.isclass), ("Functions", callable),
           ("Constants", lambda obj: True))

@@ -115,6 +115,7 @@ sphinx_gallery_conf = {
     "reset_modules": ("matplotlib",),
     "show_memory": False,
     "abort_on_example_error": True,
+    "run_stale_examples": True,     # run every script each build: the output follows the code
 }
 
 # -- HTML ------------------------------------------------------------------------------------
