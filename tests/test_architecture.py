@@ -48,6 +48,7 @@ LAYERS = {
     "fits": LEAF,
     "fabrication": LEAF,
     "manipulator": FOUNDATION | {"geometry", "plots"},
+    "arm": ON_SOLVERS | {"analyses", "manipulator"},
     "report": None,  # every layer but cli and __main__ (filled in below)
     "cli": None,  # every layer but __main__
     "__main__": {"cli"},

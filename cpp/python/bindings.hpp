@@ -12,5 +12,6 @@ void bind_model(pybind11::module_& m);
 void bind_solvers(pybind11::module_& m);
 void bind_analyses(pybind11::module_& m);
 void bind_kinematics(pybind11::module_& m);
+void bind_arm(pybind11::module_& m);
 
 }  // namespace kresling::python

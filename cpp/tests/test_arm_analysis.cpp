@@ -144,9 +144,16 @@ TEST(ArmAnalysis, LoadCapacityStopsWhereATendonGoesSlack) {
 TEST(ArmAnalysis, BadInputNamesTheParameter) {
   const auto arm = arm_of("1");
   ArmSolver solver(arm);
-  EXPECT_NE(error_of([&] { solver.ramp(solver.built(), {-1.0, 0.0, 0.0}, Vector3::Zero()); })
+  EXPECT_NE(error_of([&] { analyses::arm_tip_load(solver, Vector3::Zero(), {-1.0, 0.0, 0.0}); })
                 .find("pulls[0] = -1 mm makes tendon 1 longer than its slack length"),
             std::string::npos);
+  EXPECT_NE(error_of([&] { solver.ramp(solver.built(), {0.0, 200.0, 0.0}, Vector3::Zero()); })
+                .find("pulls[1] = 200 is invalid: must be below tendon 2's slack length"),
+            std::string::npos);
+  // Letting a tendon out is an actuation input of the ramp: it just goes slack.
+  const auto out = solver.ramp(solver.built(), {0.0, -1.0, 0.0}, Vector3::Zero());
+  EXPECT_TRUE(out.completed);
+  EXPECT_EQ(out.states.back().tension[1], 0.0);
   EXPECT_NE(error_of([&] { analyses::arm_pull_until_snap(solver, solver.built(), {1, -1, 1}, 5.0); })
                 .find("direction[1]"),
             std::string::npos);

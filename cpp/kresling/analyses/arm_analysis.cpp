@@ -128,10 +128,22 @@ ArmState ArmSolver::built() {
   return s;
 }
 
+void check_rest_lengths(const Pulls& pulls, const model::Arm& arm, const std::string& name) {
+  for (int t = 0; t < 3; ++t) {
+    const std::string item = name + "[" + std::to_string(t) + "]";
+    require_finite(item, pulls[t]);
+    if (!(pulls[t] < arm.slack_length[t])) {
+      throw_invalid(item, pulls[t],
+                    "below tendon " + std::to_string(t + 1) + "'s slack length " +
+                        format_number(arm.slack_length[t]) + " mm (its rest length must stay positive)");
+    }
+  }
+}
+
 ArmPath ArmSolver::ramp(const ArmState& start, const Pulls& pulls_to, const Vector3& load_to,
                         const ArmEvent& event) {
   const model::Arm& arm = *arm_;
-  check_pulls(pulls_to, arm);
+  check_rest_lengths(pulls_to, arm);
   if (!load_to.allFinite()) throw std::invalid_argument("load: contains NaN or inf");
   ArmPath path;
   path.parameter.push_back(0.0);
@@ -218,7 +230,7 @@ ArmPath ArmSolver::ramp(const ArmState& start, const Pulls& pulls_to, const Vect
 }
 
 ArmRelease ArmSolver::release(const ArmState& from, const Pulls& pulls) {
-  check_pulls(pulls, *arm_);
+  check_rest_lengths(pulls, *arm_);
   if (!impl_->full) {
     impl_->full = std::make_unique<assembly::Assembler>(*impl_->current, impl_->rows, 0.0,
                                                         assembly::Storage::Full);

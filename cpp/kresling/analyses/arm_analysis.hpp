@@ -102,7 +102,9 @@ class ArmSolver {
   ArmState built();
 
   /// Follow the straight ramp from (pulls_from, load_from) at `start` to (pulls_to,
-  /// load_to). Throws std::invalid_argument naming `pulls` for a negative pull.
+  /// load_to). Here a pull may be negative (the tendon let out beyond its slack length: it
+  /// is slack until the arm's motion takes it up), down to any positive rest length; throws
+  /// std::invalid_argument naming `pulls` for a pull that leaves no rest length.
   ArmPath ramp(const ArmState& start, const Pulls& pulls_to, const Vector3& load_to,
                const ArmEvent& event = {});
 
@@ -128,8 +130,10 @@ class ArmSolver {
 };
 
 /// Check pulls: finite and >= 0 (a negative pull would make the tendon longer than its
-/// slack length). Throws std::invalid_argument naming `name`.
+/// slack length) and below the slack length. Throws std::invalid_argument naming `name`.
 void check_pulls(const Pulls& pulls, const model::Arm& arm, const std::string& name = "pulls");
+/// Check only that every rest length stays positive (pulls below the slack lengths).
+void check_rest_lengths(const Pulls& pulls, const model::Arm& arm, const std::string& name = "pulls");
 
 // ---------------------------------------------------------------------------------------
 // Analyses.

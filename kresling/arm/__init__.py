@@ -1,0 +1,25 @@
+"""The manipulator as a structure (issue: tendons, load capacity, switching, joint lengths).
+
+The thesis drives its arm with constant-curvature kinematics (:mod:`kresling.manipulator`);
+here the whole arm is one bar-and-hinge model: ``m`` modules of two Kresling cells joined at
+stiff guide plates, with three sliding, tension-only tendons from the fixed base to the tip
+guide (:mod:`kresling.arm.structure`). On it, in the C++ core:
+
+- :func:`tip_load`: tip displacement and the 3 x 3 tip compliance under a tip force;
+- :func:`load_capacity`: the largest tip load before a module snaps or a tendon goes slack;
+- :func:`pull_until_snap`: pull tendons (all, or some) until a module snaps: which one, the
+  tendon force and the configuration it lands in.
+
+The command line is ``kresling arm``.
+"""
+
+from kresling.arm.analyses import (CAPACITY_DIRECTIONS, DEFAULT_PRETENSION, ArmSolver, ArmState,
+                                   CapacityResult, SnapResult, TipLoadResult, arm_summary,
+                                   load_capacity, pull_until_snap, tip_load)
+from kresling.arm.structure import (THESIS_DESIGN, Arm, ArmParameters, all_configurations,
+                                    build_arm, parse_configuration)
+
+__all__ = ["Arm", "ArmParameters", "build_arm", "parse_configuration", "all_configurations",
+           "THESIS_DESIGN", "ArmSolver", "ArmState", "DEFAULT_PRETENSION", "TipLoadResult",
+           "tip_load", "SnapResult", "pull_until_snap", "CapacityResult", "load_capacity",
+           "CAPACITY_DIRECTIONS", "arm_summary"]

@@ -1,0 +1,172 @@
+"""``kresling arm``: the manipulator as one structure (modules, guides, tendons).
+
+Without options it builds the arm of a configuration and reports its tip; ``--tip-load``
+carries a tip force (tendons pretensioned first), ``--pull-all`` shortens all three tendons
+together until the first module snaps, ``--capacity`` finds the largest tip loads along four
+directions.
+"""
+
+from __future__ import annotations
+
+import sys
+
+from kresling.cli._output import print_json, print_table
+
+
+def register(subparsers) -> None:
+    parser = subparsers.add_parser(
+        "arm",
+        help="the tendon-driven arm as a structure: tip loads, pull-to-snap, load capacity",
+        description="Build the manipulator as one bar-and-hinge structure (modules of two "
+                    "Kresling cells, stiff guides, three sliding tendons from the fixed base "
+                    "to the tip) and report its tip; optionally under a tip load, pulling "
+                    "all tendons until a module snaps, or its load capacity. Lengths in mm, "
+                    "forces in N.",
+    )
+    design = parser.add_argument_group("the cell (default: the thesis's optimum)")
+    design.add_argument("--n", type=int, default=10, help="sides of the polygon (default 10)")
+    design.add_argument("--lam", type=float, default=0.9, help="angle ratio (default 0.9)")
+    design.add_argument("--Lc", type=float, default=15.0, help="contracted height [mm] (default 15)")
+    design.add_argument("--R", type=float, default=30.0, help="circumradius [mm] (default 30)")
+    arm = parser.add_argument_group("the arm")
+    arm.add_argument("--modules", type=int, help="number of modules (default: the "
+                     "configuration's length, or 3)")
+    arm.add_argument("--config", help="module states from the base, 0 contracted / 1 extended "
+                     "(default: all extended)")
+    arm.add_argument("--tendon-radius", type=float, default=32.0,
+                     help="radius d of the tendon holes [mm] (default 32)")
+    arm.add_argument("--tendon-stiffness", type=float, default=500.0,
+                     help="axial rigidity EA of each tendon [N] (default 500, an assumption)")
+    arm.add_argument("--guide-radius", type=float, default=40.0,
+                     help="circumradius of the guide plates [mm] (default 40, an assumption)")
+    analysis = parser.add_argument_group("analysis (one at most)")
+    analysis.add_argument("--tip-load", type=float, nargs=3, metavar=("FX", "FY", "FZ"),
+                          help="tip force [N] on the tip guide's centre")
+    analysis.add_argument("--pull-all", action="store_true",
+                          help="shorten all three tendons together until the first module snaps")
+    analysis.add_argument("--capacity", action="store_true",
+                          help="largest tip load along -z, +x, -x, +y before a module snaps "
+                               "or a tendon goes slack")
+    parser.add_argument("--pretension", type=float,
+                        help="tension of each tendon before a tip load [N] (default 1 with "
+                             "--tip-load/--capacity; the built arm's tendons are just taut)")
+    parser.add_argument("--max-pull", type=float, help="largest pull for --pull-all [mm]")
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.set_defaults(func=run)
+
+
+def _configuration(args) -> str:
+    from kresling.arm import parse_configuration
+
+    if args.modules is not None and args.modules < 1:
+        raise ValueError(f"modules = {args.modules} is invalid: must be an integer >= 1")
+    if args.config is None:
+        return "1" * (3 if args.modules is None else args.modules)
+    parse_configuration(args.config, args.modules)  # raises naming the configuration
+    return args.config
+
+
+def run(args) -> int:
+    from kresling.arm import (CAPACITY_DIRECTIONS, DEFAULT_PRETENSION, ArmParameters, ArmSolver,
+                              arm_summary, build_arm, load_capacity, pull_until_snap, tip_load)
+    from kresling.manipulator import TendonDrive
+
+    chosen = [name for name, on in (("--tip-load", args.tip_load is not None),
+                                    ("--pull-all", args.pull_all), ("--capacity", args.capacity))
+              if on]
+    if len(chosen) > 1:
+        raise ValueError(f"{' and '.join(chosen)}: give one analysis at a time")
+    configuration = _configuration(args)
+    parameters = ArmParameters(tendon_radius=args.tendon_radius, guide_radius=args.guide_radius,
+                               tendon_stiffness=args.tendon_stiffness)
+    arm = build_arm(configuration, n=args.n, lam=args.lam, Lc=args.Lc, R=args.R,
+                    parameters=parameters)
+    solver = ArmSolver(arm)
+    out = {"design": {"n": args.n, "lam": args.lam, "Lc": args.Lc, "R": args.R},
+           "modules": arm.modules}
+    completed, message = True, ""
+    if args.tip_load is not None:
+        pretension = DEFAULT_PRETENSION if args.pretension is None else args.pretension
+        r = tip_load(arm, args.tip_load, pretension=pretension, solver=solver)
+        out.update(arm_summary(arm, r.state))
+        out.update(tip_load=list(args.tip_load), pretension=pretension,
+                   tip_displacement=r.tip_displacement.tolist(),
+                   tip_position_unloaded=r.unloaded.tip_position.tolist(),
+                   tip_compliance=r.compliance.tolist(), load_factor=r.load_factor)
+        completed, message = r.completed, r.message
+    elif args.pull_all:
+        if args.pretension is not None:
+            raise ValueError("pretension: --pull-all starts from the built arm (its tendons just "
+                             "taut); leave --pretension out")
+        r = pull_until_snap(arm, (1.0, 1.0, 1.0), max_pull=args.max_pull, solver=solver)
+        last = r.states[-1]
+        out.update(arm_summary(arm, last))
+        counts = TendonDrive()
+        out.update(snapped=r.snapped, snap_tendon_force=r.tension_sum if r.snapped else None,
+                   snapped_module=r.snapped_module if r.snapped else None,
+                   snap_pull=r.pull if r.snapped else None,
+                   snap_tension=r.tension.tolist() if r.snapped else None,
+                   snap_motor_counts=(counts.sign * counts.counts_per_mm * r.pulls).tolist()
+                   if r.snapped else None,
+                   configuration_after=r.configuration_after,
+                   tip_position_after=r.after.tip_position.tolist() if r.after else None)
+        completed, message = r.snapped, r.message
+    elif args.capacity:
+        pretension = DEFAULT_PRETENSION if args.pretension is None else args.pretension
+        start = solver.pretension(pretension)
+        out.update(arm_summary(arm, start))
+        out.update(pretension=pretension, tip_compliance=solver.tip_compliance(start).tolist())
+        rows = {}
+        for name, direction in CAPACITY_DIRECTIONS.items():
+            c = load_capacity(arm, direction, pretension=pretension, solver=solver,
+                              pretensioned=start)
+            rows[name] = {"load": c.load, "limit": c.limit,
+                          "tendon": c.tendon + 1 if c.tendon >= 0 else None,
+                          "module": c.module if c.module >= 0 else None,
+                          "tip_displacement": c.tip_displacement.tolist()}
+        out["capacity"] = rows
+    else:
+        state = solver.built() if args.pretension is None else solver.pretension(args.pretension)
+        out.update(arm_summary(arm, state))
+        out["pretension"] = args.pretension or 0.0
+    out["completed"] = bool(completed)
+    if message:
+        out["message"] = message
+    if args.json:
+        print_json(out)
+    else:
+        _print_text(out)
+    if not completed:
+        print(f"kresling arm: warning: {message}", file=sys.stderr)
+        return 1
+    return 0
+
+
+def _print_text(out: dict) -> None:
+    rows = [("configuration", out["configuration"], "", "module states from the base"),
+            ("tip_position", _fmt(out["tip_position"]), "mm", "tip guide's centre"),
+            ("tip_height_built", out["tip_height_built"], "mm", "sum of the modules' heights"),
+            ("tension", _fmt(out["tension"]), "N", "tendons 1, 2, 3"),
+            ("module_length", _fmt(out["module_length"]), "mm", "guide centre to guide centre")]
+    for key, unit, meaning in (("tip_displacement", "mm", "caused by the tip load"),
+                               ("snap_tendon_force", "N", "sum of the tensions at the snap"),
+                               ("snapped_module", "", "0-based from the base"),
+                               ("snap_pull", "mm", "tendon pull at the snap"),
+                               ("configuration_after", "", "where the released arm rests")):
+        if out.get(key) is not None:
+            value = out[key]
+            rows.append((key, _fmt(value) if isinstance(value, list) else value, unit, meaning))
+    print_table(rows, ("quantity", "value", "unit", "meaning"))
+    if "capacity" in out:
+        print()
+        print_table([(d, r["load"], r["limit"], r["tendon"] or "", _fmt(r["tip_displacement"]))
+                     for d, r in out["capacity"].items()],
+                    ("direction", "load [N]", "limit", "slack tendon", "tip displacement [mm]"))
+    if "tip_compliance" in out:
+        print("\ntip compliance [mm/N]:")
+        for row in out["tip_compliance"]:
+            print("  " + "  ".join(f"{v:12.6g}" for v in row))
+
+
+def _fmt(values) -> str:
+    return "(" + ", ".join(f"{v:.6g}" for v in values) + ")"

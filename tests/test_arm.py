@@ -1,0 +1,160 @@
+"""The manipulator as a structure (kresling.arm and ``kresling arm``): the issue's checks.
+
+Every test runs in about a second or less (arms of one to three modules of the optimum).
+"""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from kresling.analyses import snap_through
+from kresling.arm import (ArmParameters, ArmSolver, all_configurations, build_arm,
+                          load_capacity, parse_configuration, pull_until_snap, tip_load)
+from kresling.cli import main
+from kresling.geometry import Design
+
+LE = 55.8194667799374  # extended cell height of the optimum (docs/thesis_equations.md)
+LC = 15.0
+
+
+def cli_json(capsys, *args):
+    """Run ``kresling arm ARGS --json`` in-process: (exit status, parsed output)."""
+    status = main(["arm", *args, "--json"])
+    return status, json.loads(capsys.readouterr().out)
+
+
+@pytest.mark.parametrize("configuration", all_configurations(3))
+def test_unloaded_arm_is_stress_free_with_its_tip_at_the_sum_of_module_heights(configuration):
+    arm = build_arm(configuration)
+    state = ArmSolver(arm).built()
+    height = sum(2 * (LE if c == "1" else LC) for c in configuration)
+    assert arm.tip_height == pytest.approx(height, abs=1e-9)
+    assert state.tip_position == pytest.approx([0, 0, height], abs=1e-9)
+    assert state.energy == 0.0 and state.tension.tolist() == [0.0, 0.0, 0.0]
+    assert state.negative_eigenvalues == 0
+    forces = arm.model.element_state()
+    assert np.abs(forces["bar_force"]).max() < 1e-9
+    assert np.abs(forces["hinge_moment"]).max() < 1e-9
+    assert state.configuration == configuration
+
+
+def test_cli_reports_the_tip_of_the_unloaded_arm(capsys):
+    status, out = cli_json(capsys, "--n", "10", "--lam", "0.9", "--Lc", "15", "--modules", "3",
+                           "--config", "010")
+    assert status == 0 and out["completed"] is True
+    assert out["tip_position"] == pytest.approx([0, 0, 4 * LC + 2 * LE], abs=1e-9)
+    assert out["module_length"] == pytest.approx([2 * LC, 2 * LE, 2 * LC], abs=1e-9)
+
+
+def test_small_tip_loads_are_linear_and_the_compliance_is_symmetric():
+    # Central differences (u(+F) - u(-F)) / 2F: a sideways load also lowers the tip by a
+    # second-order term (the arm shortens as it bends), which is not compliance.
+    arm = build_arm("011")
+    solver = ArmSolver(arm)
+    F = 0.01
+    columns = []
+    for k in range(3):
+        e = np.eye(3)[k]
+        plus, twice, minus = (tip_load(arm, s * F * e, solver=solver) for s in (1, 2, -1))
+        assert plus.completed and twice.completed and minus.completed
+        assert twice.tip_displacement[k] / plus.tip_displacement[k] == pytest.approx(2, rel=0.01)
+        columns.append((plus.tip_displacement - minus.tip_displacement) / (2 * F))
+    C = np.column_stack(columns)
+    assert np.abs(C - C.T).max() < 1e-3 * np.abs(C).max()
+    # The tangent compliance the analysis reports is the same matrix.
+    assert np.abs(plus.compliance - C).max() < 0.02 * np.abs(C).max()
+    assert np.abs(plus.compliance - plus.compliance.T).max() < 1e-9 * np.abs(C).max()
+
+
+def test_a_contracted_module_at_the_base_costs_more_deflection_than_at_the_tip(capsys):
+    deflection = {}
+    for configuration in ("011", "110"):
+        status, out = cli_json(capsys, "--modules", "3", "--config", configuration,
+                               "--tip-load", "0.05", "0", "0")
+        assert status == 0 and out["completed"] is True
+        assert len(out["tip_displacement"]) == 3
+        deflection[configuration] = out["tip_displacement"][0]
+    assert deflection["011"] > 1.2 * deflection["110"] > 0
+
+
+def test_pulling_all_tendons_snaps_one_extended_module_near_the_cells_snap_force(capsys):
+    status, out = cli_json(capsys, "--n", "10", "--lam", "0.9", "--Lc", "15", "--modules", "1",
+                           "--config", "1", "--pull-all")
+    assert status == 0 and out["completed"] is True
+    cell = snap_through(Design(10, 0.9, 15.0)).snap_force  # 8.99 N
+    assert out["snap_tendon_force"] == pytest.approx(cell, rel=0.2)
+    assert out["snapped_module"] == 0
+    assert out["configuration_after"] == "x"  # one cell snapped; the other re-extended
+    assert out["snap_motor_counts"][0] == pytest.approx(
+        -out["snap_pull"] * 4704 / (math.pi * 20))
+
+
+def test_pull_until_snap_reports_the_module_the_force_and_where_it_lands():
+    arm = build_arm("10")
+    r = pull_until_snap(arm)
+    assert r.snapped and r.snapped_module == 0
+    assert r.configuration_before == "10" and r.configuration_after == "x0"
+    assert r.after.negative_eigenvalues == 0
+    assert r.tension_sum == pytest.approx(r.tension.sum())
+    # The path passes the force's maximum before it is lost; pulls are equal.
+    peak = max(s.tension_sum for s in r.states)
+    assert r.tension_sum < peak
+    assert r.pulls == pytest.approx([r.pull] * 3)
+
+
+def test_load_capacity_ends_where_a_tendon_goes_slack_or_a_module_snaps():
+    arm = build_arm("1")
+    sideways = load_capacity(arm, (1.0, 0.0, 0.0))
+    assert sideways.limit == "slack" and sideways.tendon == 0 and sideways.load > 0.1
+    # Pretension sets the margin: twice the pretension, about twice the sideways capacity.
+    stronger = load_capacity(arm, (1.0, 0.0, 0.0), pretension=2.0)
+    assert stronger.load == pytest.approx(2 * sideways.load, rel=0.15)
+
+
+def test_losing_equilibrium_is_a_result_not_a_crash(capsys):
+    # Pushing the tip of an extended module down far beyond its snap force: the path ends
+    # where equilibrium is lost, with the load carried so far.
+    status, out = cli_json(capsys, "--modules", "1", "--config", "1", "--tip-load", "0", "0",
+                           "-30")
+    assert status == 1 and out["completed"] is False
+    assert 0 < out["load_factor"] < 1
+    assert "between t =" in out["message"]
+    capsys.readouterr()
+
+
+@pytest.mark.parametrize("args, name", [
+    (["--config", "0102"], "configuration"),
+    (["--config", ""], "configuration"),
+    (["--config", "01", "--modules", "3"], "configuration"),
+    (["--config", "1", "--tendon-radius", "45"], "tendon_radius"),
+    (["--config", "1", "--tendon-radius", "-1"], "tendon_radius"),
+    (["--config", "1", "--tip-load", "1", "0", "0", "--pretension", "-1"], "pretension"),
+    (["--config", "1", "--tip-load", "1", "0", "0", "--pull-all"], "--tip-load and --pull-all"),
+    (["--modules", "0"], "modules"),
+])
+def test_bad_input_exits_2_naming_the_parameter(capsys, args, name):
+    assert main(["arm", *args]) == 2
+    err = capsys.readouterr().err
+    assert name in err and err.count("\n") == 1
+
+
+def test_bad_input_raises_value_error_naming_the_parameter():
+    arm = build_arm("1")
+    with pytest.raises(ValueError, match="configuration"):
+        parse_configuration("012")
+    with pytest.raises(ValueError, match="configuration"):
+        build_arm("1x1")
+    with pytest.raises(ValueError, match="tendon_radius"):
+        build_arm("1", parameters=ArmParameters(tendon_radius=41.0))
+    with pytest.raises(ValueError, match=r"pulls\[1\].*longer than its slack length"):
+        tip_load(arm, [0, 0, 0], pulls=[0, -1, 0])
+    with pytest.raises(ValueError, match="direction"):
+        pull_until_snap(arm, (1, -1, 0))
+    with pytest.raises(ValueError, match="max_load"):
+        load_capacity(arm, (1, 0, 0), max_load=-5.0)
+    with pytest.raises(ValueError, match="pretension"):
+        load_capacity(arm, (1, 0, 0), pretension=0.0)
+    with pytest.raises(ValueError, match="load"):
+        tip_load(arm, [1, 2])
