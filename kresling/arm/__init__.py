@@ -1,4 +1,4 @@
-"""The manipulator as a structure (issue: tendons, load capacity, switching, joint lengths).
+"""The manipulator as a structure: tendons, load capacity, switching, joint lengths.
 
 The thesis drives its arm with constant-curvature kinematics (:mod:`kresling.manipulator`);
 here the whole arm is one bar-and-hinge model: ``m`` modules of two Kresling cells joined at
