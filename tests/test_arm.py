@@ -158,3 +158,21 @@ def test_bad_input_raises_value_error_naming_the_parameter():
         load_capacity(arm, (1, 0, 0), pretension=0.0)
     with pytest.raises(ValueError, match="load"):
         tip_load(arm, [1, 2])
+
+
+def test_load_capacity_table_shows_the_longest_arm_is_not_the_stiffest(tmp_path, capsys):
+    status = main(["arm", "--table", "--modules", "3", "--json", "--plot",
+                   str(tmp_path / "capacity.png")])
+    out = json.loads(capsys.readouterr().out)
+    assert status == 0 and out["completed"] is True and out["pretension"] == 1.0
+    rows = {r["configuration"]: r for r in out["rows"]}
+    assert sorted(rows) == all_configurations(3)
+    longest = max(rows, key=lambda c: rows[c]["tip_height_mm"])
+    stiffest = max(rows, key=lambda c: rows[c]["sideways_stiffness_N_per_mm"])
+    assert longest == "111" and stiffest != "111"
+    assert rows["111"]["tip_height_mm"] > 3 * rows["000"]["tip_height_mm"]
+    for r in rows.values():
+        for d in ("-z", "+x", "-x", "+y"):
+            assert r[f"load_{d}_N"] > 0
+            assert r[f"limit_{d}"].startswith(("tendon", "snap", "none"))
+    assert (tmp_path / "capacity.png").stat().st_size > 10_000

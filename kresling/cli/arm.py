@@ -47,6 +47,11 @@ def register(subparsers) -> None:
     analysis.add_argument("--capacity", action="store_true",
                           help="largest tip load along -z, +x, -x, +y before a module snaps "
                                "or a tendon goes slack")
+    analysis.add_argument("--table", action="store_true",
+                          help="the load-capacity table of all 2^m configurations (stiffness, "
+                               "length, largest tip loads)")
+    parser.add_argument("--plot", metavar="FILE.png",
+                        help="with --table: write the load-capacity figure")
     parser.add_argument("--pretension", type=float,
                         help="tension of each tendon before a tip load [N] (default 1 with "
                              "--tip-load/--capacity; the built arm's tendons are just taut)")
@@ -72,10 +77,15 @@ def run(args) -> int:
     from kresling.manipulator import TendonDrive
 
     chosen = [name for name, on in (("--tip-load", args.tip_load is not None),
-                                    ("--pull-all", args.pull_all), ("--capacity", args.capacity))
+                                    ("--pull-all", args.pull_all), ("--capacity", args.capacity),
+                                    ("--table", args.table))
               if on]
     if len(chosen) > 1:
         raise ValueError(f"{' and '.join(chosen)}: give one analysis at a time")
+    if args.plot and not args.table:
+        raise ValueError("plot: --plot draws the load-capacity table; add --table")
+    if args.table:
+        return _run_table(args)
     configuration = _configuration(args)
     parameters = ArmParameters(tendon_radius=args.tendon_radius, guide_radius=args.guide_radius,
                                tendon_stiffness=args.tendon_stiffness)
@@ -139,6 +149,44 @@ def run(args) -> int:
     if not completed:
         print(f"kresling arm: warning: {message}", file=sys.stderr)
         return 1
+    return 0
+
+
+def _run_table(args) -> int:
+    from kresling.arm import DEFAULT_PRETENSION, ArmParameters
+    from kresling.arm.capacity import capacity_rows, load_capacity_table
+
+    if args.config is not None:
+        raise ValueError("config: --table runs every configuration; give --modules instead")
+    modules = 3 if args.modules is None else args.modules
+    if modules < 1:
+        raise ValueError(f"modules = {modules} is invalid: must be an integer >= 1")
+    pretension = DEFAULT_PRETENSION if args.pretension is None else args.pretension
+    parameters = ArmParameters(tendon_radius=args.tendon_radius, guide_radius=args.guide_radius,
+                               tendon_stiffness=args.tendon_stiffness)
+    table = load_capacity_table(modules, pretension=pretension, n=args.n, lam=args.lam,
+                                Lc=args.Lc, R=args.R, parameters=parameters)
+    rows = capacity_rows(table)
+    if args.json:
+        print_json({"modules": modules, "pretension": pretension, "rows": rows,
+                    "completed": True})
+    else:
+        directions = list(table[0].capacity)
+        print_table([(r["configuration"], f"{r['tip_height_mm']:.1f}",
+                      f"{r['sideways_stiffness_N_per_mm']:.4g}", f"{r['C_zz_mm_per_N']:.3g}",
+                      *(f"{r[f'load_{d}_N']:.3g} ({r[f'limit_{d}']})" for d in directions))
+                     for r in rows],
+                    ("config", "length [mm]", "1/C_xx [N/mm]", "C_zz [mm/N]",
+                     *(f"load {d} [N]" for d in directions)))
+        print(f"\ntendons pretensioned to {pretension} N each; limits: a taut tendon goes "
+              "slack, or a module snaps")
+    if args.plot:
+        import matplotlib
+
+        matplotlib.use("Agg")  # files only: never open a window
+        from kresling.arm.plots import plot_load_capacity
+
+        plot_load_capacity(table).savefig(args.plot, dpi=150)
     return 0
 
 

@@ -206,15 +206,16 @@ ArmPath ArmSolver::ramp(const ArmState& start, const Pulls& pulls_to, const Vect
       h *= 0.5;
       continue;
     }
-    // Newton may cycle where a tendon is about to go slack (its stiffness switches off at
+    // Newton may stall where a tendon is about to go slack (its stiffness switches off at
     // zero tension). If the event, extrapolated from the last two equilibria, is reached
-    // within this last increment, that is what happened.
+    // within this last increment, or the last equilibrium is within 1 % of it (of its value
+    // at the start), that is what happened.
     const std::size_t k = path.states.size();
     if (!is_event && event && k >= 2) {
       const double e1 = event(path.states[k - 1]), e0 = event(path.states[k - 2]);
       const double t1 = path.parameter[k - 1], t0 = path.parameter[k - 2];
-      if (e1 + (e1 - e0) / (t1 - t0) * (tn - t1) <= 0.0) {
-        reason += " (the event lies within this increment)";
+      if (e1 + (e1 - e0) / (t1 - t0) * (tn - t1) <= 0.0 || e1 <= 0.01 * event(path.states[0])) {
+        reason += " (at the event: the last equilibrium is within 1 % of it)";
         is_event = true;
       }
     }

@@ -15,6 +15,10 @@
 /// loses equilibrium (a module snaps), located to that resolution; the path ends there, a
 /// result and not an error. Under pulls alone, the arm is then released (energy descent
 /// from the last equilibrium with the pulls just past that point) to find where it lands.
+/// A caller's event (a taut tendon going slack) ends the path the same way when it is
+/// crossed; Newton may stall at a tendon's switch from taut to slack, so a failure where
+/// the event is reached within the last increment (extrapolated) or within 1 % of its
+/// starting value counts as the event, not as a snap.
 ///
 /// Pretension: pulls such that every tendon carries a given tension with no tip load,
 /// found by Newton's method on the pulls with the exact sensitivity of the tensions
