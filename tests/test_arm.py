@@ -176,3 +176,65 @@ def test_load_capacity_table_shows_the_longest_arm_is_not_the_stiffest(tmp_path,
             assert r[f"load_{d}_N"] > 0
             assert r[f"limit_{d}"].startswith(("tendon", "snap", "none"))
     assert (tmp_path / "capacity.png").stat().st_size > 10_000
+
+
+def test_small_symmetric_pulls_bend_one_contracted_module_like_the_kinematic_model(
+        capsys, record_property):
+    # Tendon 1 in by 2k, tendons 2 and 3 out by k (section 4.3), k = 0..3: the bend's plane
+    # and direction agree with the constant-curvature model; how closely is reported.
+    status, out = cli_json(capsys, "--modules", "1", "--config", "0", "--protocol")
+    assert status == 0 and out["completed"] is True and len(out["steps"]) == 11
+    for step in out["steps"][1:4]:
+        tip, kinematic = step["tip_position"], step["kinematic_tip_position"]
+        assert tip[0] > 0 and kinematic[0] > 0  # both bend towards tendon 1 (+x)
+        plane = math.degrees(step["bend_direction"])
+        bend, kinematic_bend = step["bend_angles"][0], step["kinematic_bend_angles"][0]
+        record_property(f"k={step['k']}", {"plane_deg": plane, "bend_deg": math.degrees(bend),
+                                          "kinematic_bend_deg": math.degrees(kinematic_bend),
+                                          "tip_error_mm": step["tip_error"]})
+        assert abs(plane) < 1.0  # measured: 0.04 degrees
+        assert bend == pytest.approx(kinematic_bend, rel=0.02)  # measured: 0.3 % smaller
+    # The tips differ by about 2 mm at every step: the pretension (1 N per tendon)
+    # compresses the contracted module from 30 to 28.1 mm; the kinematic model keeps 30.
+    assert out["steps"][0]["tip_error"] == pytest.approx(1.94, abs=0.05)
+
+
+def test_extended_modules_take_a_share_of_the_bend_the_kinematic_model_gives_the_joint():
+    from kresling.arm.actuation import pseudo_linkage_run
+
+    run = pseudo_linkage_run(build_arm("011"), steps=[0, 5, 10])
+    assert run.completed
+    total, kinematic_total = run.bend_angles.sum(axis=1), run.kinematic_bend_angles.sum(axis=1)
+    assert total[1:] == pytest.approx(kinematic_total[1:], rel=0.06)  # the same total bend
+    assert run.kinematic_bend_angles[:, 1:].max() == 0.0              # rigid links there
+    assert run.bend_angles[2, 1] > 0.1 * run.bend_angles[2, 0]        # not rigid here
+    assert run.tip_error[2] > 20.0                                    # so the tip lags
+
+
+def test_table5_module_lengths_are_a_prediction_reported_beside_the_measurements():
+    from kresling.arm.actuation import table5_comparison
+
+    rows = table5_comparison()
+    assert len(rows) == 24 and all(r["completed"] for r in rows)
+    for r in rows:
+        expected = 2 * (LE if r["state"] == 1 else LC)
+        assert r["kinematic_min_mm"] == pytest.approx(expected, abs=1e-6)
+        assert r["kinematic_max_mm"] == pytest.approx(expected, abs=1e-6)
+        assert r["outside_by_mm"] >= 0 and r["inside"] == (r["outside_by_mm"] == 0)
+    # The kinematic model predicts no variation; the structure's ranges under the protocol
+    # are of the measured size (about 1 mm on average).
+    bending = [r for r in rows if r["config"] != "111"]
+    predicted = np.mean([r["predicted_max_mm"] - r["predicted_min_mm"] for r in bending])
+    measured = np.mean([r["max_mm"] - r["min_mm"] for r in bending])
+    assert 0.3 * measured < predicted < 3 * measured
+
+
+def test_switching_map_pulling_all_tendons_contracts_the_tip_most_module_first():
+    from kresling.arm.switching import switching_map
+
+    switches = switching_map(2, pulls={"all": (1.0, 1.0, 1.0)})
+    ends = {s.start: s.end for s in switches}
+    assert ends == {"01": "0x", "10": "x0", "11": "1x"}
+    for s in switches:
+        assert s.snapped and 7.0 < s.tension_sum < 10.0
+        assert s.motor_counts[0] < 0  # reeling in

@@ -50,8 +50,19 @@ def register(subparsers) -> None:
     analysis.add_argument("--table", action="store_true",
                           help="the load-capacity table of all 2^m configurations (stiffness, "
                                "length, largest tip loads)")
+    analysis.add_argument("--protocol", action="store_true",
+                          help="the section 4.3 protocol (tendon 1 in by 2k, tendons 2 and 3 "
+                               "out by k per contracted module, k = 0..10) on the structure, "
+                               "step by step beside the constant-curvature model")
+    analysis.add_argument("--table5", action="store_true",
+                          help="module lengths under the protocol for all 8 configurations of "
+                               "the three-module arm beside Table 5's measured ranges")
+    analysis.add_argument("--switching", action="store_true",
+                          help="pull all tendons, or one, from every configuration until a "
+                               "module snaps: which configurations the pulls reach")
     parser.add_argument("--plot", metavar="FILE.png",
-                        help="with --table: write the load-capacity figure")
+                        help="with --table: write the load-capacity figure; with --protocol: "
+                             "the markers of both models")
     parser.add_argument("--pretension", type=float,
                         help="tension of each tendon before a tip load [N] (default 1 with "
                              "--tip-load/--capacity; the built arm's tendons are just taut)")
@@ -78,14 +89,22 @@ def run(args) -> int:
 
     chosen = [name for name, on in (("--tip-load", args.tip_load is not None),
                                     ("--pull-all", args.pull_all), ("--capacity", args.capacity),
-                                    ("--table", args.table))
+                                    ("--table", args.table), ("--protocol", args.protocol),
+                                    ("--table5", args.table5), ("--switching", args.switching))
               if on]
     if len(chosen) > 1:
         raise ValueError(f"{' and '.join(chosen)}: give one analysis at a time")
-    if args.plot and not args.table:
-        raise ValueError("plot: --plot draws the load-capacity table; add --table")
+    if args.plot and not (args.table or args.protocol):
+        raise ValueError("plot: --plot draws the load-capacity table or the protocol; add "
+                         "--table or --protocol")
     if args.table:
         return _run_table(args)
+    if args.table5:
+        return _run_table5(args)
+    if args.switching:
+        return _run_switching(args)
+    if args.protocol:
+        return _run_protocol(args)
     configuration = _configuration(args)
     parameters = ArmParameters(tendon_radius=args.tendon_radius, guide_radius=args.guide_radius,
                                tendon_stiffness=args.tendon_stiffness)
@@ -188,6 +207,118 @@ def _run_table(args) -> int:
 
         plot_load_capacity(table).savefig(args.plot, dpi=150)
     return 0
+
+
+def _pretension(args) -> float:
+    from kresling.arm import DEFAULT_PRETENSION
+
+    return DEFAULT_PRETENSION if args.pretension is None else args.pretension
+
+
+def _arm_options(args) -> dict:
+    from kresling.arm import ArmParameters
+
+    return {"n": args.n, "lam": args.lam, "Lc": args.Lc, "R": args.R,
+            "parameters": ArmParameters(tendon_radius=args.tendon_radius,
+                                        guide_radius=args.guide_radius,
+                                        tendon_stiffness=args.tendon_stiffness)}
+
+
+def _run_protocol(args) -> int:
+    import math
+
+    from kresling.arm import build_arm
+    from kresling.arm.actuation import pseudo_linkage_run
+
+    configuration = _configuration(args)
+    arm = build_arm(configuration, **_arm_options(args))
+    run = pseudo_linkage_run(arm, pretension=_pretension(args))
+    steps = []
+    for k in range(len(run.changes)):
+        done = k < len(run.states)
+        steps.append({
+            "k": k, "tendon_change": run.changes[k].tolist(),
+            "motor_counts": run.motor_counts[k].tolist(),
+            "tip_position": run.markers[k, -1].tolist() if done else None,
+            "kinematic_tip_position": run.kinematic_markers[k, -1].tolist(),
+            "tip_error": float(run.tip_error[k]) if done else None,
+            "marker_error": run.marker_error[k].tolist() if done else None,
+            "bend_angles": run.bend_angles[k].tolist() if done else None,
+            "kinematic_bend_angles": run.kinematic_bend_angles[k].tolist(),
+            "bend_direction": _finite(run.bend_direction[k]),
+            "kinematic_bend_direction": _finite(run.kinematic_bend_direction[k]),
+            "tension": run.tension[k].tolist() if done else None,
+            "module_length": run.module_lengths[k].tolist() if done else None})
+    out = {"configuration": configuration, "pretension": _pretension(args), "steps": steps,
+           "completed": run.completed}
+    if run.message:
+        out["message"] = run.message
+    if args.json:
+        print_json(out)
+    else:
+        print_table([(s["k"], _fmt(s["tendon_change"]), _fmt(s["tip_position"] or [math.nan] * 3),
+                      _fmt(s["kinematic_tip_position"]), s["tip_error"],
+                      _fmt([math.degrees(a) for a in s["bend_angles"] or [math.nan]]),
+                      _fmt([math.degrees(a) for a in s["kinematic_bend_angles"]]))
+                     for s in steps],
+                    ("k", "tendon change [mm]", "tip, structure [mm]", "tip, kinematic [mm]",
+                     "tip error [mm]", "bends [deg]", "kinematic bends [deg]"))
+    if args.plot:
+        import matplotlib
+
+        matplotlib.use("Agg")  # files only: never open a window
+        from kresling.arm.plots import plot_actuation
+
+        plot_actuation(run).savefig(args.plot, dpi=150)
+    if not run.completed:
+        print(f"kresling arm: warning: {run.message}", file=sys.stderr)
+        return 1
+    return 0
+
+
+def _run_table5(args) -> int:
+    from kresling.arm.actuation import table5_comparison
+
+    if args.config is not None or args.modules not in (None, 3):
+        raise ValueError("config: --table5 runs Table 5's eight configurations of three modules")
+    rows = table5_comparison(pretension=_pretension(args), **_arm_options(args))
+    if args.json:
+        print_json({"pretension": _pretension(args), "rows": rows,
+                    "completed": all(r["completed"] for r in rows)})
+    else:
+        print_table([(r["config"], r["joint"], r["state"], f"[{r['min_mm']}, {r['max_mm']}]",
+                      f"{r['kinematic_min_mm']:.2f}",
+                      f"[{r['predicted_min_mm']:.2f}, {r['predicted_max_mm']:.2f}]",
+                      f"{r['outside_by_mm']:.2f}") for r in rows],
+                    ("config", "module", "state", "Table 5 [mm]", "kinematic [mm]",
+                     "structure [mm]", "outside by [mm]"))
+    return 0
+
+
+def _run_switching(args) -> int:
+    from kresling.arm.switching import switching_map
+
+    if args.config is not None:
+        raise ValueError("config: --switching runs every configuration; give --modules instead")
+    modules = 3 if args.modules is None else args.modules
+    switches = switching_map(modules, **_arm_options(args))
+    rows = [{"start": s.start, "pull": s.pull, "snapped": s.snapped,
+             "snapped_module": s.snapped_module if s.snapped else None, "end": s.end,
+             "pull_mm": _finite(s.pull_mm), "tension_sum": _finite(s.tension_sum),
+             "motor_counts": s.motor_counts.tolist() if s.snapped else None} for s in switches]
+    if args.json:
+        print_json({"modules": modules, "rows": rows, "completed": True})
+    else:
+        print_table([(r["start"], r["pull"], r["end"], r["snapped_module"], r["pull_mm"],
+                      r["tension_sum"]) for r in rows],
+                    ("from", "pull", "to", "snapped module", "pull [mm]", "tension sum [N]"))
+    return 0
+
+
+def _finite(value):
+    import math
+
+    return float(value) if math.isfinite(value) else None
 
 
 def _print_text(out: dict) -> None:
