@@ -82,8 +82,8 @@ def test_figures_a_section_leaves_open_are_closed_but_not_the_callers(tmp_path):
 def test_the_registry_lists_the_thesis_in_order_and_loads_what_exists():
     keys = [chapter.key for chapter in CHAPTERS]
     assert keys == ["geometry", "experiments", "analyses", "sweeps", "fabrication",
-                    "manipulator"]
-    for key in ("geometry", "experiments", "fabrication", "manipulator"):
+                    "manipulator", "arm"]
+    for key in ("geometry", "experiments", "fabrication", "manipulator", "arm"):
         function = next(c for c in CHAPTERS if c.key == key).load()
         assert callable(function) and function.__name__ == "reproduce"
 

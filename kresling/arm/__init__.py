@@ -10,7 +10,11 @@ guide (:mod:`kresling.arm.structure`). On it, in the C++ core:
 - :func:`pull_until_snap`: pull tendons (all, or some) until a module snaps: which one, the
   tendon force and the configuration it lands in.
 
-The command line is ``kresling arm``.
+Submodules beyond these: ``capacity`` (the load-capacity table of every configuration),
+``actuation`` (tendon commands in, the structure's shape out, beside the constant-curvature
+model; module lengths against Table 5), ``switching`` (which pulls reach which
+configurations), ``plots``. The command line is ``kresling arm``; the guide is docs/arm.md
+and the report's section :mod:`kresling.report.sections.arm`.
 """
 
 from kresling.arm.analyses import (CAPACITY_DIRECTIONS, DEFAULT_PRETENSION, ArmSolver, ArmState,

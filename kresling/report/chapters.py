@@ -14,8 +14,8 @@ import inspect
 from dataclasses import dataclass
 from typing import Callable, Union
 
-from kresling.report.sections import (analyses, experiments, fabrication, geometry, manipulator,
-                                      sweeps)
+from kresling.report.sections import (analyses, arm, experiments, fabrication, geometry,
+                                      manipulator, sweeps)
 
 __all__ = ["Chapter", "CHAPTERS", "SectionNotAvailable", "select_chapters"]
 
@@ -89,6 +89,8 @@ CHAPTERS = (
             "optimal cell", fabrication.reproduce),
     Chapter("manipulator", "Chapter 4.2-4.3, Appendix E", "Manipulator kinematics",
             manipulator.reproduce),
+    Chapter("arm", "Beyond chapter 4", "The manipulator as a structure: load capacity, "
+            "switching by pulling, actuation beside the kinematics, Table 5", arm.reproduce),
 )
 
 
