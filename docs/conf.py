@@ -91,6 +91,13 @@ def _copy_notebooks():
 
 _copy_notebooks()
 
+# -- generated pages -------------------------------------------------------------------------
+# What the build generates in this folder is written anew each time, so that pages of names
+# or scripts that no longer exist do not linger (an orphan page is a warning, so an error).
+for _generated in (DOCS / "api", DOCS / "auto_examples"):
+    shutil.rmtree(_generated, ignore_errors=True)
+(DOCS / "sg_execution_times.rst").unlink(missing_ok=True)
+
 # -- API reference ---------------------------------------------------------------------------
 write_api_pages(DOCS / "api")
 autosummary_generate = True
