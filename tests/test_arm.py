@@ -91,6 +91,24 @@ def test_pulling_all_tendons_snaps_one_extended_module_near_the_cells_snap_force
         -out["snap_pull"] * 4704 / (math.pi * 20))
 
 
+def test_pulling_one_tendon_snaps_at_a_smaller_force_and_a_longer_pull(capsys):
+    status, out = cli_json(capsys, "--config", "1", "--pull-tendon", "1")
+    assert status == 0 and out["snapped"] is True and out["snapped_module"] == 0
+    _, both = cli_json(capsys, "--config", "1", "--pull-all")
+    assert out["snap_tendon_force"] < both["snap_tendon_force"]  # 5.3 N against 8.1 N
+    assert out["snap_pull"] > both["snap_pull"]                  # 44.7 mm against 21.5 mm
+    assert out["snap_tension"][0] > 5 * max(out["snap_tension"][1:])
+
+
+def test_pulls_shorten_the_tendons_and_tension_them(capsys):
+    status, out = cli_json(capsys, "--config", "1", "--pulls", "2", "2", "2")
+    assert status == 0 and out["completed"] is True
+    assert all(p > 2 for p in out["pulls"])  # the pretension's pulls, then 2 mm more
+    assert max(out["pulls"]) - min(out["pulls"]) < 0.1
+    assert all(t > 1.0 for t in out["tension"])  # pretension 1 N, then pulled further
+    assert out["tip_position"][2] < out["tip_position_unloaded"][2]
+
+
 def test_pull_until_snap_reports_the_module_the_force_and_where_it_lands():
     arm = build_arm("10")
     r = pull_until_snap(arm)
@@ -133,6 +151,11 @@ def test_losing_equilibrium_is_a_result_not_a_crash(capsys):
     (["--config", "1", "--tip-load", "1", "0", "0", "--pretension", "-1"], "pretension"),
     (["--config", "1", "--tip-load", "1", "0", "0", "--pull-all"], "--tip-load and --pull-all"),
     (["--modules", "0"], "modules"),
+    (["--config", "1", "--pulls", "1", "-1", "0"], "pulls[1] = -1.0 mm is invalid: makes tendon 2 "
+                                                 "longer than its slack length"),
+    (["--config", "1", "--pull-all", "--max-pull", "-5"], "max_pull"),
+    (["--config", "1", "--capacity", "--pretension", "0"], "pretension"),
+    (["--table", "--modules", "2", "--plot", "x.png", "--config", "11"], "config"),
 ])
 def test_bad_input_exits_2_naming_the_parameter(capsys, args, name):
     assert main(["arm", *args]) == 2

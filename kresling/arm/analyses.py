@@ -106,7 +106,7 @@ def _pulls(name, value, allow_negative=False) -> list:
     if not allow_negative:
         for t, v in enumerate(array):
             if not v >= 0:
-                raise ValueError(f"{name}[{t}] = {v!r} mm is invalid: makes tendon {t + 1} longer "
+                raise ValueError(f"{name}[{t}] = {float(v)!r} mm is invalid: makes tendon {t + 1} longer "
                                  "than its slack length; a pull must be >= 0 (a tendon cannot push)")
     return [float(v) for v in array]
 

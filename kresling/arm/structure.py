@@ -17,13 +17,14 @@ from __future__ import annotations
 
 import itertools
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
 from kresling import _core
 from kresling._validation import as_integer, as_real, show
 from kresling.geometry import Design
-from kresling.model import Model, SpecimenParameters
+from kresling.model import Model, SpecimenParameters, kresling_specimen
 
 __all__ = ["ArmParameters", "Arm", "build_arm", "parse_configuration", "all_configurations",
            "THESIS_DESIGN"]
@@ -159,6 +160,22 @@ class Arm:
     def node(self, level: int, vertex: int) -> int:
         """Node of perimeter vertex ``vertex`` of ``level`` (its centre for ``vertex = n``)."""
         return int(self._core.node(level, vertex))
+
+    @cached_property
+    def hinge_family(self) -> np.ndarray:
+        """Family of every hinge (for :mod:`kresling.view`): the cells' as in a Kresling
+        specimen ("valley", "mountain", "polygon_edge", "polygon_spoke"), then "guide" for
+        the hinges that hold the tendon holes in their plates."""
+        states = [int(c) for c in self.configuration for _ in range(2)]
+        cells = kresling_specimen(self.design, states, parameters=self.parameters.specimen)
+        extra = len(self.model.hinges) - len(cells.hinge_family)
+        return np.concatenate([cells.hinge_family, np.full(extra, "guide")])
+
+    def tendon_paths(self, positions=None) -> list:
+        """The three tendons' polylines, base to tip, as built or at ``positions`` (N, 3):
+        a list of three (m + 1, 3) arrays [mm]."""
+        x = self.model.nodes if positions is None else np.asarray(positions)
+        return [x[self.holes[:, t]] for t in range(3)]
 
     def guide_centres(self, positions=None) -> np.ndarray:
         """Centres of the guides (base first), shape (m + 1, 3) [mm], as built or at

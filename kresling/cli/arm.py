@@ -44,6 +44,8 @@ def register(subparsers) -> None:
                           help="tip force [N] on the tip guide's centre")
     analysis.add_argument("--pull-all", action="store_true",
                           help="shorten all three tendons together until the first module snaps")
+    analysis.add_argument("--pull-tendon", type=int, choices=(1, 2, 3),
+                          help="shorten one tendon alone until the first module snaps")
     analysis.add_argument("--capacity", action="store_true",
                           help="largest tip load along -z, +x, -x, +y before a module snaps "
                                "or a tendon goes slack")
@@ -66,7 +68,11 @@ def register(subparsers) -> None:
     parser.add_argument("--pretension", type=float,
                         help="tension of each tendon before a tip load [N] (default 1 with "
                              "--tip-load/--capacity; the built arm's tendons are just taut)")
-    parser.add_argument("--max-pull", type=float, help="largest pull for --pull-all [mm]")
+    parser.add_argument("--pulls", type=float, nargs=3, metavar=("P1", "P2", "P3"),
+                        help="shorten the tendons by these amounts [mm, >= 0] (with or without "
+                             "--tip-load)")
+    parser.add_argument("--max-pull", type=float,
+                        help="largest pull for --pull-all/--pull-tendon [mm]")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.set_defaults(func=run)
 
@@ -88,7 +94,9 @@ def run(args) -> int:
     from kresling.manipulator import TendonDrive
 
     chosen = [name for name, on in (("--tip-load", args.tip_load is not None),
-                                    ("--pull-all", args.pull_all), ("--capacity", args.capacity),
+                                    ("--pull-all", args.pull_all),
+                                    ("--pull-tendon", args.pull_tendon is not None),
+                                    ("--capacity", args.capacity),
                                     ("--table", args.table), ("--protocol", args.protocol),
                                     ("--table5", args.table5), ("--switching", args.switching))
               if on]
@@ -114,20 +122,26 @@ def run(args) -> int:
     out = {"design": {"n": args.n, "lam": args.lam, "Lc": args.Lc, "R": args.R},
            "modules": arm.modules}
     completed, message = True, ""
-    if args.tip_load is not None:
+    if args.pulls is not None and (args.pull_all or args.pull_tendon or args.capacity):
+        raise ValueError("pulls: --pulls goes with a tip load or alone, not with the pull or "
+                         "capacity analyses")
+    if args.tip_load is not None or args.pulls is not None:
         pretension = DEFAULT_PRETENSION if args.pretension is None else args.pretension
-        r = tip_load(arm, args.tip_load, pretension=pretension, solver=solver)
+        load = [0.0, 0.0, 0.0] if args.tip_load is None else args.tip_load
+        r = tip_load(arm, load, pulls=args.pulls, pretension=pretension, solver=solver)
         out.update(arm_summary(arm, r.state))
-        out.update(tip_load=list(args.tip_load), pretension=pretension,
+        out.update(tip_load=list(load), pretension=pretension,
                    tip_displacement=r.tip_displacement.tolist(),
                    tip_position_unloaded=r.unloaded.tip_position.tolist(),
                    tip_compliance=r.compliance.tolist(), load_factor=r.load_factor)
         completed, message = r.completed, r.message
-    elif args.pull_all:
+    elif args.pull_all or args.pull_tendon:
         if args.pretension is not None:
-            raise ValueError("pretension: --pull-all starts from the built arm (its tendons just "
+            raise ValueError("pretension: pulling starts from the built arm (its tendons just "
                              "taut); leave --pretension out")
-        r = pull_until_snap(arm, (1.0, 1.0, 1.0), max_pull=args.max_pull, solver=solver)
+        direction = (1.0, 1.0, 1.0) if args.pull_all else \
+            tuple(float(t == args.pull_tendon) for t in (1, 2, 3))
+        r = pull_until_snap(arm, direction, max_pull=args.max_pull, solver=solver)
         last = r.states[-1]
         out.update(arm_summary(arm, last))
         counts = TendonDrive()
