@@ -121,7 +121,8 @@ def index() -> str:
              "Every public class, function and constant of the package, listed from each "
              "package's ``__all__``; the packages in the order of the layers (see "
              ":doc:`../architecture`), bottom up. Units are mm, N and rad unless a name says "
-             "otherwise.", "",
+             "otherwise. ``kresling.__version__`` is the installed version (|release| here).",
+             "",
              ".. toctree::", "   :maxdepth: 1", ""]
     lines += [f"   {name}" for name in PACKAGES]
     return "\n".join(lines) + "\n"
