@@ -196,6 +196,9 @@ class TipLoadResult:
         Tip compliance of the unloaded (pretensioned) arm [mm/N], symmetric.
     load_factor : float
         Fraction of the load carried.
+    lost_between : (float, float) or None
+        When the arm lost equilibrium: the load factors of the last equilibrium and of the
+        increment that found none (its resolution: 1/4096 of a tenth of the load).
     message : str
     """
 
@@ -207,6 +210,7 @@ class TipLoadResult:
     tip_displacement: np.ndarray
     compliance: np.ndarray
     load_factor: float
+    lost_between: tuple | None
     message: str
 
 
@@ -241,10 +245,11 @@ def tip_load(arm: Arm, load, *, pulls=None, pretension: float = DEFAULT_PRETENSI
     unloaded = ArmState.from_core(r.pretensioned)
     states = r.path.states
     state = ArmState.from_core(states[-1]) if states else unloaded
-    factor = float(r.path.parameter[-1]) if r.completed or len(r.path.parameter) else 0.0
+    factor = float(r.path.parameter[-1]) if len(r.path.parameter) else 0.0
+    lost = (factor, float(r.path.end_parameter)) if r.path.lost else None
     return TipLoadResult(np.asarray(load), pretension, bool(r.completed), state, unloaded,
                          state.tip_position - unloaded.tip_position,
-                         solver.tip_compliance(unloaded), factor, r.message)
+                         solver.tip_compliance(unloaded), factor, lost, r.message)
 
 
 @dataclass(frozen=True)
