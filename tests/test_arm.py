@@ -140,6 +140,7 @@ def test_losing_equilibrium_is_a_result_not_a_crash(capsys):
     assert 0 < out["load_factor"] < 1
     low, high = out["lost_between"]
     assert low == out["load_factor"] and 0 < high - low < 1e-3
+    assert out["snapped_module"] == 0
     assert "between t =" in out["message"]
     capsys.readouterr()
 

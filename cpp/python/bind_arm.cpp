@@ -93,7 +93,8 @@ void bind_arm(py::module_& m) {
       .def_readonly("lost", &ArmPath::lost)
       .def_readonly("end_parameter", &ArmPath::end_parameter)
       .def_readonly("message", &ArmPath::message)
-      .def_readonly("attempted_increments", &ArmPath::attempted_increments);
+      .def_readonly("attempted_increments", &ArmPath::attempted_increments)
+      .def_readonly("critical_cell", &ArmPath::critical_cell);
 
   py::class_<ArmRelease>(m, "ArmRelease")
       .def_readonly("converged", &ArmRelease::converged)

@@ -170,3 +170,16 @@ TEST(ArmAnalysis, BadInputNamesTheParameter) {
   o.steps = 0;
   EXPECT_NE(error_of([&] { ArmSolver bad(arm, o); }).find("steps"), std::string::npos);
 }
+
+TEST(ArmAnalysis, TheSoftestModeAtTheSnapPointsAtTheModuleThatSnaps) {
+  // Where pulling all tendons loses equilibrium, the mode losing its stiffness changes the
+  // height of a cell of the module that the release then finds switched.
+  for (const std::string config : {"1", "110", "011"}) {
+    const auto arm = arm_of(config);
+    ArmSolver solver(arm);
+    const auto r = analyses::arm_pull_until_snap(solver, solver.built(), {1.0, 1.0, 1.0}, 60.0);
+    ASSERT_TRUE(r.snapped) << config << ": " << r.message;
+    ASSERT_GE(r.path.critical_cell, 0) << config;
+    EXPECT_EQ(r.path.critical_cell / 2, r.snapped_module) << config;
+  }
+}

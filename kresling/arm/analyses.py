@@ -199,6 +199,9 @@ class TipLoadResult:
     lost_between : (float, float) or None
         When the arm lost equilibrium: the load factors of the last equilibrium and of the
         increment that found none (its resolution: 1/4096 of a tenth of the load).
+    snapped_module : int
+        Then, the module of the cell that jumped, or whose height changes most along the
+        mode losing its stiffness (0-based from the base); -1 otherwise.
     message : str
     """
 
@@ -211,6 +214,7 @@ class TipLoadResult:
     compliance: np.ndarray
     load_factor: float
     lost_between: tuple | None
+    snapped_module: int
     message: str
 
 
@@ -249,7 +253,9 @@ def tip_load(arm: Arm, load, *, pulls=None, pretension: float = DEFAULT_PRETENSI
     lost = (factor, float(r.path.end_parameter)) if r.path.lost else None
     return TipLoadResult(np.asarray(load), pretension, bool(r.completed), state, unloaded,
                          state.tip_position - unloaded.tip_position,
-                         solver.tip_compliance(unloaded), factor, lost, r.message)
+                         solver.tip_compliance(unloaded), factor, lost,
+                         r.path.critical_cell // 2 if r.path.lost and r.path.critical_cell >= 0
+                         else -1, r.message)
 
 
 @dataclass(frozen=True)

@@ -134,7 +134,8 @@ def run(args) -> int:
                    tip_displacement=r.tip_displacement.tolist(),
                    tip_position_unloaded=r.unloaded.tip_position.tolist(),
                    tip_compliance=r.compliance.tolist(), load_factor=r.load_factor,
-                   lost_between=list(r.lost_between) if r.lost_between else None)
+                   lost_between=list(r.lost_between) if r.lost_between else None,
+                   snapped_module=r.snapped_module if r.lost_between else None)
         completed, message = r.completed, r.message
     elif args.pull_all or args.pull_tendon:
         if args.pretension is not None:

@@ -167,6 +167,7 @@ ArmPath ArmSolver::ramp(const ArmState& start, const Pulls& pulls_to, const Vect
         *impl_->assembler, impl_->solver, trial, tip_force(arm, load), options_.newton);
     std::string reason;
     bool is_event = false;
+    int jumped = -1;
     ArmState s;
     if (!out.converged) {
       reason = out.failure;
@@ -184,6 +185,7 @@ ArmPath ArmSolver::ramp(const ArmState& start, const Pulls& pulls_to, const Vect
           if (s.cell_states[i] != path.states.back().cell_states[i]) {
             reason = "cell " + std::to_string(i) + " (module " + std::to_string(i / 2) +
                      ") jumped to its " + (s.cell_states[i] ? "extended" : "contracted") + " state";
+            jumped = static_cast<int>(i);
             break;
           }
         }
@@ -222,6 +224,16 @@ ArmPath ArmSolver::ramp(const ArmState& start, const Pulls& pulls_to, const Vect
     path.end_parameter = tn;
     path.event = is_event;
     path.lost = !is_event;
+    if (path.lost) {
+      path.critical_cell = jumped;
+      if (jumped < 0) {
+        const std::vector<double> dh = softest_mode_heights(path.states.back());
+        double largest = 0.0;
+        for (std::size_t i = 0; i < dh.size(); ++i) {
+          if (std::abs(dh[i]) > largest) largest = std::abs(dh[i]), path.critical_cell = static_cast<int>(i);
+        }
+      }
+    }
     path.message = (is_event ? std::string("event") : std::string("equilibrium lost")) +
                    " between t = " + format_number(t) + " and " + format_number(tn) + ": " + reason;
     return path;
@@ -267,6 +279,30 @@ Eigen::Matrix3d ArmSolver::tip_compliance(const ArmState& state) {
     for (int l = 0; l < 3; ++l) C(k, l) = X(impl_->rows[3 * tip + k], l);
   }
   return C;
+}
+
+std::vector<double> ArmSolver::softest_mode_heights(const ArmState& state) {
+  impl_->set_pulls(*arm_, state.pulls);
+  VectorX force;
+  impl_->assembler->assemble(state.displacement, force, true);
+  std::vector<double> out;
+  if (!impl_->solver.factorize(impl_->assembler->matrix()).ok) return out;
+  // Inverse iteration: converges to the eigenvector of the smallest eigenvalue, fast where
+  // that one is far below the next (near a limit point).
+  VectorX x = VectorX::Ones(impl_->assembler->size());
+  for (int k = 0; k < 40; ++k) {
+    x = impl_->solver.solve(x);
+    x /= x.norm();
+  }
+  VectorX mode = VectorX::Zero(arm_->model.num_dofs());
+  solvers::scatter_add_rows(*impl_->assembler, x, mode);
+  mode /= mode.cwiseAbs().maxCoeff();
+  const ArmState a = evaluate(state.displacement + 1e-3 * mode, state.pulls, state.load);
+  const ArmState b = evaluate(state.displacement - 1e-3 * mode, state.pulls, state.load);
+  for (std::size_t i = 0; i < a.cell_height.size(); ++i) {
+    out.push_back((a.cell_height[i] - b.cell_height[i]) / 2e-3);
+  }
+  return out;
 }
 
 Eigen::Matrix3d ArmSolver::tension_sensitivity(const ArmState& state) {
@@ -466,9 +502,7 @@ ArmCapacityResult arm_load_capacity(ArmSolver& solver, const ArmState& pretensio
   } else {
     r.limit = "snap";
     r.load = reached;
-    const std::string& m = r.path.message;
-    const auto pos = m.find("(module ");
-    if (pos != std::string::npos) r.module = std::stoi(m.substr(pos + 8));
+    if (r.path.critical_cell >= 0) r.module = r.path.critical_cell / 2;
   }
   return r;
 }

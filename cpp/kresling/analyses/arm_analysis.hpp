@@ -78,6 +78,10 @@ struct ArmPath {
   double end_parameter = ArmState::kNaN;
   std::string message;            ///< why it ended early
   int attempted_increments = 0;
+  /// Where equilibrium was lost: the cell that jumped to its other state within the last
+  /// increment, or else the cell whose height changes most along the softest mode of the
+  /// last equilibrium (the mode that is losing its stiffness); -1 otherwise.
+  int critical_cell = -1;
 };
 
 /// Where a released arm comes to rest.
@@ -118,6 +122,10 @@ class ArmSolver {
   /// Tip compliance at a state: d(tip displacement) / d(tip load) of the linearised
   /// equilibrium, 3 x 3 [mm/N] (symmetric: the tangent is).
   Eigen::Matrix3d tip_compliance(const ArmState& state);
+
+  /// Per cell, the change of its height along the softest mode of the tangent at `state`
+  /// (inverse iteration), the mode scaled to a largest DOF motion of 1 mm [mm].
+  std::vector<double> softest_mode_heights(const ArmState& state);
 
   /// d tension_i / d pull_j at a state, 3 x 3 [N/mm] (tendons slack there: zero rows).
   Eigen::Matrix3d tension_sensitivity(const ArmState& state);
