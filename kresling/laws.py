@@ -7,16 +7,22 @@ is in docs/model.md, 'Bars' and 'Spring laws'.
 
 from __future__ import annotations
 
+from types import MappingProxyType
+
 import numpy as np
+
+from kresling import _core
 
 __all__ = ["BAR_LAWS", "SPRING_LAWS", "FOLD_LIMITS"]
 
-#: Bar laws by name (docs/model.md, 'Bars'): "ogden" is MERLIN2's Ogden law with exponents
-#: (5, 1).
-BAR_LAWS = {"linear": 0, "ogden": 1}
+#: Bar laws by name (docs/model.md, 'Bars'): "linear", and "ogden", MERLIN2's Ogden law with
+#: exponents (5, 1). Names and codes come from the C++ core's law kinds.
+BAR_LAWS = MappingProxyType({name: int(kind) for name, kind in
+                             _core.elements.BarLawKind.__members__.items()})
 #: Spring laws by name (docs/model.md, 'Spring laws'): "enhanced_linear" (MERLIN2's, with
 #: limits), "linear", "super_linear_bend" (``M ~ |dtheta|^(4/3)``).
-SPRING_LAWS = {"linear": 0, "enhanced_linear": 1, "super_linear_bend": 2}
+SPRING_LAWS = MappingProxyType({name: int(kind) for name, kind in
+                                _core.elements.SpringLawKind.__members__.items()})
 
 #: MERLIN2's default limits of the enhanced linear law for fold hinges [rad] (5 and 355 deg).
 FOLD_LIMITS = (np.radians(5.0), np.radians(355.0))

@@ -32,7 +32,7 @@ LAYERS = {
     "_core": set(),
     "_validation": set(),
     "data": set(),
-    "laws": set(),
+    "laws": {"_core"},
     "io": {"_validation"},
     "geometry": FOUNDATION,
     "plots": FOUNDATION | {"geometry"},

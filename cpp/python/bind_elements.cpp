@@ -2,6 +2,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <string>
+
 #include "bindings.hpp"
 #include "kresling/elements/bar.hpp"
 #include "kresling/elements/dihedral.hpp"
@@ -14,7 +16,33 @@ using namespace kresling::elements;
 
 namespace kresling::python {
 
+BarLawKind bar_law_kind(Index code, const char* name) {
+  if (code != static_cast<Index>(BarLawKind::Linear) && code != static_cast<Index>(BarLawKind::Ogden)) {
+    throw std::invalid_argument(std::string(name) + " = " + std::to_string(code) +
+                                " is not a bar law code (see kresling.laws.BAR_LAWS)");
+  }
+  return static_cast<BarLawKind>(code);
+}
+
+SpringLawKind spring_law_kind(Index code, const char* name) {
+  if (code < static_cast<Index>(SpringLawKind::Linear) ||
+      code > static_cast<Index>(SpringLawKind::SuperLinearBend)) {
+    throw std::invalid_argument(std::string(name) + " = " + std::to_string(code) +
+                                " is not a spring law code (see kresling.laws.SPRING_LAWS)");
+  }
+  return static_cast<SpringLawKind>(code);
+}
+
 void bind_elements(py::module_& m) {
+  // The law kinds, named as the Python API names them (kresling.laws derives its tables
+  // from these: the names and codes are declared here once).
+  py::enum_<BarLawKind>(m, "BarLawKind")
+      .value("linear", BarLawKind::Linear)
+      .value("ogden", BarLawKind::Ogden);
+  py::enum_<SpringLawKind>(m, "SpringLawKind")
+      .value("linear", SpringLawKind::Linear)
+      .value("enhanced_linear", SpringLawKind::EnhancedLinear)
+      .value("super_linear_bend", SpringLawKind::SuperLinearBend);
   m.def("dihedral_angle", &dihedral_angle, py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"));
   m.def(
       "dihedral_angle_derivatives",
@@ -46,7 +74,7 @@ void bind_elements(py::module_& m) {
       [](const Vector3& x1, const Vector3& x2, double area, double rest_length, int law,
          double modulus) {
         const auto r = bar_response(x1, x2, area, rest_length,
-                                    BarLaw{static_cast<BarLawKind>(law), modulus}, true);
+                                    BarLaw{bar_law_kind(law, "law"), modulus}, true);
         return py::make_tuple(r.energy, r.force, r.stiffness);
       },
       py::arg("x1"), py::arg("x2"), py::arg("area"), py::arg("rest_length"), py::arg("law"),
@@ -56,7 +84,7 @@ void bind_elements(py::module_& m) {
       [](const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d, double kp,
          double rest_angle, double length, int law, double theta1, double theta2) {
         const auto r = hinge_response(a, b, c, d, kp, rest_angle, length,
-                                      SpringLaw{static_cast<SpringLawKind>(law), theta1, theta2});
+                                      SpringLaw{spring_law_kind(law, "law"), theta1, theta2});
         return py::make_tuple(r.energy, r.force, r.stiffness, r.angle, r.moment);
       },
       py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"), py::arg("stiffness"),
@@ -65,7 +93,7 @@ void bind_elements(py::module_& m) {
   m.def(
       "spring_law",
       [](int law, double theta, double rest_angle, double stiffness, double theta1, double theta2) {
-        const auto r = SpringLaw{static_cast<SpringLawKind>(law), theta1, theta2}.evaluate(
+        const auto r = SpringLaw{spring_law_kind(law, "law"), theta1, theta2}.evaluate(
             theta, rest_angle, stiffness);
         return py::make_tuple(r.moment, r.stiffness, r.energy);
       },

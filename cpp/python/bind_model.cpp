@@ -55,22 +55,20 @@ model::Model make_model(const Eigen::Ref<const NodeMatrix>& nodes, IndexArray ba
   auto bn = bar_nodes.unchecked<2>();
   for (py::ssize_t i = 0; i < nb; ++i) {
     const Index law = bar_law.at(i);
-    if (law != 0 && law != 1) throw std::invalid_argument("bar_law: unknown law code");
     bars[i].nodes = {bn(i, 0), bn(i, 1)};
     bars[i].area = bar_area.at(i);
     bars[i].rest_length = bar_rest_length.at(i);
-    bars[i].law = {static_cast<elements::BarLawKind>(law), bar_modulus.at(i)};
+    bars[i].law = {bar_law_kind(law, "bar_law"), bar_modulus.at(i)};
   }
   std::vector<model::Hinge> hinges(static_cast<std::size_t>(nh));
   auto hn = hinge_nodes.unchecked<2>();
   for (py::ssize_t i = 0; i < nh; ++i) {
     const Index law = hinge_law.at(i);
-    if (law < 0 || law > 2) throw std::invalid_argument("hinge_law: unknown law code");
     hinges[i].nodes = {hn(i, 0), hn(i, 1), hn(i, 2), hn(i, 3)};
     hinges[i].stiffness = hinge_stiffness.at(i);
     hinges[i].rest_angle = hinge_rest_angle.at(i);
     hinges[i].length = hinge_length.at(i);
-    hinges[i].law = {static_cast<elements::SpringLawKind>(law), hinge_theta1.at(i),
+    hinges[i].law = {spring_law_kind(law, "hinge_law"), hinge_theta1.at(i),
                      hinge_theta2.at(i)};
   }
   std::vector<std::uint8_t> mask(fixed.data(), fixed.data() + fixed.size());

@@ -28,36 +28,61 @@ py::tuple csc(const assembly::SparseMatrix& K) {
   return py::make_tuple(data, indices, indptr, py::make_tuple(K.rows(), K.cols()));
 }
 
-py::dict path_to_dict(const PathResult& r, Index num_dofs) {
-  const auto s = static_cast<Index>(r.steps.size());
-  const auto nc = static_cast<Index>(r.constraint_dofs.size());
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> u(s, num_dofs), f(s, nc);
-  VectorX lam(s), eb(s), eh(s);
-  Eigen::VectorXi iters(s), neg(s);
-  for (Index k = 0; k < s; ++k) {
-    const PathStep& p = r.steps[k];
-    u.row(k) = p.displacement.transpose();
-    f.row(k) = p.constraint_force.transpose();
-    lam[k] = p.load_factor;
-    eb[k] = p.energy_bars;
-    eh[k] = p.energy_hinges;
-    iters[k] = p.iterations;
-    neg[k] = p.negative_eigenvalues;
-  }
-  py::dict out;
-  out["load_factor"] = lam;
-  out["displacement"] = u;
-  out["constraint_force"] = f;
-  out["constraint_dofs"] = r.constraint_dofs;
-  out["energy_bars"] = eb;
-  out["energy_hinges"] = eh;
-  out["iterations"] = iters;
-  out["negative_eigenvalues"] = neg;
-  out["completed"] = r.completed;
-  out["message"] = r.message;
-  out["failed_increment"] = r.failed_increment;
-  out["attempted_increments"] = r.attempted_increments;
+using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// One per-step quantity of a path as a (steps,) or (steps, k) numpy array.
+template <typename Get>
+VectorX per_step(const PathResult& r, Get&& get) {
+  VectorX out(static_cast<Index>(r.steps.size()));
+  for (std::size_t k = 0; k < r.steps.size(); ++k) out[static_cast<Index>(k)] = get(r.steps[k]);
   return out;
+}
+
+template <typename Get>
+RowMatrix per_step_rows(const PathResult& r, Index width, Get&& get) {
+  RowMatrix out(static_cast<Index>(r.steps.size()), width);
+  for (std::size_t k = 0; k < r.steps.size(); ++k) {
+    out.row(static_cast<Index>(k)) = get(r.steps[k]).transpose();
+  }
+  return out;
+}
+
+// The path every solver returns, bound field by field: the Python PathResult reads these
+// (kresling/solvers/path.py documents them).
+void bind_path_result(py::module_& m) {
+  py::class_<PathResult>(m, "PathResult")
+      .def_property_readonly("load_factor", [](const PathResult& r) {
+        return per_step(r, [](const PathStep& s) { return s.load_factor; });
+      })
+      .def_property_readonly("displacement", [](const PathResult& r) {
+        const Index n = r.steps.empty() ? 0 : r.steps.front().displacement.size();
+        return per_step_rows(r, n, [](const PathStep& s) -> const VectorX& { return s.displacement; });
+      })
+      .def_property_readonly("constraint_dofs", [](const PathResult& r) { return r.constraint_dofs; })
+      .def_property_readonly("constraint_force", [](const PathResult& r) {
+        return per_step_rows(r, static_cast<Index>(r.constraint_dofs.size()),
+                             [](const PathStep& s) -> const VectorX& { return s.constraint_force; });
+      })
+      .def_property_readonly("energy_bars", [](const PathResult& r) {
+        return per_step(r, [](const PathStep& s) { return s.energy_bars; });
+      })
+      .def_property_readonly("energy_hinges", [](const PathResult& r) {
+        return per_step(r, [](const PathStep& s) { return s.energy_hinges; });
+      })
+      .def_property_readonly("iterations", [](const PathResult& r) {
+        Eigen::VectorXi out(static_cast<Index>(r.steps.size()));
+        for (std::size_t k = 0; k < r.steps.size(); ++k) out[k] = r.steps[k].iterations;
+        return out;
+      })
+      .def_property_readonly("negative_eigenvalues", [](const PathResult& r) {
+        Eigen::VectorXi out(static_cast<Index>(r.steps.size()));
+        for (std::size_t k = 0; k < r.steps.size(); ++k) out[k] = r.steps[k].negative_eigenvalues;
+        return out;
+      })
+      .def_readonly("completed", &PathResult::completed)
+      .def_readonly("message", &PathResult::message)
+      .def_readonly("failed_increment", &PathResult::failed_increment)
+      .def_readonly("attempted_increments", &PathResult::attempted_increments);
 }
 
 // A Python callable `stop(load_factor, displacement) -> bool` as a solver's stopping rule.
@@ -78,12 +103,10 @@ StopRule stop_rule(const py::object& callable) {
   };
 }
 
-// Checked by the solvers (kresling/solvers/limits.hpp).
-NewtonOptions newton(double tolerance, int max_iterations) { return {tolerance, max_iterations}; }
-
 }  // namespace
 
 void bind_solvers(py::module_& m) {
+  bind_path_result(m);
   // The documented bounds of the solvers' controls (kresling/solvers/limits.hpp).
   m.attr("MAX_STEPS") = kMaxSteps;
   m.attr("MAX_BISECTIONS") = kMaxBisections;
@@ -149,60 +172,70 @@ void bind_solvers(py::module_& m) {
           py::gil_scoped_release release;
           r = solve_displacement_control(model, prescribed, steps, options, initial);
         }
-        return path_to_dict(r, model.num_dofs());
+        return r;
       },
       py::arg("model"), py::arg("prescribed"), py::arg("steps"), py::arg("options"),
       py::arg("initial"));
 
+  py::class_<ForceControlOptions>(m, "ForceControlOptions")
+      .def(py::init<>())
+      .def_property(
+          "tolerance", [](const ForceControlOptions& o) { return o.newton.tolerance; },
+          [](ForceControlOptions& o, double v) { o.newton.tolerance = v; })
+      .def_property(
+          "max_iterations", [](const ForceControlOptions& o) { return o.newton.max_iterations; },
+          [](ForceControlOptions& o, int v) { o.newton.max_iterations = v; })
+      .def_readwrite("max_bisections", &ForceControlOptions::max_bisections)
+      .def_readwrite("shift", &ForceControlOptions::shift)
+      .def_property(
+          "stop", [](const ForceControlOptions& o) { return static_cast<bool>(o.stop); },
+          [](ForceControlOptions& o, const py::object& f) { o.stop = stop_rule(f); });
+
   m.def(
       "force_control",
-      [](const Model& model, const VectorX& forces, int steps, double tolerance,
-         int max_iterations, int max_bisections, double shift, const VectorX& initial,
-         const py::object& stop) {
-        ForceControlOptions o;
-        o.stop = stop_rule(stop);
-        o.newton = newton(tolerance, max_iterations);
-        o.max_bisections = max_bisections;
-        o.shift = shift;
+      [](const Model& model, const VectorX& forces, int steps, const ForceControlOptions& options,
+         const VectorX& initial) {
         PathResult r;
         {
           py::gil_scoped_release release;
-          r = solve_force_control(model, forces, steps, o, initial);
+          r = solve_force_control(model, forces, steps, options, initial);
         }
-        return path_to_dict(r, model.num_dofs());
+        return r;
       },
-      py::arg("model"), py::arg("forces"), py::arg("steps"), py::arg("tolerance"),
-      py::arg("max_iterations"), py::arg("max_bisections"), py::arg("shift"), py::arg("initial"),
-      py::arg("stop") = py::none());
+      py::arg("model"), py::arg("forces"), py::arg("steps"), py::arg("options"),
+      py::arg("initial"));
+
+  py::class_<MgdcmOptions>(m, "MgdcmOptions")
+      .def(py::init<>())
+      .def_property(
+          "tolerance", [](const MgdcmOptions& o) { return o.newton.tolerance; },
+          [](MgdcmOptions& o, double v) { o.newton.tolerance = v; })
+      .def_property(
+          "max_iterations", [](const MgdcmOptions& o) { return o.newton.max_iterations; },
+          [](MgdcmOptions& o, int v) { o.newton.max_iterations = v; })
+      .def_readwrite("initial_load_factor", &MgdcmOptions::initial_load_factor)
+      .def_readwrite("max_increments", &MgdcmOptions::max_increments)
+      .def_readwrite("max_load_factor", &MgdcmOptions::max_load_factor)
+      .def_readwrite("monitor_dof", &MgdcmOptions::monitor_dof)
+      .def_readwrite("max_displacement", &MgdcmOptions::max_displacement)
+      .def_readwrite("max_step_factor", &MgdcmOptions::max_step_factor)
+      .def_readwrite("shift", &MgdcmOptions::shift)
+      .def_property(
+          "stop", [](const MgdcmOptions& o) { return static_cast<bool>(o.stop); },
+          [](MgdcmOptions& o, const py::object& f) { o.stop = stop_rule(f); });
 
   m.def(
       "mgdcm",
-      [](const Model& model, const VectorX& forces, double initial_load_factor, int max_increments,
-         double max_load_factor, Index monitor_dof, double max_displacement,
-         double max_step_factor, double tolerance, int max_iterations, double shift,
-         const VectorX& initial, const py::object& stop) {
-        MgdcmOptions o;
-        o.stop = stop_rule(stop);
-        o.newton = newton(tolerance, max_iterations);
-        o.initial_load_factor = initial_load_factor;
-        o.max_increments = max_increments;
-        o.max_load_factor = max_load_factor;
-        o.monitor_dof = monitor_dof;
-        o.max_displacement = max_displacement;
-        o.max_step_factor = max_step_factor;
-        o.shift = shift;
+      [](const Model& model, const VectorX& forces, const MgdcmOptions& options,
+         const VectorX& initial) {
         PathResult r;
         {
           py::gil_scoped_release release;
-          r = solve_mgdcm(model, forces, o, initial);
+          r = solve_mgdcm(model, forces, options, initial);
         }
-        return path_to_dict(r, model.num_dofs());
+        return r;
       },
-      py::arg("model"), py::arg("forces"), py::arg("initial_load_factor"),
-      py::arg("max_increments"), py::arg("max_load_factor"), py::arg("monitor_dof"),
-      py::arg("max_displacement"), py::arg("max_step_factor"), py::arg("tolerance"),
-      py::arg("max_iterations"), py::arg("shift"), py::arg("initial"),
-      py::arg("stop") = py::none());
+      py::arg("model"), py::arg("forces"), py::arg("options"), py::arg("initial"));
 
   m.def(
       "condensed_stiffness",

@@ -4,7 +4,17 @@
 
 #include <pybind11/pybind11.h>
 
+#include "kresling/core/types.hpp"
+#include "kresling/elements/bar_laws.hpp"
+#include "kresling/elements/spring_laws.hpp"
+
 namespace kresling::python {
+
+/// A law's integer code (as the per-element law arrays carry it) as its kind; throws
+/// std::invalid_argument naming `name` for a code that is no law. The codes are the values
+/// of the BarLawKind and SpringLawKind enums bound in the elements submodule.
+elements::BarLawKind bar_law_kind(Index code, const char* name);
+elements::SpringLawKind spring_law_kind(Index code, const char* name);
 
 void bind_geometry(pybind11::module_& m);
 void bind_elements(pybind11::module_& m);

@@ -32,13 +32,16 @@ def solve_force_control(model, forces, steps, *, tolerance=1e-6, max_iterations=
     PathResult
         ``constraint_force``: the support reactions at the supported DOFs.
     """
-    d = _core.solvers.force_control(
+    o = _core.solvers.ForceControlOptions()
+    o.tolerance = as_positive_real("tolerance", tolerance)
+    o.max_iterations = as_integer("max_iterations", max_iterations, minimum=1)
+    o.max_bisections = as_integer("max_bisections", max_bisections, minimum=0)
+    o.shift = as_real("shift", shift)
+    o.stop = _stop(stop)
+    core = _core.solvers.force_control(
         model._core, dof_vector(model, "forces", forces), as_integer("steps", steps, minimum=1),
-        as_positive_real("tolerance", tolerance),
-        as_integer("max_iterations", max_iterations, minimum=1),
-        as_integer("max_bisections", max_bisections, minimum=0), as_real("shift", shift),
-        dof_vector(model, "initial", initial, allow_none=True), _stop(stop))
-    return PathResult._from_core(d)
+        o, dof_vector(model, "initial", initial, allow_none=True))
+    return PathResult._from_core(core)
 
 
 def solve_mgdcm(model, forces, *, initial_load_factor=0.01, max_increments=100,
@@ -83,16 +86,20 @@ def solve_mgdcm(model, forces, *, initial_load_factor=0.01, max_increments=100,
     else:
         monitor_dof = as_integer("monitor_dof", monitor_dof, minimum=0,
                                  maximum=model.num_dofs - 1)
-    d = _core.solvers.mgdcm(
-        model._core, dof_vector(model, "forces", forces),
-        as_real("initial_load_factor", initial_load_factor),
-        as_integer("max_increments", max_increments, minimum=1),
-        as_real("max_load_factor", max_load_factor), monitor_dof,
-        as_real("max_displacement", max_displacement),
-        as_real("max_step_factor", max_step_factor), as_positive_real("tolerance", tolerance),
-        as_integer("max_iterations", max_iterations, minimum=1), as_real("shift", shift),
-        dof_vector(model, "initial", initial, allow_none=True), _stop(stop))
-    return PathResult._from_core(d)
+    o = _core.solvers.MgdcmOptions()
+    o.initial_load_factor = as_real("initial_load_factor", initial_load_factor)
+    o.max_increments = as_integer("max_increments", max_increments, minimum=1)
+    o.max_load_factor = as_real("max_load_factor", max_load_factor)
+    o.monitor_dof = monitor_dof
+    o.max_displacement = as_real("max_displacement", max_displacement)
+    o.max_step_factor = as_real("max_step_factor", max_step_factor)
+    o.tolerance = as_positive_real("tolerance", tolerance)
+    o.max_iterations = as_integer("max_iterations", max_iterations, minimum=1)
+    o.shift = as_real("shift", shift)
+    o.stop = _stop(stop)
+    core = _core.solvers.mgdcm(model._core, dof_vector(model, "forces", forces), o,
+                               dof_vector(model, "initial", initial, allow_none=True))
+    return PathResult._from_core(core)
 
 
 def _stop(stop):

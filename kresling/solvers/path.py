@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -53,13 +53,17 @@ class PathResult:
     attempted_increments: int
 
     @classmethod
-    def _from_core(cls, d: dict) -> "PathResult":
-        values = {k: (np.asarray(v) if isinstance(v, (list, np.ndarray)) or hasattr(v, "shape")
-                      else v) for k, v in d.items()}
-        values["constraint_dofs"] = np.asarray(d["constraint_dofs"], dtype=np.int64)
-        for name in ("load_factor", "displacement", "constraint_force", "energy_bars",
-                     "energy_hinges", "iterations", "negative_eigenvalues"):
-            values[name].flags.writeable = False
+    def _from_core(cls, core) -> "PathResult":
+        """Read the C++ core's path (``kresling._core.solvers.PathResult``): every field of
+        this class is one of its properties."""
+        values = {}
+        for field in fields(cls):
+            value = getattr(core, field.name)
+            if field.name == "constraint_dofs":
+                value = np.asarray(value, dtype=np.int64)
+            if isinstance(value, np.ndarray):
+                value.flags.writeable = False
+            values[field.name] = value
         return cls(**values)
 
     @property
