@@ -12,7 +12,9 @@
 - :func:`write_html`: one self-contained page that works offline and opens at
   ``#frame=K``; :func:`check_writable` checks its path before a long computation;
 - :mod:`kresling.view.explorer`: the design explorer page (sliders over n, lambda and Lc,
-  the cell in both states, its flat pattern, the K_B-ratio and snap-force maps).
+  the cell in both states, its flat pattern, the K_B-ratio and snap-force maps);
+- :class:`ExplorerWidget`: the same explorer in Jupyter, every design recomputed live by
+  the C++ core (needs ``ipywidgets`` and ``anywidget``).
 
 The figures are :class:`plotly.graph_objects.Figure`: they display themselves in Jupyter,
 and ``.show()`` opens them elsewhere. Coordinates are rounded to 1e-10 mm in the figures
@@ -28,6 +30,7 @@ Examples
 'data'
 """
 
+from kresling.view.explorer_widget import ExplorerWidget
 from kresling.view.fields import FIELDS, element_energy
 from kresling.view.figure import view_model, view_path
 from kresling.view.fold import view_fold
@@ -36,4 +39,5 @@ from kresling.view.specimens import view_bending, view_snap_through
 from kresling.view.surface import FAMILY_STYLES
 
 __all__ = ["view_model", "view_path", "view_bending", "view_snap_through", "view_fold",
-           "write_html", "check_writable", "FIELDS", "FAMILY_STYLES", "element_energy"]
+           "write_html", "check_writable", "FIELDS", "FAMILY_STYLES", "element_energy",
+           "ExplorerWidget"]
