@@ -66,8 +66,10 @@ def register(subparsers) -> None:
                         help="with --table: write the load-capacity figure; with --protocol: "
                              "the markers of both models")
     parser.add_argument("--pretension", type=float,
-                        help="tension of each tendon before a tip load [N] (default 1 with "
-                             "--tip-load/--capacity; the built arm's tendons are just taut)")
+                        help="tension of each tendon before a tip load, --pulls, the "
+                             "capacity and the protocol [N] (default 1, an assumption; the "
+                             "built arm's tendons are just taut, and the pull-to-snap "
+                             "analyses start from there)")
     parser.add_argument("--pulls", type=float, nargs=3, metavar=("P1", "P2", "P3"),
                         help="shorten the tendons by these amounts [mm, >= 0] (with or without "
                              "--tip-load)")
