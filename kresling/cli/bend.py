@@ -7,7 +7,8 @@ import math
 import sys
 
 from kresling.cli._output import print_json, print_table
-from kresling.cli.design import add_design_arguments, design_from_args
+from kresling.cli.design import (add_design_arguments, add_stiffness_argument, design_from_args,
+                                 specimen_parameters_from_args)
 
 
 def register(subparsers) -> None:
@@ -20,6 +21,7 @@ def register(subparsers) -> None:
                     "K_B in N*m/rad, forces in N.",
     )
     add_design_arguments(parser)
+    add_stiffness_argument(parser)
     parser.add_argument("--deflection-rad", type=float, metavar="ANGLE",
                         help="drive to this deflection angle in 10 steps instead (the thesis's "
                              "parametric study used 0.001)")
@@ -44,6 +46,7 @@ def run(args) -> int:
     from kresling.analyses import bending_stiffness, snap_through
 
     design = design_from_args(args)
+    parameters = specimen_parameters_from_args(args)
     if args.view:
         from kresling.view import check_writable
 
@@ -55,10 +58,11 @@ def run(args) -> int:
             raise ValueError(f"--deflection-rad = {args.deflection_rad!r} is invalid: must be a "
                              "positive angle [rad]")
         protocol, options = "0.001rad", {"deflection_angle": args.deflection_rad}
-    bending = bending_stiffness(design, protocol, **options)
-    snap = snap_through(design)
+    bending = bending_stiffness(design, protocol, parameters=parameters, **options)
+    snap = snap_through(design, parameters=parameters)
     result = {
         "design": {"n": design.n, "lam": design.lam, "Lc": design.Lc, "R": design.R},
+        "kf": parameters.kf,
         "protocol": protocol if args.deflection_rad is None else f"{args.deflection_rad:g} rad",
         "K_ext": bending.extended.stiffness, "K_con": bending.contracted.stiffness,
         "ratio": bending.ratio, "snap_force": finite_or_none(snap.snap_force),
@@ -80,7 +84,8 @@ def run(args) -> int:
         from kresling.view import view_bending, write_html
 
         write_html(view_bending(design, protocol if args.deflection_rad is None else "0.001rad",
-                                max_frames=args.view_frames, **options), args.view)
+                                max_frames=args.view_frames, parameters=parameters, **options),
+                   args.view)
     for name, run_result in (("extended", bending.extended), ("contracted", bending.contracted),
                              ("snap-through", snap)):
         if not run_result.completed:

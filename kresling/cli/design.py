@@ -63,3 +63,21 @@ def run(args) -> int:
         print_table([(k, quantities[k], unit, meaning) for k, unit, meaning in _ROWS],
                     ("quantity", "value", "unit", "meaning"))
     return 0
+
+
+def add_stiffness_argument(parser) -> None:
+    """``--kf``: the crease stiffness the specimen's elements scale with."""
+    parser.add_argument("--kf", type=float, default=0.047, metavar="N/RAD",
+                        help="crease stiffness per unit length [N/rad] (default 0.047, the "
+                             "thesis's); the bars and the other hinges keep their ratios to it")
+
+
+def specimen_parameters_from_args(args):
+    """The specimen's stiffnesses from ``--kf`` (the thesis's ratios to it)."""
+    import math
+
+    from kresling.model import SpecimenParameters
+
+    if not (math.isfinite(args.kf) and args.kf > 0):
+        raise ValueError(f"--kf = {args.kf!r} is invalid: must be a finite stiffness > 0 [N/rad]")
+    return SpecimenParameters(kf=args.kf)

@@ -6,7 +6,8 @@ import sys
 
 from kresling.cli._output import print_json, print_table
 from kresling.cli.bend import finite_or_none
-from kresling.cli.design import add_design_arguments, design_from_args
+from kresling.cli.design import (add_design_arguments, add_stiffness_argument, design_from_args,
+                                 specimen_parameters_from_args)
 
 # (key, unit, meaning) in the order the table prints them.
 _ROWS = (
@@ -32,6 +33,7 @@ def register(subparsers) -> None:
                     "snap force, the energy barrier and whether the model is bistable.",
     )
     add_design_arguments(parser)
+    add_stiffness_argument(parser)
     parser.add_argument("--steps", type=int, default=100,
                         help="displacement increments (default 100)")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
@@ -51,9 +53,11 @@ def run(args) -> int:
         from kresling.view import check_writable
 
         check_writable(args.view)   # before the run, not after
-    result = snap_through(design, steps=args.steps)
+    parameters = specimen_parameters_from_args(args)
+    result = snap_through(design, steps=args.steps, parameters=parameters)
     summary = {key: finite_or_none(value) for key, value in result.summary().items()}
     summary["design"] = {"n": design.n, "lam": design.lam, "Lc": design.Lc, "R": design.R}
+    summary["kf"] = parameters.kf
     if args.json:
         print_json(summary)
     else:
@@ -70,7 +74,8 @@ def run(args) -> int:
     if args.view:
         from kresling.view import view_snap_through, write_html
 
-        write_html(view_snap_through(design, steps=args.steps, result=result), args.view)
+        write_html(view_snap_through(design, steps=args.steps, result=result,
+                                     parameters=parameters), args.view)
     if not result.completed:
         print(f"kresling snap: warning: the run stopped early: {result.message}", file=sys.stderr)
         return 1
