@@ -103,6 +103,65 @@ def as_float_array(name: str, values) -> np.ndarray:
                          f"numbers ({error})") from None
 
 
+def as_index_lists(name: str, values) -> list:
+    """Lists of integer indices, e.g. panels (the vertex indices around each face): a
+    ValueError naming the entry for anything else (text, None, 1.5, True)."""
+    def listlike(value):
+        return not isinstance(value, (str, bytes, dict)) and hasattr(value, "__iter__")
+
+    if not listlike(values):
+        raise ValueError(f"{name} = {show(values)} is invalid: must be a list of lists of "
+                         "indices")
+    out = []
+    for i, item in enumerate(values):
+        if not listlike(item):
+            raise ValueError(f"{name}[{i}] = {show(item)} is invalid: must be a list of indices")
+        out.append([as_integer(f"{name}[{i}][{k}]", v) for k, v in enumerate(item)])
+    return out
+
+
+def as_mask(name: str, value) -> np.ndarray:
+    """A boolean array from bools or 0/1 (NaN, 0.5 or 2 are not a support flag)."""
+    try:
+        array = np.asarray(value)
+    except (TypeError, ValueError) as error:
+        raise ValueError(f"{name} is invalid: must be an array of booleans ({error})") from None
+    if array.dtype == bool:
+        return array
+    if not np.issubdtype(array.dtype, np.number) or \
+            np.issubdtype(array.dtype, np.complexfloating) or \
+            not np.isin(array, (0, 1)).all():
+        raise ValueError(f"{name} is invalid: must be booleans (or 0/1), got {show(value)}")
+    return array.astype(bool)
+
+
+def as_list(name: str, value, what: str) -> list:
+    """``value`` as a list, if it is a sequence (not text, a dict or a scalar)."""
+    if isinstance(value, (str, bytes, dict)) or not hasattr(value, "__iter__"):
+        raise ValueError(f"{name} = {show(value)} is invalid: must be a list of {what}")
+    return list(value)
+
+
+def as_choice(name: str, value, choices):
+    """``value`` if it is one of ``choices`` (strings); else a ValueError listing them (an
+    unhashable value is just another wrong one)."""
+    if not isinstance(value, str) or value not in choices:
+        raise ValueError(f"{name} = {show(value)} is invalid: must be one of {sorted(choices)}")
+    return value
+
+
+def as_points(name: str, values, dimension: int = 3) -> np.ndarray:
+    """An (N, dimension) array of finite coordinates."""
+    array = as_float_array(name, values)
+    if array.ndim != 2 or array.shape[1] != dimension:
+        raise ValueError(f"{name} has shape {array.shape}: must be (N, {dimension})")
+    if not np.isfinite(array).all():
+        row, column = (int(i) for i in np.argwhere(~np.isfinite(array))[0])
+        raise ValueError(f"{name}[{row}, {column}] = {array[row, column]!r} is invalid: must be "
+                         "a finite coordinate")
+    return np.ascontiguousarray(array)
+
+
 def _float(name: str, value, allowed: str) -> float:
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         raise ValueError(f"{name} = {show(value)} is invalid: must be {allowed}")

@@ -64,16 +64,27 @@ def assemble(model, u=None, *, stiffness=True, shift=0.0) -> Assembly:
         Also assemble the tangent.
     shift : float, default 0
         Added to the tangent's diagonal (MERLIN2's solvers use 1e-8).
+
+    Raises
+    ------
+    ValueError
+        For a ``u`` of the wrong size or with NaN, or one where the energy or force is not
+        finite (a degenerate element, a hinge folded flat, an overflow): never a silent NaN.
     """
     u = _displacement(model, u)
     eb, eh, force, K = _core.solvers.assemble(model._core, u, as_finite_real("shift", shift),
                                               as_bool("stiffness", stiffness))
+    force = np.asarray(force)
+    if not (np.isfinite(eb) and np.isfinite(eh) and np.isfinite(force).all()):
+        raise ValueError("u is invalid: the energy or the internal force is not finite there (an "
+                         "element degenerated, a hinge folded flat, or the displacement is "
+                         "beyond what a float holds)")
     matrix = None
     if K is not None:
         data, indices, indptr, shape = K
         matrix = sp.csc_matrix((np.asarray(data), np.asarray(indices), np.asarray(indptr)),
                                shape=tuple(shape))
-    return Assembly(eb, eh, np.asarray(force), matrix)
+    return Assembly(eb, eh, force, matrix)
 
 
 def tangent_stiffness(model, u=None, *, shift=0.0) -> sp.csc_matrix:

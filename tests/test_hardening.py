@@ -120,14 +120,36 @@ def test_linear_bending_at_lc_zero_names_lc():
     assert math.isfinite(linear_bending_stiffness(Design(8, 0.8, 0.0), "extended"))
 
 
-def test_nearly_flat_snap_through_stops_before_the_flat_state():
-    # Lc far below rounding of R: the drive's last state is flat to working precision; the
-    # hinge law is infinite there, so the path stops before it and says why (no 1e13 N).
-    from kresling.analyses import snap_through
-    r = snap_through(Design(4, 0.6, 1e-300))
-    assert not r.completed and "not finite" in r.message
-    assert np.isfinite(r.force).all() and np.abs(r.force).max() < 1e6
-    assert math.isnan(r.snap_force)
+def test_nearly_flat_cells_are_refused_by_the_tests():
+    # Psi below 1e-6 rad is not resolved by the model's hinge angles (MERLIN2's arccosine):
+    # its forces there were noise of any size (a 2.5e12 N "snap force" at Lc = 2e-311).
+    from kresling.analyses import bending_test, snap_through
+    for design, name in ((Design(4, 0.6, 1e-300), "Lc"), (Design(4, 0.6, 1e-6), "Lc"),
+                         (Design(3, 0.5 + 2**-52, 2.2e-311, 67.0), "Lc")):
+        with pytest.raises(ValueError, match=rf"^{name} = .* is invalid: must be > 0 for the "
+                                             r"snap-through test, and large enough that the "
+                                             r"contracted cell is not flat"):
+            snap_through(design)
+    with pytest.raises(ValueError, match=r"^lam = 0.5000000000000002\d* is invalid: must be further "
+                                         r"from 0.5 for the bending test in the extended state"):
+        bending_test(Design(4, 0.5 + 2**-52, 0.0), "extended")
+    assert math.isfinite(snap_through(Design(4, 0.6, 1e-3)).force[-1])
+
+
+def test_a_path_driven_flat_stops_before_the_flat_state():
+    # The enhanced linear law is infinite at a hinge folded flat: the path keeps only finite
+    # steps and says why it stopped (it ended "completed" on a -3.9e14 N force).
+    design = Design(4, 0.6, 0.0)
+    specimen = kresling_specimen(design, [1])
+    fixed = np.zeros((specimen.model.num_nodes, 3), dtype=bool)
+    fixed[specimen.level_nodes(0)] = True
+    prescribed = np.zeros(fixed.shape)
+    prescribed[specimen.level_nodes(1), 2] = -design.Le
+    path = solve_displacement_control(specimen.model.replace(fixed=fixed), prescribed, 100,
+                                      extrapolation=2)
+    assert not path.completed and "not finite" in path.message
+    assert np.isfinite(path.constraint_force).all()
+    assert np.abs(path.constraint_force).max() < 1e6
 
 
 def test_random_designs_never_report_absurd_snap_forces():
@@ -137,7 +159,11 @@ def test_random_designs_never_report_absurd_snap_forces():
         d = Design(int(rng.integers(3, 13)), rng.uniform(0.51, 0.99),
                    float(rng.choice([1e-9, rng.uniform(0, 1), rng.uniform(0, 100)])),
                    float(10 ** rng.uniform(-1, 3)))
-        r = snap_through(d)
+        try:
+            r = snap_through(d)
+        except ValueError as error:
+            assert str(error).startswith(("Lc = ", "lam = ")), error
+            continue
         assert np.isfinite(r.force).all()
         assert math.isnan(r.snap_force) or abs(r.snap_force) < 1e6, d
 
@@ -402,7 +428,10 @@ def test_a_killed_process_sweep_leaves_no_workers(tmp_path):
     from kresling.sweeps.executors import make_executor
     handle = make_executor("processes", 2)
     futures = [handle.executor.submit(time.sleep, 30) for _ in range(2)]
-    time.sleep(1.0)
+    deadline = time.perf_counter() + 60  # spawned workers take a moment to start
+    while not all(f.running() for f in futures) and time.perf_counter() < deadline:
+        time.sleep(0.05)
+    time.sleep(0.5)
     processes = list(handle.executor._processes.values())
     assert processes and all(p.is_alive() for p in processes)
     start = time.perf_counter()

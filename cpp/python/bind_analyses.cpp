@@ -153,6 +153,7 @@ void bind_analyses(py::module_& m) {
       py::arg("design"), py::arg("state"), py::arg("cells"), py::arg("deflection"),
       py::arg("deflection_angle"), py::arg("steps"),
       "The bending test's checks of its inputs; returns the imposed motion [mm].");
+  m.attr("MAX_SPECIMEN_NODES") = model::kMaxSpecimenNodes;
   m.def("check_snap_design", &analyses::check_snap_design, py::arg("design"));
   m.def("check_bending_state", &analyses::check_bending_state, py::arg("design"),
         py::arg("state"));

@@ -14,9 +14,12 @@
 #include "kresling/analyses/snap_through.hpp"
 #include "kresling/core/check.hpp"
 #include "kresling/core/interrupt.hpp"
+#include "kresling/elements/dihedral.hpp"
 #include "kresling/elements/spring_laws.hpp"
 #include "kresling/geometry/design.hpp"
+#include "kresling/model/calibration.hpp"
 #include "kresling/model/kresling_specimen.hpp"
+#include "kresling/model/panel_elements.hpp"
 #include "kresling/solvers/displacement_control.hpp"
 #include "kresling/solvers/force_control.hpp"
 #include "kresling/solvers/increments.hpp"
@@ -225,4 +228,47 @@ TEST(Hardening, LongLoopsCallTheInterruptCheck) {
   EXPECT_EQ(g_checks, 1);
   set_interrupt_check(nullptr);
   EXPECT_TRUE(solvers::solve_displacement_control(c.specimen.model, c.prescribed, 10).completed);
+}
+
+// A hinge folded flat on the 2 pi side: 2 pi - theta rounded to 2 pi itself, an angle the
+// model refuses (a specimen of Design(3, 0.75, 6e-8) failed to build).
+TEST(Hardening, FlatHingeAnglesStayBelowTwoPi) {
+  const Vector3 a(0, 0, 0), b(1, 0, 0), c(0.5, 1, 0), d(0.5, 1, -1e-17);
+  const double theta = elements::dihedral_angle(a, b, c, d);
+  EXPECT_GE(theta, 0.0);
+  EXPECT_LT(theta, 2 * kPi);
+  EXPECT_NO_THROW(model::build_kresling_specimen(Design(3, 30.0, 0.75, 5.960464477539063e-08),
+                                                 {0}, {1}));
+}
+
+// Cells flat to within the model's resolution (Psi < 1e-6 rad) are refused by the tests,
+// naming Lc (contracted) or lam (extended): their forces were noise (2.5e12 N spikes).
+TEST(Hardening, NearlyFlatCellsAreRefusedByTheTests) {
+  EXPECT_EQ(invalid_message([] { analyses::snap_through(Design(3, 67.0, 0.5 + 1e-16, 2.2e-311)); })
+                .rfind("Lc = 2.2e-311 is invalid: must be > 0 for the snap-through test, and "
+                       "large enough that the contracted cell is not flat",
+                       0),
+            0u);
+  EXPECT_EQ(invalid_message([] { analyses::check_bending_state(Design(4, 30.0, 0.5 + 1e-16, 0.0), 1); })
+                .rfind("lam = ", 0),
+            0u);
+  EXPECT_NO_THROW(analyses::check_snap_design(Design(4, 30.0, 0.6, 1e-3)));
+}
+
+// MERLIN2's quad calibration gives the spokes zero area at nu = 0: the error names the
+// Poisson ratio, not a bar of zero area the model cannot explain.
+TEST(Hardening, CalibrationWithZeroAreaNamesThePoissonRatio) {
+  NodeMatrix X(4, 3);
+  X << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+  const std::vector<std::vector<Index>> panels = {{0, 1, 2, 3}};
+  const auto elements = model::build_panel_elements(X, panels, model::PanelSplit::N5B8);
+  model::SheetMaterial material;
+  material.youngs_modulus = 1.0;
+  material.thickness = 1.0;
+  material.poisson_ratio = 0.0;
+  EXPECT_EQ(invalid_message([&] { model::calibrate_sheet(elements, panels, material, false); })
+                .rfind("poisson_ratio = 0 is invalid for this pattern", 0),
+            0u);
+  material.poisson_ratio = 0.3;
+  EXPECT_NO_THROW(model::calibrate_sheet(elements, panels, material, false));
 }

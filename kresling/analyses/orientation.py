@@ -21,7 +21,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling.analyses.linear_bending import LinearBendingTester
-from kresling.geometry import Design
+from kresling._validation import as_float_array, as_finite_real, as_integer
+from kresling.geometry import Design, as_design
 
 __all__ = ["OrientationStudy", "orientation_study"]
 
@@ -73,6 +74,7 @@ def orientation_study(design: Design, angles=None, *, points: int = 25, pin_offs
     angles : array_like, optional
         Bending axis angles [rad]; default ``points`` angles over one period, ``[0, 2 pi/n]``.
     points : int, default 25
+        1 to 10 000 (so many angles at most, given or not).
     pin_offset : float, default 0
         Turn of the pin line relative to the load [rad].
     parameters : SpecimenParameters, optional
@@ -88,11 +90,16 @@ def orientation_study(design: Design, angles=None, *, points: int = 25, pin_offs
     >>> study.variation() < 1e-3
     True
     """
+    design = as_design(design)
     if angles is None:
-        angles = np.linspace(0.0, 2 * math.pi / design.n, points)
-    angles = np.asarray(angles, dtype=float).ravel()
+        angles = np.linspace(0.0, 2 * math.pi / design.n,
+                             as_integer("points", points, minimum=1, maximum=10_000))
+    angles = as_float_array("angles", angles).ravel()
+    if angles.size > 10_000:
+        raise ValueError(f"angles has {angles.size} entries: must have at most 10000")
     tester = LinearBendingTester(design.n, parameters=parameters)
     stiffness = {state: np.array([tester.run(design, state, angle=a, pin_offset=pin_offset)
                                   for a in angles]) for state in (0, 1)}
     return OrientationStudy(design=design, angles=angles, extended=stiffness[1],
-                            contracted=stiffness[0], pin_offset=float(pin_offset))
+                            contracted=stiffness[0],
+                            pin_offset=as_finite_real("pin_offset", pin_offset))

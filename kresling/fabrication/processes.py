@@ -18,6 +18,7 @@ from typing import ClassVar
 
 import numpy as np
 
+from kresling._validation import show
 from kresling.fabrication._checks import cut_path_count, non_negative, positive
 from kresling.fabrication.layers import CutLayer, CutPath, CutSheet
 from kresling.fabrication.pattern import CreasePattern
@@ -223,8 +224,9 @@ def make_process(process, **parameters):
             raise ValueError(f"parameters {sorted(parameters)} given with a {process.name} "
                              "process instance: set them on the instance")
         return process
-    if process not in PROCESSES:
-        raise ValueError(f"process = {process!r} is invalid: must be one of {sorted(PROCESSES)}")
+    if not isinstance(process, str) or process not in PROCESSES:
+        raise ValueError(f"process = {show(process)} is invalid: must be one of "
+                         f"{sorted(PROCESSES)} (or a Paper or Laminate instance)")
     kind = PROCESSES[process]
     allowed = [f.name for f in fields(kind)]
     unknown = sorted(set(parameters) - set(allowed))

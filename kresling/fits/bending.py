@@ -161,6 +161,10 @@ def fit_bending_trial(trial: BendingTrial, *, method: str = "intercept",
             K, intercept = slope_through_origin(angle[used], moment[used]), 0.0
         else:
             K, intercept = fit_line(angle[used], moment[used], "angle")
+        if not (np.isfinite(K) and np.isfinite(intercept)):
+            raise ValueError(f"the fitted K_B = {K!r} is not finite: the values are too large "
+                             f"for the fit's sums (force up to {np.abs(trial.force).max():.3g} "
+                             f"N, displacement up to {np.abs(trial.displacement).max():.3g} mm)")
     except ValueError as error:
         raise ValueError(f"{label}: {error}") from None
     return BendingTrialFit(state, K, intercept, method, float(offset), int(used.sum()),

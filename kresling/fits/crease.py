@@ -209,6 +209,10 @@ def fit_crease_run(run: CreaseRun) -> CreaseRunFit:
         raise ValueError(f"{label}: {error}") from None
     d = float(lever_arm(run.Lp, beta1))
     k = float(stiffness_per_length(F1, F2, beta1, beta2, d, run.W))
+    if not math.isfinite(k):
+        raise ValueError(f"{label}: the crease stiffness k = {k!r} N/rad is not finite: the "
+                         f"values are too large for eqns 17-19 (F1 = {F1:.3g} N, F2 = {F2:.3g} "
+                         f"N, Lp = {run.Lp:.3g} mm, W = {run.W:.3g} mm)")
     if k <= 0:
         logger.warning("%s: k = %.4g N/rad is not positive (F2 - F1 = %.4g N, d = %.4g mm): "
                        "check the sign of force and displacement", label, k, F2 - F1, d)

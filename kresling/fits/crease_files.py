@@ -70,7 +70,10 @@ def _record_path(listing: Path, name: str, table, row) -> Path:
     records shipped beside it."""
     relative = Path(name)
     folder = listing.resolve().parent
-    resolved = (folder / relative).resolve()
+    try:
+        resolved = (folder / relative).resolve()
+    except (ValueError, OSError) as error:  # a NUL byte, a symlink loop
+        raise table.error(row, "record", f"{name!r} is not a file name ({error})") from None
     if relative.is_absolute() or (resolved != folder and folder not in resolved.parents):
         raise table.error(row, "record", f"{name!r} is invalid: must be a file in the list's "
                           f"folder {str(folder)!r} or below it (a relative path without '..')")

@@ -230,8 +230,13 @@ def _as_list(values, fail: Fail) -> list:
 
 
 def is_number(value) -> bool:
-    """A real number, not a bool (JSON ``true`` is not a coordinate)."""
-    return isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
+    """A real number a float can hold, not a bool (JSON ``true`` is not a coordinate, nor is
+    a 400-digit integer: float() of it overflows)."""
+    if not isinstance(value, numbers.Real) or isinstance(value, (bool, np.bool_)):
+        return False
+    if isinstance(value, numbers.Integral):
+        return abs(int(value)) < 2**1024
+    return True
 
 
 def is_integer(value) -> bool:
@@ -247,7 +252,7 @@ def _as_coordinates(values, name: str, *, count: int | None = None) -> np.ndarra
     """(N, 3) float64 copy of 2D or 3D coordinates given in memory."""
     try:
         array = np.array(values, dtype=np.float64)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):  # text, ragged rows, 10**400
         array = None
     rows = "N" if count is None else str(count)
     if array is None or array.ndim != 2 or array.shape[1] not in (2, 3) or (

@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from kresling import _core
-from kresling._validation import as_integer, as_real
+from kresling._validation import as_float_array, as_integer, as_real
 
 __all__ = ["arc_from_tendons", "tendons_from_arc", "tendon_angles"]
 
@@ -22,7 +22,7 @@ def tendon_angles() -> np.ndarray:
 
 
 def _rows(values, name: str) -> tuple[np.ndarray, bool]:
-    array = np.asarray(values, dtype=float)
+    array = as_float_array(name, values)
     if array.shape == (3,):
         return array[None, :], True
     if array.ndim != 2 or array.shape[1] != 3:

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling import _core
+from kresling._validation import as_float_array
 from kresling.manipulator.model import Manipulator, configuration_name
 
 __all__ = ["ChainState", "forward_kinematics", "flexible_tendon_rows", "to_plot_plane",
@@ -49,7 +50,7 @@ def flexible_tendon_rows(configuration, tendon_lengths) -> np.ndarray:
             raise ValueError(f"tendon_lengths are required: configuration "
                              f"{configuration_name(configuration)} has {f} flexible module(s)")
         return np.zeros((0, 3))
-    lengths = np.asarray(tendon_lengths, dtype=float)
+    lengths = as_float_array("tendon_lengths", tendon_lengths)
     if lengths.shape == (3,):
         return np.tile(lengths, (f, 1))
     if lengths.shape == (f, 3):

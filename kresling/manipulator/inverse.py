@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kresling import _core
-from kresling._validation import as_real
+from kresling._validation import as_float_array, as_integer, as_list, as_real, show
 from kresling.manipulator.model import Manipulator, configuration_name
 
 __all__ = ["InverseKinematicsResult", "inverse_kinematics", "solve_configuration"]
@@ -84,11 +84,15 @@ def solve_configuration(model: Manipulator, configuration, targets, *, tolerance
         ``iterations`` (n,), ``converged`` (n,).
     """
     configuration = model.configuration(configuration)
-    targets = np.atleast_2d(np.asarray(targets, dtype=float))
+    targets = np.atleast_2d(as_float_array("targets", targets))
+    if targets.ndim != 2 or targets.shape[1] != 3 or not np.isfinite(targets).all():
+        raise ValueError(f"targets = {show(targets.tolist())} is invalid: must be finite points "
+                         "of shape (3,) or (n, 3) [mm]")
     lower, upper = model.tendon_bounds
     return _core.kinematics.solve_inverse_kinematics(
         model._chain, configuration, targets, lower, upper, as_real("tolerance", tolerance),
-        int(max_iterations), 1.0, int(grid_points), int(starts))
+        as_integer("max_iterations", max_iterations), 1.0,
+        as_integer("grid_points", grid_points), as_integer("starts", starts))
 
 
 def inverse_kinematics(model: Manipulator, target, *, configurations=None,
@@ -123,12 +127,16 @@ def inverse_kinematics(model: Manipulator, target, *, configurations=None,
     >>> far.reachable, configuration_name(far.configuration), far.position.round(2).tolist()
     (False, '111', [0.0, 0.0, 334.92])
     """
-    target = np.asarray(target, dtype=float)
+    target = as_float_array("target", target)
     if target.shape != (3,) or not np.isfinite(target).all():
-        raise ValueError(f"target = {target.tolist()!r} is invalid: must be 3 finite numbers (mm)")
+        raise ValueError(f"target = {show(target.tolist())} is invalid: must be 3 finite numbers "
+                         "(mm)")
     tolerance = as_real("tolerance", tolerance)
     if configurations is None:
         configurations = model.configurations
+    configurations = as_list("configurations", configurations, "configurations (e.g. '101')")
+    if not configurations:
+        raise ValueError("configurations is empty: name at least one (e.g. '101')")
     rest = model.rest_tendon_length
     candidates, ranked = {}, []
     for configuration in (model.configuration(c) for c in configurations):

@@ -155,9 +155,14 @@ def parse_configuration(value, modules: int | None = None) -> tuple:
             raise ValueError(f"configuration = {value!r} is invalid: must be {allowed}, e.g. '101'")
         states = tuple(int(c) for c in digits)
     else:
-        array = np.asarray(value)
-        if array.ndim != 1 or array.size == 0 or not np.isin(array, (0, 1)).all() or array.dtype == bool:
-            raise ValueError(f"configuration = {value!r} is invalid: must be {allowed}")
+        try:
+            array = np.asarray(value)
+            ok = (array.ndim == 1 and array.size > 0 and array.dtype != bool
+                  and np.isin(array, (0, 1)).all())
+        except (TypeError, ValueError):  # ragged or unhashable entries
+            ok = False
+        if not ok:
+            raise ValueError(f"configuration = {show(value)} is invalid: must be {allowed}")
         states = tuple(int(v) for v in array)
     if modules is not None and len(states) != modules:
         raise ValueError(f"configuration = {value!r} is invalid: must have {modules} entries "
@@ -170,7 +175,22 @@ def configuration_name(configuration) -> str:
     return "".join(str(int(s)) for s in configuration)
 
 
+#: Most modules whose ``2**modules`` configurations are listed (65536); a longer arm's
+#: searches (inverse kinematics, workspaces) take the configurations to consider instead.
+MAX_LISTED_MODULES = 16
+
+
 def all_configurations(modules: int) -> list:
-    """Every configuration of ``modules`` modules in binary order (000, 001, ..., 111)."""
+    """Every configuration of ``modules`` modules in binary order (000, 001, ..., 111).
+
+    Raises
+    ------
+    ValueError
+        For ``modules`` < 1 or above :data:`MAX_LISTED_MODULES` (2**modules entries).
+    """
     modules = as_integer("modules", modules, minimum=1)
+    if modules > MAX_LISTED_MODULES:
+        raise ValueError(f"modules = {modules} is invalid for listing every configuration "
+                         f"(2**{modules} of them): must be <= {MAX_LISTED_MODULES}; name the "
+                         "configurations to consider instead")
     return [tuple(c) for c in itertools.product((0, 1), repeat=modules)]

@@ -19,6 +19,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from kresling._validation import as_finite_real, as_integer
+from kresling.manipulator.constant_curvature import arc_from_tendons
 from kresling.manipulator.forward import flexible_tendon_rows
 from kresling.manipulator.model import Manipulator
 
@@ -51,9 +53,12 @@ class TendonDrive:
     sign: int = -1
 
     def __post_init__(self):
-        if not (math.isfinite(self.pulley_diameter) and self.pulley_diameter > 0):
+        if not as_finite_real("pulley_diameter", self.pulley_diameter) > 0:
             raise ValueError(f"pulley_diameter = {self.pulley_diameter!r} is invalid: must be > 0 (mm)")
-        if sorted(self.motor_of_tendon) != [1, 2, 3]:
+        as_integer("pulses_per_revolution", self.pulses_per_revolution, minimum=1)
+        as_integer("quadrature", self.quadrature, minimum=1)
+        if not isinstance(self.motor_of_tendon, (tuple, list)) or sorted(
+                as_integer("motor_of_tendon", m) for m in self.motor_of_tendon) != [1, 2, 3]:
             raise ValueError(f"motor_of_tendon = {self.motor_of_tendon!r} is invalid: "
                              "must be a permutation of (1, 2, 3)")
         if self.sign not in (-1, 1):
@@ -79,6 +84,8 @@ class TendonDrive:
         """
         configuration = model.configuration(configuration)
         rows = flexible_tendon_rows(configuration, tendon_lengths)
+        if len(rows):  # lengths the modules can take (an arc realises them), as the chain's
+            arc_from_tendons(rows, model.tendon_radius, model.segments)
         return (model.rest_tendon_length - rows).sum(axis=0)
 
     def motor_counts(self, model: Manipulator, configuration, tendon_lengths) -> np.ndarray:

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling import _core
+from kresling._validation import as_finite_real, as_float_array, show
 from kresling.manipulator.forward import MarkerViews, forward_kinematics
 from kresling.manipulator.model import Manipulator
 
@@ -40,8 +41,14 @@ def protocol_tendon_lengths(k, rest_length: float = 30.0) -> np.ndarray:
     ndarray, shape (3,) or (n, 3)
         ``(rest - 2k, rest + k, rest + k)``.
     """
-    k = np.asarray(k, dtype=float)
-    return np.stack([rest_length - 2 * k, rest_length + k, rest_length + k], axis=-1)
+    k = as_float_array("k", k)
+    rest_length = as_finite_real("rest_length", rest_length)
+    with np.errstate(over="ignore"):
+        lengths = np.stack([rest_length - 2 * k, rest_length + k, rest_length + k], axis=-1)
+    if not np.isfinite(lengths).all():
+        raise ValueError(f"k = {show(k.tolist())} is invalid: must be finite numbers whose "
+                         f"tendon lengths rest_length - 2 k, rest_length + k are finite [mm]")
+    return lengths
 
 
 @dataclass(frozen=True)
@@ -99,7 +106,7 @@ def pseudo_linkage(model: Manipulator, configuration, steps=THESIS_STEPS) -> Pro
         realises the lengths.
     """
     configuration = model.configuration(configuration)
-    steps = np.atleast_1d(np.asarray(steps, dtype=float))
+    steps = np.atleast_1d(as_float_array("steps", steps))
     lengths = np.atleast_2d(protocol_tendon_lengths(steps, model.rest_tendon_length))
     markers = _core.kinematics.markers_of_identical_modules(model._chain, configuration, lengths)
     return ProtocolRun(configuration, steps, lengths, markers)

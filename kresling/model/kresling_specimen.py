@@ -11,7 +11,9 @@ from dataclasses import dataclass, field, fields
 import numpy as np
 
 from kresling import _core
-from kresling.geometry import Design, state_index
+from kresling._validation import (as_bool, as_choice, as_float_array, as_integer, as_list,
+                                  as_mask, as_real, show)
+from kresling.geometry import Design, as_design, state_index
 from kresling.model.model import BAR_LAWS, Model
 
 __all__ = ["SpecimenParameters", "KreslingSpecimen", "kresling_specimen", "EDGE_FAMILIES",
@@ -59,10 +61,15 @@ class SpecimenParameters:
     duplicate_shared_edges: bool = True
 
     def __post_init__(self):
-        if self.bar_law not in BAR_LAWS:
-            raise ValueError(f"bar_law = {self.bar_law!r} is invalid: must be one of {sorted(BAR_LAWS)}")
-        if len(self.fold_limits) != 2:
-            raise ValueError(f"fold_limits = {self.fold_limits!r} is invalid: must be two angles [rad]")
+        as_choice("bar_law", self.bar_law, BAR_LAWS)
+        limits = as_float_array("fold_limits", self.fold_limits)
+        if limits.shape != (2,):
+            raise ValueError(f"fold_limits = {show(self.fold_limits)} is invalid: must be two "
+                             "angles [rad]")
+        for f in fields(self):  # types here; ranges in the core
+            if f.name not in ("fold_limits", "bar_law", "duplicate_shared_edges"):
+                as_real(f.name, getattr(self, f.name))
+        as_bool("duplicate_shared_edges", self.duplicate_shared_edges)
 
     def to_core(self):
         """The C++ parameters object (values are range-checked there)."""
@@ -170,18 +177,21 @@ def kresling_specimen(design: Design, states, chirality=None, parameters=None,
     >>> round(float(s.level_height[-1]), 3)   # the extended module
     111.639
     """
-    if isinstance(states, (str, int)):
-        raise ValueError(f"states = {states!r} is invalid: must be a list with one state per cell")
-    states = tuple(state_index(s) for s in states)
+    design = as_design(design)
+    states = tuple(state_index(s) for s in as_list("states", states, "states, one per cell"))
     if chirality is None:
         chirality = alternating_chirality(len(states))
-    chirality = tuple(int(c) for c in chirality)
+    chirality = tuple(as_integer(f"chirality[{i}]", c) for i, c in
+                      enumerate(as_list("chirality", chirality, "+1 or -1, one per cell")))
     parameters = parameters or SpecimenParameters()
+    if not isinstance(parameters, SpecimenParameters):
+        raise ValueError(f"parameters = {show(parameters)} is invalid: must be a "
+                         "SpecimenParameters")
     num_nodes = (len(states) + 1) * (design.n + 1)
     if fixed is None:
-        mask = np.zeros(3 * num_nodes, dtype=np.uint8)
-    else:
-        mask = np.asarray(fixed, dtype=bool)
+        mask = np.zeros(0, dtype=np.uint8)  # the core's default: nothing held (no allocation
+    else:                                   # here before it checks the specimen's size)
+        mask = as_mask("fixed", fixed)
         if mask.shape != (num_nodes, 3):
             raise ValueError(f"fixed has shape {mask.shape}: must be ({num_nodes}, 3)")
         mask = mask.astype(np.uint8).ravel()

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from kresling import _core
-from kresling._validation import (as_float_array, as_integer, as_integer_array,
+from kresling._validation import (as_float_array, as_integer, as_integer_array, as_mask,
                                   show)
 # The law tables live in kresling.laws (the element kernels name laws too); these names
 # stay importable from here and from kresling.model.
@@ -45,21 +45,6 @@ def _index_rows(name, value, width):
         raise ValueError(f"{name} has {array.size} entries: must be rows of {width} node "
                          "indices")
     return np.ascontiguousarray(array.reshape(-1, width))
-
-
-def _mask(name, value):
-    """A boolean array from bools or 0/1 (NaN, 0.5 or 2 are not a support flag)."""
-    try:
-        array = np.asarray(value)
-    except (TypeError, ValueError) as error:
-        raise ValueError(f"{name} is invalid: must be an array of booleans ({error})") from None
-    if array.dtype == bool:
-        return array
-    if not np.issubdtype(array.dtype, np.number) or \
-            np.issubdtype(array.dtype, np.complexfloating) or \
-            not np.isin(array, (0, 1)).all():
-        raise ValueError(f"{name} is invalid: must be booleans (or 0/1), got {show(value)}")
-    return array.astype(bool)
 
 
 class Model:
@@ -138,7 +123,7 @@ class Model:
             raise ValueError(f"hinge_limits has shape {limits.shape}: must be (2,) or ({nh}, 2)")
         if fixed is None:
             fixed = np.zeros((len(nodes), 3), dtype=bool)
-        fixed = _mask("fixed", fixed)
+        fixed = as_mask("fixed", fixed)
         if fixed.shape != nodes.shape:
             raise ValueError(f"fixed has shape {fixed.shape}: must be {nodes.shape}")
 
@@ -273,6 +258,12 @@ class Model:
             ``bar_strain`` (B,), ``bar_force`` (B,) [N], ``hinge_angle`` (H,) [rad],
             ``hinge_moment`` (H,) [N*mm]; ``cable_length`` (C,) [mm], ``cable_tension`` (C,)
             [N] (0 when slack).
+
+        Raises
+        ------
+        ValueError
+            For a ``u`` of the wrong size or with NaN, or one where an element's state is not
+            finite (a degenerate element, a hinge folded flat, an overflow).
         """
         if u is None:
             u = np.zeros(self.num_dofs)
@@ -283,7 +274,14 @@ class Model:
                                  "node)")
             if not np.isfinite(u).all():
                 raise ValueError("u contains NaN or inf")
-        return {k: np.asarray(v) for k, v in _core.solvers.element_state(self._core, u).items()}
+        state = {k: np.asarray(v) for k, v in _core.solvers.element_state(self._core, u).items()}
+        for key, values in state.items():
+            if values.size and not np.isfinite(values).all():
+                i = int(np.flatnonzero(~np.isfinite(values))[0])
+                raise ValueError(f"u is invalid: the element states are not finite there "
+                                 f"({key}[{i}] = {values[i]!r}: an element degenerated, a hinge "
+                                 "folded flat, or the displacement is beyond what a float holds)")
+        return state
 
     def __repr__(self):
         cables = f"{len(self.cable_nodes)} cables, " if len(self.cable_nodes) else ""

@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from kresling import _core
+from kresling._validation import as_choice, as_index_lists, as_points
 
 __all__ = ["PanelElements", "build_panel_elements", "SPLITS"]
 
@@ -99,15 +100,9 @@ def build_panel_elements(vertices, panels, *, split="N5B8", centre="merlin2") ->
         For an unknown split, or a panel with fewer than 3 vertices, an out-of-range or
         repeated vertex, or degenerate diagonals; the message names the panel.
     """
-    if split not in SPLITS:
-        raise ValueError(f"split = {split!r} is invalid: must be one of {sorted(SPLITS)}")
-    if centre not in CENTRES:
-        raise ValueError(f"centre = {centre!r} is invalid: must be one of {sorted(CENTRES)}")
-    vertices = np.ascontiguousarray(vertices, dtype=float)
-    if vertices.ndim != 2 or vertices.shape[1] != 3:
-        raise ValueError(f"vertices has shape {vertices.shape}: must be (N, 3)")
-    if not np.isfinite(vertices).all():
-        raise ValueError("vertices contains NaN or inf")
-    panels = [[int(v) for v in panel] for panel in panels]
+    as_choice("split", split, SPLITS)
+    as_choice("centre", centre, CENTRES)
+    vertices = as_points("vertices", vertices)
+    panels = as_index_lists("panels", panels)
     core = _core.model.build_panel_elements(vertices, panels, SPLITS[split], CENTRES[centre])
     return PanelElements(core, panels, split)

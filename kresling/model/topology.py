@@ -7,6 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling import _core
+from kresling._validation import as_bool, as_choice, as_index_lists, as_points
 
 _SPLITS = {"N4B5": 0, "N5B8": 1}
 
@@ -61,13 +62,11 @@ def panel_topology(nodes, panels, *, split="N4B5", duplicate_shared_edges=True) 
     -------
     Topology
     """
-    if split not in _SPLITS:
-        raise ValueError(f"split = {split!r} is invalid: must be one of {sorted(_SPLITS)}")
-    nodes = np.ascontiguousarray(nodes, dtype=float)
-    if nodes.ndim != 2 or nodes.shape[1] != 3:
-        raise ValueError(f"nodes has shape {nodes.shape}: must be (N, 3)")
-    panels = [[int(v) for v in panel] for panel in panels]
-    t = _core.model.build_topology(nodes, panels, _SPLITS[split], bool(duplicate_shared_edges))
+    as_choice("split", split, _SPLITS)
+    nodes = as_points("nodes", nodes)
+    panels = as_index_lists("panels", panels)
+    t = _core.model.build_topology(nodes, panels, _SPLITS[split],
+                                   as_bool("duplicate_shared_edges", duplicate_shared_edges))
     return Topology(
         nodes=np.asarray(t["nodes"]),
         triangles=np.asarray(t["triangles"]),

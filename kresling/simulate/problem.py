@@ -224,6 +224,12 @@ def _vector3(t, key, value, allowed=None):
     return tuple(_number(t, key, v) for v in value)
 
 
+def _array_of_tables(t, key, value, allowed=None):
+    if not isinstance(value, list):
+        t.fail(key, f"= {value!r} is invalid: must be an array of tables ([[{key}]] entries)")
+    return value
+
+
 def _limits(t, key, value, allowed=None):
     if not isinstance(value, list) or len(value) != 2:
         t.fail(key, f"= {value!r} is invalid: must be two angles [theta1, theta2] in degrees")
@@ -461,8 +467,8 @@ def load_problem(problem) -> Problem:
     laws = _read_laws(_Table(root.get("laws", lambda t, k, v, a: v, {}), "laws", source, text),
                       isinstance(material, SheetMaterial))
     count = _node_count(pattern, split)
-    supports = _read_supports(root.get("support", lambda t, k, v, a: v, []), source, text, count)
-    loads = _read_loads(root.get("load", lambda t, k, v, a: v, []), source, text, count)
+    supports = _read_supports(root.get("support", _array_of_tables, []), source, text, count)
+    loads = _read_loads(root.get("load", _array_of_tables, []), source, text, count)
     t_analysis = _Table(root.get("analysis", lambda t, k, v, a: v, required=True,
                                  allowed="a table with the method"), "analysis", source, text)
     analysis = _read_analysis(t_analysis, count)

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from kresling._validation import as_float_array, as_integer, as_integer_array, as_real
+from kresling._validation import as_float_array, as_integer, as_integer_array, as_real, show
 from kresling.geometry import Design, design_quantities
 
 __all__ = ["DesignSet", "design_grid", "as_design_set", "THESIS_N", "THESIS_LAM"]
@@ -69,6 +69,12 @@ class DesignSet:
         return digest.hexdigest()
 
 
+#: Points along each axis of a grid, and designs in one sweep, at most (the thesis's study is
+#: 100 x 100 x 4 = 40 000 designs).
+MAX_GRID_SIZE = 10_000
+MAX_DESIGNS = 10_000_000
+
+
 def design_grid(n=THESIS_N, size=100, *, Lc=None, lam=THESIS_LAM, R=30.0) -> DesignSet:
     """An evenly spaced grid over Lc x lambda for each n (the thesis's study by default).
 
@@ -110,7 +116,10 @@ def design_grid(n=THESIS_N, size=100, *, Lc=None, lam=THESIS_LAM, R=30.0) -> Des
         sizes = np.repeat(sizes, 2)
     if len(sizes) != 2:
         raise ValueError(f"size = {size!r} is invalid: must be one or two integers")
-    n_Lc, n_lam = (as_integer("size", s, minimum=1) for s in sizes)
+    n_Lc, n_lam = (as_integer("size", s, minimum=1, maximum=MAX_GRID_SIZE) for s in sizes)
+    if len(ns) * n_Lc * n_lam > MAX_DESIGNS:
+        raise ValueError(f"size = {show(size)} is invalid with {len(ns)} n: the grid would hold "
+                         f"{len(ns) * n_Lc * n_lam} designs; must hold at most {MAX_DESIGNS}")
     R = as_real("R", R)
     Lc = (R / 2, 2 * R) if Lc is None else Lc
     Lc_values = _axis("Lc", Lc, n_Lc)
@@ -124,8 +133,9 @@ def design_grid(n=THESIS_N, size=100, *, Lc=None, lam=THESIS_LAM, R=30.0) -> Des
 def _axis(name, bounds, count) -> np.ndarray:
     try:
         low, high = (as_real(name, v) for v in bounds)
-    except TypeError:
-        raise ValueError(f"{name} = {bounds!r} is invalid: must be a (low, high) pair") from None
+    except (TypeError, ValueError):  # not a pair (None, 3 numbers), or not numbers
+        raise ValueError(f"{name} = {show(bounds)} is invalid: must be a (low, high) pair of "
+                         "numbers") from None
     if not low <= high or (count > 1 and low == high):
         raise ValueError(f"{name} = ({low}, {high}) is invalid: must be an increasing range")
     return np.array([low]) if count == 1 else np.linspace(low, high, count)

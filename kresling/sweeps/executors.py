@@ -18,6 +18,8 @@ from concurrent.futures import Executor, ProcessPoolExecutor, ThreadPoolExecutor
 __all__ = ["ExecutorHandle", "default_workers", "make_executor"]
 
 KINDS = ("threads", "processes")
+#: Most threads or processes a sweep starts on this machine (a cluster may have more).
+MAX_LOCAL_WORKERS = 1024
 
 
 def default_workers() -> int:
@@ -105,6 +107,9 @@ def make_executor(executor, workers) -> ExecutorHandle:
         if kind not in KINDS:
             raise ValueError(f"executor = {executor!r} is invalid: must be one of "
                              f"{', '.join(KINDS)}, or a concurrent.futures.Executor")
+        if workers > MAX_LOCAL_WORKERS:  # a pool of this machine starts that many
+            raise ValueError(f"workers = {workers} is invalid for {kind} on this machine: must "
+                             f"be an integer >= 1 and <= {MAX_LOCAL_WORKERS}")
         return ExecutorHandle(kind, workers)
     if not isinstance(executor, Executor) and callable(getattr(executor, "get_executor", None)):
         executor = executor.get_executor()  # a dask.distributed.Client

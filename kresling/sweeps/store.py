@@ -151,11 +151,13 @@ def _check_same(directory: Path, found: dict, wanted: dict) -> None:
 
 
 def _short(value) -> str:
-    if isinstance(value, dict) and "sha256" in value:  # the designs: say what they are
-        spec = value.get("spec", {})
+    if isinstance(value, dict) and isinstance(value.get("sha256"), str):  # the designs
+        spec = value.get("spec")
+        spec = spec if isinstance(spec, dict) else {}
         if spec.get("kind") == "grid":
-            return (f"{value['count']} designs (grid n {spec['n']}, size {spec['size']}, Lc "
-                    f"{spec['Lc']}, lam {spec['lam']}, R {spec['R']}; {value['sha256'][:8]})")
+            return (f"{value.get('count')} designs (grid n {spec.get('n')}, size "
+                    f"{spec.get('size')}, Lc {spec.get('Lc')}, lam {spec.get('lam')}, R "
+                    f"{spec.get('R')}; {value['sha256'][:8]})")
         return f"{value.get('count')} designs (a list; {value['sha256'][:8]})"
     text = json.dumps(value, sort_keys=True)
     return text if len(text) <= 120 else text[:117] + "..."

@@ -11,6 +11,7 @@ import numpy as np
 from tqdm.auto import tqdm
 
 from kresling import __version__
+from kresling._validation import as_integer
 from kresling.sweeps.designs import DesignSet, as_design_set
 from kresling.sweeps.executors import make_executor
 from kresling.sweeps.metrics import require_even_n, resolve_metrics
@@ -81,6 +82,8 @@ def sweep(designs, metrics=DEFAULT_METRICS, *, workers=None, executor=None, out=
     (15.0, 0.9)
     """
     start = time.perf_counter()
+    if chunk_size is not None:
+        chunk_size = as_integer("chunk_size", chunk_size, minimum=1)
     design_set = as_design_set(designs)
     metrics = resolve_metrics(metrics)
     plan = _plan(metrics, design_set)
@@ -97,7 +100,8 @@ def sweep(designs, metrics=DEFAULT_METRICS, *, workers=None, executor=None, out=
     done = {} if store is None else dict(store.rows)
     loaded = len(done)
     pending = [i for i in range(len(design_set)) if i not in done]
-    size = chunk_size or max(1, min(_MAX_CHUNK, len(pending) // (16 * handle.workers)))
+    size = max(1, min(_MAX_CHUNK, len(pending) // (16 * handle.workers))) \
+        if chunk_size is None else chunk_size
     logger.info("sweep: %d designs (%d on disk), metrics %s, %d %s workers, chunks of %d",
                 len(design_set), loaded, ", ".join(m.name for m in metrics), handle.workers,
                 handle.kind or "executor", size)

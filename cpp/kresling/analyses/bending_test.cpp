@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "kresling/analyses/cell_checks.hpp"
 #include "kresling/core/check.hpp"
 #include "kresling/solvers/limits.hpp"
 
@@ -61,11 +62,11 @@ BendingTest::BendingTest(int n, BendingOptions options)
 
 void check_bending_state(const geometry::Design& design, int state) {
   if (state != 0 && state != 1) throw_invalid("state", state, "0 (contracted) or 1 (extended)");
-  if (state == 0 && !(design.parameters().Lc > 0.0)) {
-    throw_invalid("Lc", design.parameters().Lc,
-                  "> 0 for the bending test in the contracted state: at Lc = 0 the cells fold "
-                  "flat (module length 0, no bending stiffness to measure)");
-  }
+  // At Lc = 0 the contracted cells fold flat (module length 0, no bending stiffness to
+  // measure); nearly flat, their hinge angles are not resolved (cell_checks.hpp).
+  check_not_flat(design, state,
+                 state == 0 ? "the bending test in the contracted state"
+                            : "the bending test in the extended state");
 }
 
 double bending_drive(const geometry::Design& design, int state, const BendingOptions& o) {

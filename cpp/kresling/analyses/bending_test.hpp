@@ -78,9 +78,9 @@ class BendingTest {
 BendingResult bending_test(const geometry::Design& design, int state,
                            const BendingOptions& options = {});
 
-/// Throw std::invalid_argument unless `state` is 0 or 1 and, in the contracted state,
-/// Lc > 0 (a cell folded flat has no module length to bend): the bending tests' (nonlinear
-/// and linearised) check of the design in a state.
+/// Throw std::invalid_argument unless `state` is 0 or 1 and the cells in that state are not
+/// folded flat (check_not_flat: in the contracted state Lc > 0, a cell folded flat has no
+/// module length to bend): the bending tests' (nonlinear and linearised) check.
 void check_bending_state(const geometry::Design& design, int state);
 
 /// The transverse motion of the middle polygon a test with `options` imposes on `design` in

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include "kresling/analyses/cell_checks.hpp"
 #include "kresling/analyses/curve_features.hpp"
 #include "kresling/core/check.hpp"
 #include "kresling/solvers/energy_minimum.hpp"
@@ -47,11 +48,10 @@ std::string mm(double value) { return format_number(std::round(value * 1e3) / 1e
 }  // namespace
 
 void check_snap_design(const geometry::Design& design) {
-  if (!(design.parameters().Lc > 0.0)) {
-    throw_invalid("Lc", design.parameters().Lc,
-                  "> 0 for the snap-through test: at Lc = 0 the drive would end with the cell "
-                  "folded flat, where the hinges' law is infinite");
-  }
+  // The drive runs from the extended state to the contracted one: neither may be flat (at
+  // Lc = 0 it would end with the cell folded flat, where the hinges' law is infinite).
+  check_not_flat(design, 0, "the snap-through test");
+  check_not_flat(design, 1, "the snap-through test");
 }
 
 SnapThroughTest::SnapThroughTest(int n, SnapThroughOptions options)

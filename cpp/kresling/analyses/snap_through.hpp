@@ -87,8 +87,8 @@ struct SnapThroughResult {
 /// patterns and the symbolic factorisations are built once (a sweep runs many designs of one
 /// n through one SnapThroughTest).
 /// Throw std::invalid_argument unless `design` can be driven by the snap-through test:
-/// Lc > 0 (at Lc = 0 the drive ends with the cell folded flat, where the hinge law is
-/// infinite).
+/// neither state folded flat (check_not_flat: Lc > 0, or the drive would end with the cell
+/// folded flat, where the hinge law is infinite; Psi of both states >= 1e-6 rad).
 void check_snap_design(const geometry::Design& design);
 
 class SnapThroughTest {

@@ -22,7 +22,11 @@ double merlin_angle(const Vector3& m, const Vector3& n, const Vector3& r_ac) {
   const double cosine = std::clamp(m.dot(n) / (m.norm() * n.norm()), -1.0, 1.0);
   const double theta = std::acos(cosine);
   const double side = n.dot(r_ac);
-  return (side < -1e-8) ? kTwoPi - theta : theta;
+  if (!(side < -1e-8)) return theta;
+  // 2 pi - theta rounds to 2 pi itself for theta below ~4e-16 (a hinge folded flat, e.g. a
+  // polygon edge of a cell with Lc ~ 1e-8 R): keep the angle in [0, 2 pi) as documented.
+  const double angle = kTwoPi - theta;
+  return angle < kTwoPi ? angle : std::nextafter(kTwoPi, 0.0);
 }
 
 }  // namespace

@@ -46,8 +46,11 @@ TendonDecomposition decompose_tendons(const Eigen::Vector3d& l, const TendonLayo
   // Q = l1^2 + l2^2 + l3^2 - l1 l2 - l2 l3 - l1 l3 = a^2 + b^2: a sum of squares of
   // differences, so it does not cancel near the straight case.
   const double scale = 3.0 * layout.segments * layout.radius;
-  out.y = (out.a * out.a + out.b * out.b) / (scale * scale);
-  if (out.y > 1.0) {
+  // (a^2 + b^2) / scale^2 as a sum of squared ratios: the plain form overflows to inf / inf
+  // = NaN (and passed the check below) for lengths and radius near 1e154.
+  const double ya = out.a / scale, yb = out.b / scale;
+  out.y = ya * ya + yb * yb;
+  if (!(out.y <= 1.0)) {
     throw_invalid("sqrt(Q) / (3 N d) for tendon lengths (l1, l2, l3)" + suffix + " = " + triple(l),
                   std::sqrt(out.y),
                   "<= 1: no constant-curvature arc with d = " + format_number(layout.radius) +
@@ -62,8 +65,15 @@ Eigen::Vector3d arc_from_tendons(const Eigen::Vector3d& lengths, const TendonLay
   const TendonDecomposition t = decompose_tendons(lengths, layout, suffix);
   // Eqn 27: s = (sum l) N d / sqrt(Q) asin(sqrt(Q) / (3 N d)) = mean * asin(x) / x, x^2 = y.
   const double s = t.mean * asin_ratio_of_square(t.y);
-  // Eqn 28: kappa = 2 sqrt(Q) / (d sum l).
-  const double kappa = 2.0 * std::hypot(t.a, t.b) / (layout.radius * 3.0 * t.mean);
+  // Eqn 28: kappa = 2 sqrt(Q) / (d sum l); with the sum itself, not 3 mean: for subnormal
+  // lengths (5e-324) the mean underflows to 0 and kappa came out inf.
+  const double kappa = (2.0 * std::hypot(t.a, t.b) / lengths.sum()) / layout.radius;
+  if (!std::isfinite(kappa) || !std::isfinite(s)) {
+    throw_invalid("d", layout.radius,
+                  "large enough for the arc of tendon lengths " + triple(lengths) + suffix +
+                      " to be a finite number: its curvature 2 sqrt(Q) / (d (l1 + l2 + l3)) "
+                      "overflows");
+  }
   // Eqn 29 with atan2: tan(phi) = (sqrt(3)/3)(l3 + l2 - 2 l1) / (l2 - l3) = a / b.
   const double phi = std::atan2(t.a, t.b);
   return {s, kappa, phi};

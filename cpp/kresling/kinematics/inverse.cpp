@@ -119,7 +119,7 @@ InverseKinematicsResult solve_from(const ChainModel& model, const Configuration&
   InverseKinematicsResult out;
   out.tendon_lengths = clamp_to(start, bounds);
   out.position = tip_position(model, configuration, out.tendon_lengths);
-  out.distance = (target - out.position).norm();
+  out.distance = (target - out.position).stableNorm();
   if (flexible_count(configuration) == 0) {
     out.converged = out.distance < options.tolerance;
     return out;
@@ -147,7 +147,7 @@ InverseKinematicsResult solve_from(const ChainModel& model, const Configuration&
       const Eigen::Vector3d step = normal.ldlt().solve(J.transpose() * error);
       const Eigen::Vector3d trial = clamp_to(out.tendon_lengths + step, bounds);
       const Eigen::Vector3d position = tip_position(model, configuration, trial);
-      const double distance = (target - position).norm();
+      const double distance = (target - position).stableNorm();
       if (distance < out.distance) {
         out.tendon_lengths = trial;
         out.position = position;

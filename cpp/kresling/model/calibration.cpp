@@ -218,6 +218,21 @@ SheetStiffness calibrate_sheet(const PanelElements& elements,
     }
     c.first_bend_of_panel += static_cast<Index>(panel.size());
   }
+  // MERLIN2's quad formulas give zero area where nu = 0 (the spokes, t nu (H^2 + W^2)^1.5 /
+  // (2 H W (1 - nu^2))) or H^2 = nu W^2 (a pair of sides): say so, naming the material,
+  // rather than leave the model's check to refuse a bar of zero area it cannot explain.
+  for (std::size_t b = 0; b < bars.size(); ++b) {
+    if (!(c.out.bar_area[b] > 0.0) || !std::isfinite(c.out.bar_area[b])) {
+      throw std::invalid_argument(
+          "poisson_ratio = " + format_number(nu) + " is invalid for this pattern: it gives bar " +
+          std::to_string(b) + " (nodes " + std::to_string(bars[b][0]) + ", " +
+          std::to_string(bars[b][1]) + ") a calibrated area of " +
+          format_number(c.out.bar_area[b]) +
+          "; must make every area > 0 (MERLIN2's quad calibration: a quad's spokes get t nu "
+          "(H^2 + W^2)^1.5 / (2 H W (1 - nu^2)), zero at nu = 0; its sides t |H^2 - nu W^2| / "
+          "(2 H (1 - nu^2)), zero where H^2 = nu W^2), or give the areas (manual calibration)");
+    }
+  }
   return c.out;
 }
 

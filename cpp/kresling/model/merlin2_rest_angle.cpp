@@ -34,7 +34,10 @@ double merlin2_rest_angle(const Vector3& a, const Vector3& b, const Vector3& c,
   // The real part of the arccosine, as MATLAB's real(acos(.)) gives outside [-1, 1].
   const double angle = cosine >= 1.0 ? 0.0 : (cosine <= -1.0 ? M_PI : std::acos(cosine));
   const double he = sign * angle;
-  return he < 0.0 ? 2.0 * M_PI + he : he;
+  if (!(he < 0.0)) return he;
+  // 2 pi + he rounds to 2 pi for |he| below ~4e-16 (a hinge folded flat): stay in [0, 2 pi).
+  const double wrapped = 2.0 * M_PI + he;
+  return wrapped < 2.0 * M_PI ? wrapped : std::nextafter(2.0 * M_PI, 0.0);
 }
 
 std::vector<double> merlin2_rest_angles(const NodeMatrix& nodes,

@@ -1,0 +1,169 @@
+"""Fuzz: simulation problems (load_problem, simulate) from random problem dicts (unknown
+keys, wrong types, NaN, huge numbers, out-of-range nodes) and mutated TOML files. Bad input
+is a ValueError naming the key (or the file); a run returns a finite path or says why it
+stopped."""
+
+import copy
+import math
+import tempfile
+from pathlib import Path
+
+import numpy as np
+from hypothesis import event, given
+from hypothesis import strategies as st
+
+from _fuzz import edgy_floats, finite, fuzz, junk, mostly, path_ok
+from kresling.simulate import load_problem, simulate
+
+SHEET = {"vertices": [[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0], [1, 1, 0], [2, 1, 0]],
+         "panels": [[0, 1, 4, 3], [1, 2, 5, 4]]}
+BASES = [
+    {"pattern": dict(SHEET),
+     "material": {"calibration": "auto", "E": 1000.0, "nu": 0.3, "thickness": 0.25},
+     "support": [{"nodes": [0, 3], "fix": "xyz"}, {"node": 1, "fix": "z"}],
+     "load": [{"nodes": [2, 5], "force": [0.0, 0.0, 0.01]}],
+     "analysis": {"method": "mgdcm", "max_increments": 4}},
+    {"pattern": dict(SHEET, split="N4B5"),
+     "material": {"calibration": "manual", "bar_modulus": 1e3, "bar_area": 1.0,
+                  "fold_stiffness": 0.1, "bend_stiffness": 1.0},
+     "laws": {"fold": "linear", "bend": "enhanced_linear", "valley": {"stiffness": 0.2}},
+     "support": [{"nodes": [0, 3], "fix": "xyz"}, {"node": 1, "fix": "yz"},
+                 {"node": 4, "fix": "z"}],
+     "load": [{"nodes": [2, 5], "displacement": [0.0, 0.0, 0.2]}],
+     "analysis": {"method": "displacement_control", "steps": 3}},
+    {"pattern": dict(SHEET),
+     "material": {"calibration": "auto", "E": 1000.0, "nu": 0.3, "thickness": 0.25},
+     "support": [{"nodes": [0, 3], "fix": "xyz"}, {"node": 1, "fix": "z"}],
+     "load": [{"node": 5, "force": [0.0, 0.0, 0.001]}],
+     "analysis": {"method": "force_control", "steps": 2, "max_load_factor": 1.0,
+                  "stop": {"node": 5, "axis": "z", "beyond": 1.0}}},
+]
+KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices", "panels",
+        "split", "file", "planarity_tolerance", "calibration", "E", "nu", "thickness",
+        "length_scale", "bar_modulus", "bar_area", "fold_stiffness", "bend_stiffness",
+        "merlin2_compat", "bar", "fold", "bend", "fold_limits_deg", "valley", "mountain",
+        "node", "nodes", "fix", "force", "displacement", "method", "steps", "tolerance",
+        "max_iterations", "initial_load_factor", "max_increments", "max_load_factor", "stop",
+        "axis", "beyond", "law", "limits_deg", "stiffness", "unknown_key"]
+values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from(
+    ["xyz", "z", "w", "N5B8", "N4B5", "auto", "manual", "linear", "mgdcm", "force_control",
+     "displacement_control", [0.0, 0.0, 1.0], [1e308, 0, 0], [0, 0, float("nan")], [0, 99],
+     [[0, 1, 2]], [-1], {"node": 0, "fix": "xyz"}, [{"node": 7, "fix": "x"}]]))
+
+
+def mutate(problem, edits):
+    """Apply (path, key, value, delete) edits to a deep copy of ``problem``."""
+    problem = copy.deepcopy(problem)
+    for depth, key, value, delete in edits:
+        table = problem
+        for _ in range(depth):  # walk into a nested table or a list's entry
+            inner = [v for v in (table.values() if isinstance(table, dict) else table)
+                     if isinstance(v, (dict, list))]
+            if not inner:
+                break
+            table = inner[hash(key) % len(inner)]
+            if isinstance(table, list) and table and isinstance(table[0], dict):
+                table = table[0]
+        if not isinstance(table, dict):
+            continue
+        if delete:
+            table.pop(key, None)
+        else:
+            table[key] = value
+    return problem
+
+
+def named_key(error: ValueError) -> None:
+    message = str(error)
+    assert message.strip()
+    # Every message starts with its source ("problem" or the file) and names the table and
+    # key ([analysis] key 'steps') or the entry (load[0]).
+    assert message.startswith("problem") or "fuzzed.toml" in message.split(":")[0], message
+    assert "[" in message or "key" in message or "not valid TOML" in message, message
+
+
+def run(problem):
+    try:
+        simulation = simulate(problem)
+    except ValueError as error:
+        named_key(error)
+        event("ValueError")
+        return
+    event("completed" if simulation.completed else "stopped")
+    path_ok(simulation.path)
+    finite(simulation.model.nodes)
+    for values in simulation.history_columns().values():
+        finite(values)
+
+
+@fuzz(150)
+@given(st.sampled_from(range(len(BASES))),
+       st.lists(st.tuples(st.integers(0, 3), st.sampled_from(KEYS), values, st.booleans()),
+                min_size=1, max_size=3))
+def test_load_problem_from_dicts(base, edits):
+    problem = mutate(BASES[base], edits)
+    try:
+        loaded = load_problem(problem)
+    except ValueError as error:
+        named_key(error)
+        return
+    assert loaded.analysis.method in ("displacement_control", "force_control", "mgdcm")
+
+
+@fuzz(40)
+@given(st.sampled_from(range(len(BASES))),
+       st.lists(st.tuples(st.integers(1, 3), st.sampled_from(KEYS), values, st.booleans()),
+                max_size=2))
+def test_simulate(base, edits):
+    run(mutate(BASES[base], edits))
+
+
+def toml(problem) -> str:
+    """The problem as TOML text (the subset these problems use)."""
+    def value(v):
+        if isinstance(v, bool):
+            return "true" if v else "false"
+        if isinstance(v, str):
+            return '"' + v + '"'
+        if isinstance(v, float) and not math.isfinite(v):
+            return "nan" if math.isnan(v) else ("inf" if v > 0 else "-inf")
+        if isinstance(v, (list, tuple)):
+            return "[" + ", ".join(value(x) for x in v) + "]"
+        if isinstance(v, dict):
+            return "{" + ", ".join(f"{k} = {value(x)}" for k, x in v.items()) + "}"
+        return repr(v)
+
+    lines = []
+    for name, table in problem.items():
+        entries = table if isinstance(table, list) else [table]
+        for entry in entries:
+            lines.append(f"[[{name}]]" if isinstance(table, list) else f"[{name}]")
+            lines += [f"{k} = {value(v)}" for k, v in entry.items()]
+    return "\n".join(lines) + "\n"
+
+
+@fuzz(100)
+@given(st.sampled_from(range(len(BASES))),
+       st.lists(st.tuples(st.integers(0, 10**6), st.integers(1, 30)), max_size=2),
+       st.lists(st.tuples(st.integers(0, 10**6), st.sampled_from(
+           ["", "=", "[", "]", "\n", "\"", "x = 1\n", "[analysis]\n", "1e999", "nan", "-",
+            "steps = 99999999999999999999\n", "\x00", "nodes = [0, 99]\n"])), max_size=3))
+def test_load_problem_from_toml(base, cuts, insertions):
+    text = toml(BASES[base])
+    for position, length in cuts:
+        position %= max(len(text), 1)
+        text = text[:position] + text[position + length:]
+    for position, word in insertions:
+        position %= len(text) + 1
+        text = text[:position] + word + text[position:]
+    with tempfile.TemporaryDirectory() as directory:
+        path = Path(directory) / "fuzzed.toml"
+        path.write_text(text, encoding="utf-8")
+        try:
+            problem = load_problem(path)
+        except ValueError as error:
+            named_key(error)
+            return
+        except OSError:
+            return
+    assert problem.source.endswith("fuzzed.toml")

@@ -1,0 +1,93 @@
+"""Fuzz: the path solvers (displacement control, force control, MGDCM) and the linearised
+stiffness, on a small cell with random options, loads and starting states."""
+
+import numpy as np
+from hypothesis import given
+from hypothesis import strategies as st
+
+from _fuzz import attempt, edgy_floats, edgy_ints, finite, fuzz, junk, path_ok
+from kresling import Design
+from kresling.model.kresling_specimen import kresling_specimen
+from kresling.solvers import (condensed_stiffness, solve_displacement_control,
+                              solve_force_control, solve_mgdcm)
+
+_specimen = kresling_specimen(Design(4, 0.7, 30), [1])
+_fixed = np.zeros((_specimen.model.num_nodes, 3), dtype=bool)
+_fixed[_specimen.level_nodes(0)] = True
+MODEL = _specimen.model.replace(fixed=_fixed)
+TOP = _specimen.level_nodes(1)
+
+OPTIONS = ("tolerance", "max_iterations", "reject_iterations", "max_bisections", "shift",
+           "extrapolation", "merlin2_steps", "stop", "initial", "steps", "prescribed", "forces",
+           "initial_load_factor", "max_increments", "max_load_factor", "monitor_dof",
+           "max_displacement", "max_step_factor", "supports", "DOF")
+
+small_ints = st.one_of(st.integers(-2, 60), st.sampled_from([2**31, 10**20, 2.5, True, None]))
+options = st.fixed_dictionaries({}, optional={
+    "tolerance": st.one_of(edgy_floats, st.sampled_from([1e-6, 1e-3]), junk),
+    "max_iterations": small_ints, "max_bisections": small_ints,
+    "shift": st.one_of(st.sampled_from([0.0, 1e-8, 1e-3, 2e-3]), edgy_floats, junk),
+})
+
+
+def load(scale, pattern):
+    """A load or motion on the top polygon's DOFs."""
+    values = np.zeros((MODEL.num_nodes, 3))
+    values[TOP] = np.asarray(pattern, dtype=float) * scale
+    return values
+
+
+vector = st.lists(st.floats(-1, 1), min_size=3, max_size=3)
+initial = st.one_of(st.none(), st.sampled_from([0.0, 1e-3, 1.0, 1e3, 1e300]).map(
+    lambda s: np.full(MODEL.num_dofs, s)), junk)
+
+
+@fuzz(60)
+@given(st.one_of(st.floats(-40, 40), edgy_floats), vector,
+       st.one_of(st.integers(1, 12), edgy_ints, junk), options,
+       st.fixed_dictionaries({}, optional={
+           "reject_iterations": small_ints, "extrapolation": st.one_of(st.integers(-1, 3), junk),
+           "merlin2_steps": st.one_of(st.booleans(), junk)}), initial)
+def test_displacement_control(scale, pattern, steps, opts, more, start):
+    path = attempt(lambda: solve_displacement_control(MODEL, load(scale, pattern), steps,
+                                                      initial=start, **opts, **more), *OPTIONS)
+    if path is not None:
+        path_ok(path)
+
+
+@fuzz(60)
+@given(st.one_of(st.floats(-5, 5), edgy_floats), vector,
+       st.one_of(st.integers(1, 8), edgy_ints, junk), options, initial)
+def test_force_control(scale, pattern, steps, opts, start):
+    path = attempt(lambda: solve_force_control(MODEL, load(scale, pattern), steps, initial=start,
+                                               **opts), *OPTIONS)
+    if path is not None:
+        path_ok(path)
+
+
+@fuzz(60)
+@given(st.one_of(st.floats(-5, 5), edgy_floats), vector, options,
+       st.fixed_dictionaries({}, optional={
+           "initial_load_factor": st.one_of(st.floats(-0.1, 0.1), edgy_floats, junk),
+           "max_increments": st.one_of(st.integers(1, 20), edgy_ints, junk),
+           "max_load_factor": st.one_of(st.floats(0, 10), edgy_floats, junk),
+           "monitor_dof": st.one_of(st.integers(-2, 40), junk),
+           "max_displacement": st.one_of(st.floats(0, 10), edgy_floats, junk),
+           "max_step_factor": st.one_of(st.floats(0, 1), edgy_floats, junk)}), initial)
+def test_mgdcm(scale, pattern, opts, more, start):
+    opts.pop("max_bisections", None)  # not an MGDCM option
+    path = attempt(lambda: solve_mgdcm(MODEL, load(scale, pattern), initial=start, **opts, **more),
+                   *OPTIONS)
+    if path is not None:
+        path_ok(path)
+
+
+@fuzz(100)
+@given(st.one_of(st.lists(st.one_of(st.integers(-2, 40), junk), max_size=4), junk),
+       st.one_of(st.none(), st.sampled_from([0.0, 1.0, 1e300, float("nan")]).map(
+           lambda s: np.full(MODEL.num_dofs, s)), junk))
+def test_condensed_stiffness(dofs, u):
+    S = attempt(lambda: condensed_stiffness(MODEL, dofs, u), "dofs", "u", "DOF", "mechanism",
+                "condensed_stiffness")
+    if S is not None:
+        finite(S)
