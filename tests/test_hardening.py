@@ -441,3 +441,112 @@ def test_a_killed_process_sweep_leaves_no_workers(tmp_path):
     assert not any(p.is_alive() for p in processes)
     assert time.perf_counter() - start < 5
     del futures, multiprocessing
+
+
+# Found by the fuzz suite (tests/fuzz): each a reproducer.
+def test_fold_coordinates_beyond_the_float_range(tmp_path):
+    from kresling.io import read_fold
+    path = tmp_path / "big.fold"
+    path.write_text('{"vertices_coords": [[0, 0], [1, 0], [' + "9" * 400 + ', 1]], '
+                    '"faces_vertices": [[0, 1, 2]]}')
+    with pytest.raises(ValueError, match=r"big.fold: key 'vertices_coords'\[2\]"):
+        read_fold(path)
+
+
+def test_supports_and_loads_must_be_arrays_of_tables():
+    from kresling.simulate import load_problem
+    problem = {"pattern": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "panels": [[0, 1, 2]]},
+               "material": {"calibration": "manual", "bar_modulus": 1e3, "bar_area": 1.0},
+               "support": None, "load": [{"node": 2, "force": [0.0, 1.0, 0.0]}],
+               "analysis": {"method": "force_control", "steps": 2}}
+    with pytest.raises(ValueError, match=r"^problem: .*'support' = None is invalid: must be an "
+                                         r"array of tables"):
+        load_problem(problem)
+
+
+def test_element_states_that_overflow_are_refused():
+    from kresling.assembly import assemble
+    model, _ = driven_cell()
+    u = np.zeros(model.num_dofs)
+    u[-1] = 1e100  # a stretch of 1e100: the Ogden law's s^4 overflows
+    with pytest.raises(ValueError, match=r"^u is invalid: the element states are not finite"):
+        model.element_state(u)
+    with pytest.raises(ValueError, match=r"^u is invalid: the energy or the internal force"):
+        assemble(model, u)
+
+
+def test_arcs_of_extreme_tendons():
+    from kresling.manipulator import arc_from_tendons
+    # (a^2 + b^2) / scale^2 overflowed to inf / inf = NaN, passed the check and gave s = NaN
+    assert np.isfinite(arc_from_tendons([0.0, 0.0, 1.34078079299426e154], 4.5e153)).all()
+    with pytest.raises(ValueError, match=r"sqrt\(Q\) / \(3 N d\)"):
+        arc_from_tendons([0.0, 0.0, 1.34078079299426e154], 4e153)
+    # the mean of subnormal lengths underflowed to 0: kappa was inf
+    assert np.isfinite(arc_from_tendons([0.0, 0.0, 5e-324])).all()
+    with pytest.raises(ValueError, match=r"^d = 1e-310 is invalid: must be large enough"):
+        arc_from_tendons([0.0, 0.0, 1e-310], 1e-310)  # kappa = 2e310
+
+
+def test_a_long_arm_does_not_list_every_configuration():
+    from kresling.manipulator import Manipulator, inverse_kinematics
+    with pytest.raises(ValueError, match=r"^modules = 52 is invalid for listing every "
+                                         r"configuration \(2\*\*52 of them\)"):
+        inverse_kinematics(Manipulator(modules=52), [0.0, 0.0, 0.0])
+    far = inverse_kinematics(Manipulator(), [0.0, 0.0, 1.34e154])
+    assert not far.reachable and np.isfinite(far.distance)
+
+
+def test_a_nearly_flat_specimen_builds():
+    # 2 pi - 1e-17 rounded to 2 pi, a rest angle the model refuses
+    specimen = kresling_specimen(Design(3, 0.75, 5.960464477539063e-08), [0])
+    assert (specimen.model.hinge_rest_angle < 2 * math.pi).all()
+
+
+def test_a_zero_poisson_ratio_names_it():
+    from kresling.model import SheetMaterial, build_pattern_model
+    square = (np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], float), [[0, 1, 2, 3]])
+    with pytest.raises(ValueError, match=r"^poisson_ratio = 0 is invalid for this pattern: it "
+                                         r"gives bar \d+ .* a calibrated area of 0"):
+        build_pattern_model(square, material=SheetMaterial(1.0, 0.0, 1.0))
+
+
+def test_fits_that_overflow_name_the_file(tmp_path):
+    from kresling.fits import fit_bending_files
+    record = tmp_path / "huge.csv"
+    record.write_text("# state: extended\n# module_length: 110 mm\ndisplacement (mm),force (N)\n"
+                      "0,0\n1,1e308\n2,1e308\n")
+    with pytest.raises(ValueError, match=r"huge.csv: the fitted K_B = .* is not finite"):
+        fit_bending_files([record])
+
+
+def test_sweep_sizes_are_checked():
+    from kresling.sweeps import design_grid, sweep
+    with pytest.raises(ValueError, match=r"^size = 100000 is invalid"):
+        design_grid((4,), 100_000)
+    with pytest.raises(ValueError, match=r"^size = \(5000, 5000\) is invalid with 4 n: the grid "
+                                         r"would hold 100000000 designs"):
+        design_grid((4, 6, 8, 10), (5000, 5000))
+    with pytest.raises(ValueError, match=r"^chunk_size = -2 is invalid"):
+        sweep(design_grid((4,), 2), ["psi_ratio"], chunk_size=-2, progress=False)
+    with pytest.raises(ValueError, match=r"^workers = 100000 is invalid for threads"):
+        sweep(design_grid((4,), 2), ["psi_ratio"], workers=100_000, progress=False)
+
+
+def test_ctrl_c_stops_a_long_command(tmp_path):
+    import signal
+    import subprocess
+    import sys
+    # About 13 s of C++ (100000 increments of a 60-gon); it ignored Ctrl-C to the end.
+    process = subprocess.Popen([sys.executable, "-m", "kresling", "snap", "--n", "60", "--lam",
+                                "0.8", "--Lc", "30", "--steps", "100000"], cwd=tmp_path,
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(3.0)  # past the imports, inside the C++ drive
+    process.send_signal(signal.SIGINT)
+    signalled = time.perf_counter()
+    try:
+        _, err = process.communicate(timeout=30)
+    finally:
+        process.kill()
+    assert process.returncode == 130, err
+    assert err.strip() == "kresling snap: interrupted"
+    assert time.perf_counter() - signalled < 3.0

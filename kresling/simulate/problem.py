@@ -25,6 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
+from kresling import _core
 from kresling.io import pattern_from_arrays, read_pattern
 from kresling.model import CreaseLaws, HingeLaw, ManualProperties, SheetMaterial
 from kresling.model.pattern_model import FOLD_FAMILIES
@@ -199,9 +200,12 @@ def _integer(t, key, value, allowed=None):
 
 
 def _count(t, key, value, allowed=None):
+    """An increment or iteration count, in the solvers' documented range (their limits)."""
     value = _integer(t, key, value)
-    if not 1 <= value <= 10_000_000:
-        t.fail(key, f"= {value!r} is invalid: must be an integer in [1, 10000000]")
+    largest = (_core.solvers.MAX_ITERATIONS if key == "max_iterations"
+               else _core.solvers.MAX_STEPS)
+    if not 1 <= value <= largest:
+        t.fail(key, f"= {value!r} is invalid: must be an integer in [1, {largest}]")
     return value
 
 

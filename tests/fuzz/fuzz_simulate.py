@@ -45,7 +45,8 @@ KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices"
         "node", "nodes", "fix", "force", "displacement", "method", "steps", "tolerance",
         "max_iterations", "initial_load_factor", "max_increments", "max_load_factor", "stop",
         "axis", "beyond", "law", "limits_deg", "stiffness", "unknown_key"]
-values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from(
+values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_001, 10**6]),
+                   st.sampled_from(
     ["xyz", "z", "w", "N5B8", "N4B5", "auto", "manual", "linear", "mgdcm", "force_control",
      "displacement_control", [0.0, 0.0, 1.0], [1e308, 0, 0], [0, 0, float("nan")], [0, 99],
      [[0, 1, 2]], [-1], {"node": 0, "fix": "xyz"}, [{"node": 7, "fix": "x"}]]))
