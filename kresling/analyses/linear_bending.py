@@ -24,7 +24,6 @@ it and in z), and each end is pinned at its centre and at the two points where t
 
 from __future__ import annotations
 
-import logging
 import math
 
 import numpy as np
@@ -39,7 +38,6 @@ from kresling.model.kresling_specimen import SpecimenParameters, kresling_specim
 
 __all__ = ["LinearBendingTester", "linear_bending_stiffness"]
 
-logger = logging.getLogger(__name__)
 
 #: A pin this close to a vertex (in the edge parameter s) is the vertex.
 _AT_VERTEX = 1e-12
@@ -90,7 +88,7 @@ class LinearBendingTester:
         self.parameters = parameters or SpecimenParameters()
 
     def run(self, design: Design, state, *, angle=0.0, pin_offset=0.0) -> float:
-        """K_B of ``design`` in ``state`` [N*m/rad] (NaN, logged, if the free part is singular).
+        """K_B of ``design`` in ``state`` [N*m/rad].
 
         Parameters
         ----------
@@ -101,6 +99,14 @@ class LinearBendingTester:
             Bending axis angle beta [rad]: load and pin line turned together.
         pin_offset : float
             Further turn of the pin line alone [rad] (0: perpendicular to the load).
+
+        Raises
+        ------
+        ValueError
+            For bad input, a flat cell (Lc = 0 contracted), or a design whose condensed
+            stiffness is not a positive number: the free DOFs form a mechanism, or the tangent
+            is singular to working precision (an extreme shape, say Lc / R = 1e6). Never a
+            bare NaN.
         """
         design = as_design(design)
         state = state_index(state)
@@ -124,8 +130,11 @@ class LinearBendingTester:
             u_free = np.full(len(free), math.nan)
         force = e @ (K[imposed][:, imposed] @ e) - Kfp_e @ u_free
         if not (math.isfinite(force) and force > 0):
-            logger.warning("%r, state %d: the free DOFs form a mechanism; K_B is NaN", design, state)
-            return math.nan
+            raise ValueError(
+                f"design = {design!r} has no linearised K_B in the "
+                f"{'extended' if state else 'contracted'} state: the condensed stiffness is "
+                f"{float(force)!r}, must be > 0; the free DOFs form a mechanism, or the tangent "
+                f"is singular to working precision (Lc / R = {design.Lc / design.R:.3g})")
         L = 2.0 * design.height(state)
         return float(force * L * L * 1e-3)
 

@@ -120,14 +120,32 @@ class Simulation:
 def build_problem_model(problem) -> PatternModel:
     """The problem's pattern model with its supports (no loads)."""
     problem = load_problem(problem)
-    pm = build_pattern_model(problem.pattern, material=problem.material, split=problem.split,
-                             centre=problem.centre, laws=problem.laws,
-                             merlin2_compat=problem.merlin2_compat)
+    try:
+        pm = build_pattern_model(problem.pattern, material=problem.material, split=problem.split,
+                                 centre=problem.centre, laws=problem.laws,
+                                 merlin2_compat=problem.merlin2_compat)
+    except ValueError as error:  # a value the model cannot take: name the problem's key
+        raise ValueError(f"{problem.source}: {_where(str(error))}: {error}") from None
     fixed = np.zeros((pm.model.num_nodes, 3), dtype=bool)
     for support in problem.supports:
         for axis in support.axes:
             fixed[support.node, _AXES[axis]] = True
     return pm.with_supports(fixed)
+
+
+#: The problem file's key of each material parameter the model's messages name.
+_MATERIAL_KEYS = {"youngs_modulus": "E", "poisson_ratio": "nu", "thickness": "thickness",
+                  "length_scale": "length_scale", "bar_modulus": "bar_modulus",
+                  "bar_area": "bar_area", "fold_stiffness": "fold_stiffness",
+                  "bend_stiffness": "bend_stiffness"}
+
+
+def _where(message: str) -> str:
+    """The table and key of the problem a model-building message is about."""
+    name = message.split(" ", 1)[0]
+    if name in _MATERIAL_KEYS:
+        return f"[material] key {_MATERIAL_KEYS[name]!r}"
+    return "[pattern] with its [material] (building the model)"
 
 
 def _load_vector(problem, num_dofs):
