@@ -39,7 +39,7 @@ def test_every_target_file_is_found():
     names = {path.stem for path in TARGETS}
     assert {"fuzz_geometry", "fuzz_model", "fuzz_solvers", "fuzz_analyses", "fuzz_io",
             "fuzz_simulate", "fuzz_files", "fuzz_manipulator", "fuzz_fabrication",
-            "fuzz_sweeps", "fuzz_cli"} <= names
+            "fuzz_sweeps", "fuzz_cli", "fuzz_arm_view"} <= names
 
 
 @pytest.mark.parametrize("path", TARGETS, ids=lambda path: path.stem)

@@ -571,3 +571,19 @@ def test_linear_bending_never_returns_a_bare_nan():
     with pytest.raises(ValueError, match=r"^design = Design\(n=8, .* has no linearised K_B in "
                                          r"the contracted state: the condensed stiffness is "):
         linear_bending_stiffness(Design(8, 0.584, 1000, 0.001), 0)
+
+
+def test_arm_and_view_inputs_are_value_errors(tmp_path):
+    from kresling.arm import build_arm, pull_until_snap
+    from kresling.view import view_model, view_path, write_html
+    with pytest.raises(ValueError, match=r"^direction = \{\} is invalid"):
+        pull_until_snap(build_arm("111"), {})
+    model, prescribed = driven_cell()
+    with pytest.raises(ValueError, match=r"^field = \[\] is invalid"):
+        view_model(model, field=[])
+    with pytest.raises(ValueError, match=r"^u = <object"):
+        view_model(model, object())
+    figure = view_path(model, solve_displacement_control(model, prescribed, 3))
+    for frame in (math.nan, "", [], math.inf):
+        with pytest.raises(ValueError, match=r"^initial_frame = "):
+            write_html(figure, tmp_path / "page.html", initial_frame=frame)

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kresling import _core
-from kresling._validation import as_integer, as_real, show
+from kresling._validation import as_float_array, as_integer, as_real, show
 from kresling.arm.structure import Arm
 
 __all__ = ["ArmState", "ArmSolver", "DEFAULT_PRETENSION", "TipLoadResult", "tip_load",
@@ -100,7 +100,7 @@ class ArmState:
 
 
 def _pulls(name, value, allow_negative=False) -> list:
-    array = np.asarray(value, dtype=float) if value is not None else np.zeros(3)
+    array = as_float_array(name, value) if value is not None else np.zeros(3)
     if array.shape != (3,):
         raise ValueError(f"{name} = {show(value)} is invalid: must be three values [mm], one per tendon")
     if not allow_negative:
@@ -112,7 +112,7 @@ def _pulls(name, value, allow_negative=False) -> list:
 
 
 def _vector(name, value) -> list:
-    array = np.asarray(value, dtype=float) if value is not None else np.zeros(3)
+    array = as_float_array(name, value) if value is not None else np.zeros(3)
     if array.shape != (3,) or not np.isfinite(array).all():
         raise ValueError(f"{name} = {show(value)} is invalid: must be three finite values")
     return [float(v) for v in array]

@@ -61,7 +61,7 @@ FIELDS = {
 
 def check_field(field):
     """``field`` if it is None or one of :data:`FIELDS`; else a ValueError."""
-    if field is not None and field not in FIELDS:
+    if field is not None and (not isinstance(field, str) or field not in FIELDS):
         raise ValueError(f"field = {field!r} is invalid: must be None or one of "
                          f"{sorted(FIELDS)}")
     return field

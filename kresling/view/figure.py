@@ -8,6 +8,8 @@ from dataclasses import dataclass
 import numpy as np
 import plotly.graph_objects as go
 
+from kresling._validation import as_float_array
+
 from kresling.view.animation import (check_curve, default_curve, frame_name, play_buttons,
                                      select_rows, slider)
 from kresling.view.fields import FIELDS, check_field, edge_values, field_edges, \
@@ -137,7 +139,9 @@ def _scene_layout(points_list, distance=2.2):
 
 
 def _check_u(model, name, u):
-    u = np.asarray(u, dtype=float)
+    u = as_float_array(name, u)
+    if not np.isfinite(u).all():
+        raise ValueError(f"{name} contains NaN or inf")
     if u.size != 3 * len(model.nodes):
         raise ValueError(f"{name} has {u.size} entries: must have one per DOF "
                          f"({3 * len(model.nodes)}), shape (3N,) or (N, 3)")

@@ -14,6 +14,8 @@ from pathlib import Path
 
 import plotly.graph_objects as go
 
+from kresling._validation import as_integer
+
 __all__ = ["write_html", "check_writable", "DIV_ID"]
 
 #: The id of the figure's element in the page.
@@ -86,7 +88,7 @@ def write_html(figure, path, *, initial_frame=None) -> Path:
     names = [frame.name for frame in fig.frames]
     start = None
     if initial_frame is not None and names:
-        k = int(initial_frame)
+        k = as_integer("initial_frame", initial_frame, minimum=0)
         index = min(range(len(names)), key=lambda i: abs(int(names[i]) - k))
         start = int(names[index])
         _show_frame(fig, index)
