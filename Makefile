@@ -18,13 +18,16 @@ DOCS_BUILD := docs/_build/html
 # What the compiled extension depends on: any change reinstalls it (incrementally).
 CORE_SOURCES := CMakeLists.txt pyproject.toml $(shell find cmake cpp -type f 2>/dev/null)
 
-.PHONY: demo test test-cpp test-python install system-deps test-deps benchmark docs clean help
+.PHONY: demo test test-cpp test-python install system-deps test-deps benchmark docs fuzz sanitize \
+        clean help
 
 help:
 	@echo "make demo   - the optimal design's geometry, then reproduce the thesis: $(REPORT_DIR)/report.html"
 	@echo "make test   - C++ unit tests (ctest) and the Python test suite (pytest)"
 	@echo "make benchmark - solver speed and memory against MERLIN2 (prints tables)"
 	@echo "make docs   - the documentation site: $(DOCS_BUILD)/index.html"
+	@echo "make fuzz   - the fuzz suite at $(FUZZ_SCALE)x its test-suite examples, from random seeds"
+	@echo "make sanitize - the C++ tests and a pytest subset under ASan and UBSan"
 	@echo "make clean  - remove build/ and .venv/"
 
 demo: install
@@ -90,6 +93,18 @@ $(VENV)/.installed: $(VENV)/.venv-ready $(CORE_SOURCES) | system-deps
 	  -Ccmake.define.KRESLING_BUILD_BENCHMARKS=ON \
 	  -e ".[test,docs]"
 	touch $@
+
+# The fuzz suite (tests/fuzz/, run by tests/test_fuzz.py) runs in `make test` with a few
+# derandomized examples per target; here with FUZZ_SCALE times as many, from random seeds
+# (a failure prints the failing example and a @reproduce_failure line that replays it).
+FUZZ_SCALE ?= 50
+fuzz: install
+	KRESLING_FUZZ_SCALE=$(FUZZ_SCALE) $(PY) -m pytest -q tests/test_fuzz.py
+
+# The core under AddressSanitizer and UndefinedBehaviorSanitizer (build/sanitize): the
+# GoogleTest suite, and a pytest subset through the extension built the same way.
+sanitize: install
+	PY=$(abspath $(PY)) tests/sanitize.sh
 
 benchmark: install
 	$(PY) benchmarks/solver_speed.py
