@@ -587,3 +587,12 @@ def test_arm_and_view_inputs_are_value_errors(tmp_path):
     for frame in (math.nan, "", [], math.inf):
         with pytest.raises(ValueError, match=r"^initial_frame = "):
             write_html(figure, tmp_path / "page.html", initial_frame=frame)
+
+
+def test_a_degenerate_panel_is_named():
+    # a self-intersecting pentagon: its N5B8 centre landed on a corner and the model refused
+    # "bar 0 (nodes 6, 0): rest length = 0"
+    from kresling.model import SheetMaterial, build_pattern_model
+    vertices = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [2, 0, 0]], float)
+    with pytest.raises(ValueError, match=r"^panel 0: its centre node lies on its side"):
+        build_pattern_model((vertices, [[0, 1, 2, 3, 4]]), material=SheetMaterial(1e3, 0.3, 0.25))

@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include <Eigen/Geometry>
+
 #include "kresling/model/panel_centre.hpp"
 
 namespace kresling::model {
@@ -107,6 +109,31 @@ std::vector<std::array<Index, 2>> PanelElements::bars() const {
   return out;
 }
 
+namespace {
+
+// The fan of an N5B8 panel around its centre: every triangle (centre, corner k, corner k + 1)
+// must have an area, or a spoke has no length or a fan triangle no width (the centre on a
+// corner or on a side: a self-intersecting or degenerate panel). Said here, naming the panel,
+// rather than by the model as a bar of zero length it cannot explain.
+void check_fan(const Vector3& centre, const std::vector<Vector3>& corners,
+               const std::vector<Index>& panel, std::size_t p) {
+  double size = 0.0;
+  for (const Vector3& x : corners) size = std::max(size, (x - centre).norm());
+  const std::size_t m = corners.size();
+  for (std::size_t k = 0; k < m; ++k) {
+    const Vector3 a = corners[k] - centre, b = corners[(k + 1) % m] - centre;
+    if (!(a.cross(b).norm() > 1e-12 * size * size)) {
+      throw std::invalid_argument(
+          "panel " + std::to_string(p) + ": its centre node lies on its side (vertices " +
+          std::to_string(panel[k]) + ", " + std::to_string(panel[(k + 1) % m]) +
+          "), so the fan of triangles N5B8 builds has one of no area: the panel is "
+          "self-intersecting or degenerate; must be a simple polygon (or use split N4B5)");
+    }
+  }
+}
+
+}  // namespace
+
 PanelElements build_panel_elements(const NodeMatrix& vertices,
                                    const std::vector<std::vector<Index>>& panels,
                                    PanelSplit split, CentreRule centre_rule) {
@@ -146,6 +173,7 @@ PanelElements build_panel_elements(const NodeMatrix& vertices,
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument("panel " + std::to_string(p) + ": " + e.what());
     }
+    check_fan(centre, corners, panel, p);
     const Index c = static_cast<Index>(points.size());
     points.push_back(centre);
     out.panel_centre.back() = c;
