@@ -11,14 +11,15 @@ from pathlib import Path
 import numpy as np
 
 from kresling.io import write_fold
+from kresling.model.pattern_model import FAMILY_OF_ASSIGNMENT
 
 __all__ = ["write_outputs", "path_fold_edges"]
 
 logger = logging.getLogger(__name__)
 
-#: FOLD assignment of each model hinge family.
-_ASSIGNMENT = {"mountain": "M", "valley": "V", "flat": "F", "unassigned": "U", "join": "J",
-               "bend": "J"}
+#: FOLD assignment of each model hinge family: the fold families' own letters, and "J" (a
+#: join within a face) for the bend hinges inside panels.
+_ASSIGNMENT = {family: letter for letter, family in FAMILY_OF_ASSIGNMENT.items()} | {"bend": "J"}
 
 
 def _write_csv(path: Path, header, rows):

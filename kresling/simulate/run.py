@@ -11,14 +11,13 @@ import numpy as np
 
 from kresling.model import PatternModel, build_pattern_model
 from kresling.simulate.element_histories import ElementHistories, element_histories
-from kresling.simulate.problem import Problem, load_problem
+from kresling.simulate.problem import _AXES, Problem, load_problem
 from kresling.solvers import (PathResult, solve_displacement_control, solve_force_control,
                               solve_mgdcm)
 
 __all__ = ["Simulation", "PathState", "simulate", "build_problem_model"]
 
 logger = logging.getLogger(__name__)
-_AXES = {"x": 0, "y": 1, "z": 2}
 
 
 @dataclass(frozen=True)
@@ -248,9 +247,7 @@ class _Bar:
 
     def update(self, count, load_factor, u):
         a = self.problem.analysis
-        if a.method == "displacement_control":
-            done = load_factor * a.steps
-        elif a.method == "force_control":
+        if a.method != "mgdcm":  # the load factor runs from 0 to 1 over the steps
             done = load_factor * a.steps
         else:
             done = count
