@@ -73,3 +73,76 @@ def test_figures_draw_and_mark_the_best():
     with pytest.raises(ValueError, match="at least 2 x 2"):
         plot_map(table.where(lam=0.9), "kb_ratio", 4)
     matplotlib.pyplot.close("all")
+
+
+def test_where_takes_values_comparisons_ranges_and_lists():
+    table = made_up()
+    n, Lc, lam = table["n"], table["Lc"], table["lam"]
+    # each result against the same selection made with numpy directly
+    cases = [({"Lc": ">=30"}, Lc >= 30), ({"Lc": "< 30"}, Lc < 30), ({"lam": ">0.8"}, lam > 0.8),
+             ({"Lc": "<=15"}, Lc <= 15), ({"n": "!=4"}, n != 4), ({"n": "==6"}, n == 6),
+             ({"Lc": (15, 30)}, (Lc >= 15) & (Lc <= 30)), ({"Lc": (20, None)}, Lc >= 20),
+             ({"Lc": (None, 1e1)}, Lc <= 10), ({"n": [4]}, n == 4),
+             ({"n": 6, "Lc": ">15", "lam": (0.8, 0.95)}, (n == 6) & (Lc > 15) & (lam >= 0.8))]
+    for conditions, expected in cases:
+        assert table.where(**conditions)["index"].tolist() == \
+            table["index"][expected].tolist(), conditions
+    # a NaN meets a range or a comparison only through "!="
+    assert 3 not in table.where(kb_ratio=(None, None))["index"]
+    assert 3 not in table.where(kb_ratio=">-1")["index"]
+    assert 3 in table.where(kb_ratio="!=0")["index"]
+    assert table.where(status="ok")["index"].tolist() == [i for i in range(12) if i != 3]
+
+
+@pytest.mark.parametrize("conditions, message", [
+    ({"nope": 1}, "where: no column 'nope'; the columns are n, Lc"),
+    ({"Lc": "about 30"}, "where: Lc = 'about 30' is not a condition: a comparison is one of"),
+    ({"Lc": "=>30"}, "is not a condition"),
+    ({"Lc": (1, 2, 3)}, r"where: Lc = \(1, 2, 3\) is not a range"),
+    ({"Lc": ("15", 30)}, "is not a range"),
+    ({"status": ("a", "b")}, "on a numeric column"),
+])
+def test_where_refuses_bad_conditions(conditions, message):
+    with pytest.raises(ValueError, match=message):
+        made_up().where(**conditions)
+
+
+def test_best_takes_where_and_flags_the_boundary_of_the_searched_domain():
+    table = made_up()
+    for where in ({"n": 4}, {"Lc": ">=30", "lam": 0.7}, {"Lc": (20, 40)}):
+        best = table.best("kb_ratio", where=where)
+        part = table.where(**where)
+        assert best["kb_ratio"] == np.nanmax(np.where(part.ok, part["kb_ratio"], np.nan))
+    assert table.best("kb_ratio", where={"n": 4}) == table.best("kb_ratio", n=4)
+    assert table.best("kb_ratio", where={"Lc": ">=30"}, n=4)["n"] == 4
+
+    # made-up values rising towards one design: the boundary names exactly its edges
+    rows = [(n, Lc, lam) for n in (4, 6, 8) for Lc in (15.0, 30.0, 45.0) for lam in (0.7, 0.8, 0.9)]
+    n, Lc, lam = map(np.array, zip(*rows))
+
+    def peaked(at):
+        value = -((n - at[0]) ** 2 + (Lc - at[1]) ** 2 + 100 * (lam - at[2]) ** 2)
+        return SweepTable({"n": n, "Lc": Lc, "lam": lam, "R": np.full(len(rows), 30.0),
+                           "m": value, "status": ["ok"] * len(rows)})
+    corner = peaked((8, 15.0, 0.9))
+    assert corner.best("m")["boundary"] == ("n max", "Lc min", "lam max")
+    assert corner.best("m", n=8)["boundary"] == ("Lc min", "lam max")  # n not searched
+    assert corner.best("m", n=8, lam=(0.7, 0.8))["boundary"] == ("Lc min", "lam max")
+    assert peaked((6, 30.0, 0.8)).best("m")["boundary"] == ()  # inside
+    assert peaked((6, 30.0, 0.7)).best("m")["boundary"] == ("lam min",)
+    # R is a design parameter too, once it varies
+    varied = SweepTable({"n": [8, 8], "Lc": [15.0, 15.0], "lam": [0.9, 0.9], "R": [20.0, 30.0],
+                         "m": [1.0, 2.0], "status": ["ok", "ok"]})
+    assert varied.best("m")["boundary"] == ("R max",)
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda t: t.best("nope"), "metric = 'nope' is invalid: must be a numeric column, one of n, "),
+    (lambda t: t.best("status"), "metric = 'status' is invalid"),
+    (lambda t: t.best("kb_ratio", where="n=4"), "where = 'n=4' is invalid: must be a dict"),
+    (lambda t: t.best("kb_ratio", where={"n": 5}), "no successful design with a finite "
+                                                   "kb_ratio where {'n': 5}"),
+])
+def test_best_refuses_bad_input(call, message):
+    with pytest.raises(ValueError, match=message):
+        call(made_up())

@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import csv
 import io
+import operator
+import re
 
 import numpy as np
 
@@ -28,6 +30,10 @@ STATUS_COLUMNS = ("status", "reason", "iterations", "seconds", "index")
 OK, FAILED = "ok", "failed"
 _INTEGER = {"n", "iterations", "index"}
 _TEXT = {"status", "reason"}
+# where()'s comparison strings: an operator, then a number (spaces allowed around both).
+_COMPARISON = re.compile(r"\s*(<=|>=|==|!=|<|>)\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*")
+_OPERATORS = {"<": operator.lt, "<=": operator.le, ">": operator.gt, ">=": operator.ge,
+              "==": operator.eq, "!=": operator.ne}
 
 
 def column_kind(name: str) -> str:
@@ -106,30 +112,145 @@ class SweepTable:
         """The rows selected by a boolean mask or an index array, as a new table."""
         return SweepTable({k: v[rows] for k, v in self._columns.items()}, self.attrs)
 
-    def where(self, **equal) -> "SweepTable":
-        """Rows whose columns equal the given values, e.g. ``table.where(n=10)``."""
+    def where(self, **conditions) -> "SweepTable":
+        """The rows that meet every condition, as a new table.
+
+        Parameters
+        ----------
+        **conditions
+            ``column=condition``, one per column, all of which must hold:
+
+            - a value: equal to it, e.g. ``n=10``;
+            - a comparison string, one of ``"<x"``, ``"<=x"``, ``">x"``, ``">=x"``, ``"==x"``,
+              ``"!=x"`` with a number x, e.g. ``lam=">=0.8"``;
+            - a tuple ``(low, high)``: within the closed range, either end ``None`` for no
+              bound, e.g. ``Lc=(15, 30)`` for 15 <= Lc <= 30;
+            - a list or set: equal to one of its values, e.g. ``n=[8, 10]``.
+
+            A NaN value meets no condition but ``"!=x"``.
+
+        Raises
+        ------
+        ValueError
+            For a column the table does not have, or a condition of none of these forms.
+
+        Examples
+        --------
+        >>> t = SweepTable({"n": [8, 8, 10], "Lc": [15.0, 30.0, 15.0]})
+        >>> len(t.where(n=8)), len(t.where(Lc=">20")), len(t.where(n=8, Lc=(None, 20)))
+        (2, 1, 1)
+        """
         mask = np.ones(len(self), bool)
-        for name, value in equal.items():
-            mask &= self[name] == value
+        for name, condition in conditions.items():
+            mask &= self._meets(name, condition)
         return self.take(mask)
+
+    def _meets(self, name: str, condition) -> np.ndarray:
+        """Mask of the rows whose column ``name`` meets ``condition`` (see :meth:`where`)."""
+        if name not in self._columns:
+            raise ValueError(f"where: no column {name!r}; the columns are "
+                             f"{', '.join(self.columns)}")
+        column = self._columns[name]
+        numeric = column.dtype != object
+        if isinstance(condition, str) and numeric:
+            match = _COMPARISON.fullmatch(condition)
+            if match is None:
+                raise ValueError(f"where: {name} = {condition!r} is not a condition: a "
+                                 f"comparison is one of <, <=, >, >=, ==, != followed by a "
+                                 f"number, e.g. {name}='>=0.8'")
+            operator, bound = match.group(1), float(match.group(2))
+            with np.errstate(invalid="ignore"):
+                return _OPERATORS[operator](column, bound)
+        if isinstance(condition, tuple):
+            if len(condition) != 2 or not numeric or not all(
+                    b is None or _is_number(b) for b in condition):
+                raise ValueError(f"where: {name} = {condition!r} is not a range: a range is "
+                                 f"a tuple (low, high) of two numbers or None, on a numeric "
+                                 f"column")
+            low, high = condition
+            mask = np.isfinite(column) if column.dtype.kind == "f" else np.ones(len(self), bool)
+            if low is not None:
+                mask &= column >= low
+            if high is not None:
+                mask &= column <= high
+            return mask
+        if isinstance(condition, (list, set, frozenset, np.ndarray)):
+            return np.isin(column, list(condition))
+        return column == condition
 
     def row(self, i: int) -> dict:
         """Row ``i`` as a dict of plain Python values."""
         return {k: v[i].item() if hasattr(v[i], "item") else v[i] for k, v in self._columns.items()}
 
-    def best(self, metric: str, **equal) -> dict:
-        """The row with the largest ``metric`` among the ok rows (optionally ``where``).
+    def best(self, metric: str, where: dict | None = None, **equal) -> dict:
+        """The row with the largest ``metric`` among the ok rows that meet the conditions.
+
+        Parameters
+        ----------
+        metric : str
+            A numeric column.
+        where : dict, optional
+            ``{column: condition}`` in any form :meth:`where` takes, e.g.
+            ``{"lam": "<=0.85", "Lc": (20, None)}``.
+        **equal
+            More conditions, e.g. ``n=10`` (the same forms).
+
+        Returns
+        -------
+        dict
+            The row (plain values), plus ``"boundary"``: a tuple naming each searched design
+            parameter at whose edge the optimum lies, e.g. ``("Lc min", "lam max")``; empty
+            when it is inside the searched domain. A parameter is searched when the rows
+            meeting the conditions (ok or failed) take more than one value of it; its edges
+            are their smallest and largest values. An optimum on the boundary may be beaten
+            just outside the domain: widen it, or use
+            :func:`~kresling.sweeps.optimize_design` with wider bounds.
 
         Raises
         ------
         ValueError
-            If no ok row has a finite value.
+            If ``metric`` is not a numeric column, a condition is invalid (see
+            :meth:`where`), or no ok row has a finite value.
+
+        Examples
+        --------
+        >>> t = SweepTable({"n": [8, 8, 8], "Lc": [15.0, 30.0, 45.0], "lam": [0.9] * 3,
+        ...                 "kb_ratio": [20.0, 9.0, 5.0], "status": ["ok"] * 3})
+        >>> t.best("kb_ratio")["boundary"]
+        ('Lc min',)
+        >>> t.best("kb_ratio", where={"Lc": ">20"})["Lc"]
+        30.0
         """
-        table = self.where(**equal)
-        values = np.where(table.ok & np.isfinite(table[metric]), table[metric], -np.inf)
+        if where is not None and not isinstance(where, dict):
+            raise ValueError(f"where = {where!r} is invalid: must be a dict of column "
+                             f"conditions, e.g. {{'lam': '>=0.8'}}")
+        conditions = {**(where or {}), **equal}
+        if metric not in self._columns or self._columns[metric].dtype == object:
+            numeric = [c for c, v in self._columns.items() if v.dtype != object]
+            raise ValueError(f"metric = {metric!r} is invalid: must be a numeric column, one "
+                             f"of {', '.join(numeric)}")
+        table = self.where(**conditions)
+        ok = table.ok if "status" in table else np.ones(len(table), bool)
+        values = np.where(ok & np.isfinite(table[metric]), table[metric], -np.inf)
         if not np.isfinite(values).any():
-            raise ValueError(f"no successful design with a finite {metric}")
-        return table.row(int(np.argmax(values)))
+            shown = f" where {conditions}" if conditions else ""
+            raise ValueError(f"no successful design with a finite {metric}{shown}")
+        i = int(np.argmax(values))
+        return {**table.row(i), "boundary": table._boundary(i)}
+
+    def _boundary(self, i: int) -> tuple:
+        """The searched design parameters at whose edge row ``i`` lies (see :meth:`best`)."""
+        edges = []
+        for name in DESIGN_COLUMNS:
+            if name not in self._columns:
+                continue
+            column = self._columns[name]
+            low, high = np.nanmin(column), np.nanmax(column)
+            if low == high:
+                continue  # one value: not searched
+            edges += [f"{name} {end}" for end, edge in (("min", low), ("max", high))
+                      if column[i] == edge]
+        return tuple(edges)
 
     def grid(self, metric: str, n: int):
         """``metric`` over the Lc x lambda grid of one n, for heat maps.
@@ -183,6 +304,10 @@ class SweepTable:
                     raise ValueError(f"{path}, line {line}: column {name!r} = {show(text)} is "
                                      f"not a {column_kind(name)}") from None
         return cls(columns)
+
+
+def _is_number(value) -> bool:
+    return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool)
 
 
 def _plain(value):
