@@ -188,3 +188,29 @@ def test_any_design_is_exact_or_refused_by_name(d):
         folded = p.folded(state)
         flat, bent = _lengths(p.points, p.edges), _lengths(folded, p.edges)
         np.testing.assert_allclose(bent, flat, atol=tol)
+
+
+def test_the_titles_of_a_sheet_beside_its_folded_states_do_not_overlap():
+    # The fabrication notebook's figure: the sheet's one-line title ran into its neighbour's.
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from kresling.fabrication import cut_sheet
+    from kresling.fabrication.plot import plot_folded, plot_sheet
+
+    design = kresling.Design(10, 0.9, 15.0, 30.0)
+    fig = plt.figure(figsize=(11, 4.2))
+    axes = [plot_sheet(cut_sheet(design, "paper"), fig.add_subplot(131)),
+            plot_folded(crease_pattern(design), "extended", fig.add_subplot(132, projection="3d")),
+            plot_folded(crease_pattern(design), "contracted",
+                        fig.add_subplot(133, projection="3d"))]
+    fig.tight_layout()
+    renderer = fig.canvas.get_renderer()
+    boxes = [ax.title.get_window_extent(renderer) for ax in axes]
+    for left, right in zip(boxes, boxes[1:]):
+        assert left.x1 < right.x0, (left, right)
+    assert boxes[0].x0 >= 0 and boxes[-1].x1 <= fig.bbox.x1  # inside the figure
+    assert "R=30\u00a0mm" in axes[0].get_title()  # wrapped between words, not in a quantity
+    plt.close(fig)

@@ -6,6 +6,8 @@ never call ``plt.show``.
 
 from __future__ import annotations
 
+import textwrap
+
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.ticker import MaxNLocator
@@ -47,7 +49,7 @@ def plot_sheet(sheet: CutSheet, ax=None, *, linewidth: float = 0.8):
                     label=layer.name if k == 0 else None)
     ax.set_aspect("equal")
     ax.set_xlabel("x [mm]"), ax.set_ylabel("y [mm]")
-    ax.set_title(sheet.title, fontsize=9)
+    ax.set_title(_wrapped(sheet.title), fontsize=9)
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.12), fontsize=8, frameon=False)
     return ax
 
@@ -82,7 +84,15 @@ def plot_folded(pattern: CreasePattern, state, ax=None, *, alpha: float = 0.3):
     ax.auto_scale_xyz(*[(xyz[:, k].min(), xyz[:, k].max()) for k in range(3)])
     ax.set_box_aspect(tuple(np.ptp(xyz, axis=0) + 1e-9))
     name = "extended" if state_index(state) == 1 else "contracted"
-    ax.set_title(f"n={d.n}, lam={d.lam:g}, Lc={d.Lc:g} mm, {d.chirality:+d}: {name}", fontsize=9)
+    ax.set_title(_wrapped(f"n={d.n}, lam={d.lam:g}, Lc={d.Lc:g} mm, {d.chirality:+d}: {name}"),
+                 fontsize=9)
     ax.set_xlabel("x [mm]"), ax.set_ylabel("y [mm]"), ax.set_zlabel("z [mm]")
     ax.zaxis.set_major_locator(MaxNLocator(3))   # a flat contracted cell has little room
     return ax
+
+
+def _wrapped(title: str, width: int = 40) -> str:
+    """``title`` on lines of at most ``width`` characters (a number stays with its unit), so
+    that titles of axes side by side in one figure do not run into each other."""
+    kept = title.replace(" mm", "\u00a0mm")  # textwrap does not break at a no-break space
+    return textwrap.fill(kept, width, break_long_words=False, break_on_hyphens=False)
