@@ -115,3 +115,51 @@ def test_unknown_sections_are_rejected_before_anything_runs(tmp_path):
     with pytest.raises(ValueError, match="unknown section 'nope'"):
         build_report(tmp_path / "r", only=["nope"], chapters=CHAPTERS)
     assert not (tmp_path / "r").exists()
+
+
+def test_json_and_page_record_the_commit_and_the_versions(document, page):
+    import platform
+    import subprocess
+
+    import numpy
+    import scipy
+
+    from kresling import __version__
+    from kresling.report.provenance import SOURCE_ROOT
+
+    found = document["provenance"]
+    assert {k: found[k] for k in ("kresling", "numpy", "scipy", "python", "platform")} == {
+        "kresling": __version__, "numpy": numpy.__version__, "scipy": scipy.__version__,
+        "python": platform.python_version(), "platform": platform.platform()}
+    head = subprocess.run(["git", "-C", str(SOURCE_ROOT), "rev-parse", "HEAD"],
+                          capture_output=True, text=True)
+    if (SOURCE_ROOT / ".git").exists() and head.returncode == 0:  # the tests run in a checkout
+        assert found["git_commit"] == head.stdout.strip() and len(found["git_commit"]) == 40
+        assert isinstance(found["git_dirty"], bool)
+        assert f"git commit <code>{found['git_commit'][:12]}</code>" in page
+    else:
+        assert found["git_commit"] is None and "not a git checkout" in page
+    assert f"numpy {numpy.__version__}, scipy {scipy.__version__}" in page
+
+
+def test_the_commit_is_that_of_the_checkout_holding_the_package_or_none(tmp_path):
+    import subprocess
+
+    from kresling.report.provenance import git_commit, provenance
+
+    assert git_commit(tmp_path) == (None, None)  # not a checkout
+    git = ["git", "-C", str(tmp_path), "-c", "user.name=t", "-c", "user.email=t@t"]
+    subprocess.run([*git, "init", "-q"], check=True)
+    assert git_commit(tmp_path) == (None, None)  # a checkout without a commit
+    (tmp_path / "a.txt").write_text("a\n")
+    subprocess.run([*git, "add", "a.txt"], check=True)
+    subprocess.run([*git, "commit", "-q", "-m", "a"], check=True)
+    head = subprocess.run([*git, "rev-parse", "HEAD"], capture_output=True, text=True,
+                          check=True).stdout.strip()
+    assert git_commit(tmp_path) == (head, False)
+    (tmp_path / "a.txt").write_text("b\n")
+    assert git_commit(tmp_path) == (head, True)
+    # a package installed somewhere inside another repository is not that repository's code
+    (tmp_path / "site-packages").mkdir()
+    assert git_commit(tmp_path / "site-packages") == (None, None)
+    assert provenance(tmp_path / "site-packages")["git_commit"] is None

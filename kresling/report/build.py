@@ -23,6 +23,7 @@ from kresling import __version__
 from kresling.report.chapters import select_chapters
 from kresling.report.html_report import summary_table_html, write_html
 from kresling.report.json_report import report_document, write_json
+from kresling.report.provenance import provenance
 from kresling.report.runner import ERROR, NOT_AVAILABLE, run_sections
 
 __all__ = ["Report", "build_report"]
@@ -43,6 +44,13 @@ class Report:
     quick : bool
     seconds : float
         Wall time of the whole run.
+    command : str
+        The command that made the report.
+    created : str
+        When it was made (ISO 8601, local time).
+    provenance : dict
+        The git commit (``None`` outside a git checkout) and the versions of kresling,
+        numpy, scipy and Python, and the platform it ran with.
     """
 
     runs: list
@@ -52,6 +60,7 @@ class Report:
     command: str = ""
     created: str = field(default_factory=lambda: datetime.datetime.now().isoformat(
         timespec="seconds"))
+    provenance: dict = field(default_factory=provenance)
 
     @property
     def version(self) -> str:

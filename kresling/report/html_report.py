@@ -120,9 +120,24 @@ def _header(document: dict) -> str:
                if document.get("command") else "")
     return (f'<p>kresling {escape(document["kresling_version"])}, {escape(mode)}, '
             f'{escape(document["created"])}, {document["seconds"]:.1f} s.{command} '
+            f'{_provenance_text(document.get("provenance"))}'
             "Each number is shown beside the value it reproduces, with the tolerance it is "
             "held to; the notes say why that tolerance, or what differs. A check outside its "
             "tolerance is marked <span class=\"fail\">fail</span> and left in view.</p>")
+
+
+def _provenance_text(found) -> str:
+    """One sentence: the commit and the versions the report ran with."""
+    if not found:
+        return ""
+    commit = found.get("git_commit")
+    code = (f"Code: git commit <code>{escape(commit[:12])}</code>"
+            f"{' with uncommitted changes' if found.get('git_dirty') else ''}"
+            if commit else "Code: not a git checkout")
+    versions = ", ".join(f"{name} {escape(str(found[name]))}"
+                         for name in ("numpy", "scipy", "python") if found.get(name))
+    where = f" on {escape(found['platform'])}" if found.get("platform") else ""
+    return f"{code}; {versions}{where}. "
 
 
 def _outcome_class(record: dict) -> str:

@@ -3,6 +3,8 @@
 Layout::
 
     {"kresling_version", "mode": "quick" | "full", "created", "seconds", "command",
+     "provenance": {"git_commit", "git_dirty", "kresling", "numpy", "scipy", "python",
+                    "platform"},
      "checks_passed", "checks_total", "errors", "not_available",
      "sections": [{"key", "part", "title", "status", "outcome", "error", "seconds",
                    "summary", "checks_passed", "checks_total", "checks_text",
@@ -12,7 +14,9 @@ Layout::
                    "figures": [{"path", "caption"}], "tables": [{"path", "caption"}],
                    "views": [{"path", "caption"}]}]}
 
-A view is an interactive plotly figure saved as JSON beside the page.
+A view is an interactive plotly figure saved as JSON beside the page. ``git_commit`` is
+``null`` when the package does not run from a git checkout; ``git_dirty`` says whether the
+checkout's tracked files differed from that commit.
 
 Paths are relative to the report's directory. Non-finite numbers are written as ``null``
 (JSON has no NaN); such a check never passes.
@@ -47,6 +51,7 @@ def report_document(report) -> dict:
         "created": report.created,
         "seconds": report.seconds,
         "command": report.command,
+        "provenance": dict(report.provenance),
         "checks_passed": report.checks_passed,
         "checks_total": report.checks_total,
         "errors": [run.chapter.key for run in report.errors],

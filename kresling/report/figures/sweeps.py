@@ -49,12 +49,14 @@ def _tables(section: Section, table, out_dir: Path) -> None:
     metrics = [m for m in ("kb_ratio", "psi_ratio", "snap_force") if m in table]
     with open(path, "w", newline="") as f:
         writer = csv.writer(f)
-        writer.writerow(["metric", "n", "max", "Lc_mm", "lam"])
+        writer.writerow(["metric", "n", "max", "Lc_mm", "lam", "on_boundary"])
         for metric in metrics:
             for n, row in c.maxima_by_n(table, metric).items():
                 writer.writerow([metric, n, f"{row[metric]:.6g}", f"{row['Lc']:.6g}",
-                                 f"{row['lam']:.6g}"])
-    section.add_table(path, "The largest value of each metric for each n and where it is.")
+                                 f"{row['lam']:.6g}", "; ".join(row["boundary"])])
+    section.add_table(path, "The largest value of each metric for each n and where it is; "
+                            "on_boundary names the edges of the searched grid it lies on (a "
+                            "maximum there may be beaten just outside the grid).")
     source = Path(table.attrs["out"]) / "results.csv"
     results = out_dir / "sweep_results.csv"
     shutil.copyfile(source, results)

@@ -98,7 +98,9 @@ def _corner_part(section: Section, table) -> str:
     maxima = c.maxima_by_n(table, "snap_force").values()
     forces = ", ".join(f"{r['snap_force']:.2f}" for r in maxima)
     return (f"For every n the largest K_B ratio and the largest snap-through force (figure "
-            f"3.17: {forces} N for n = 4..10) are at the grid corner Lc = 15 mm, lambda = 0.9.")
+            f"3.17: {forces} N for n = 4..10) are at the grid corner Lc = 15 mm, lambda = 0.9: "
+            f"on the boundary of the searched domain, so each maximum may be beaten just "
+            f"outside it (the continuous optimiser below stays within the thesis's bounds).")
 
 
 def _by_n_part(section: Section, table) -> str:
@@ -129,8 +131,10 @@ def _optimum_part(section: Section, table) -> str:
     section.checks.append(Check(
         "K_B ratio at the optimum: sweep minus a single bending_stiffness run", best["kb_ratio"] -
         single, 0.0, "kresling.analyses.bending_stiffness", note="bit for bit"))
+    edge = (f" It lies on the boundary of the searched domain ({', '.join(best['boundary'])}): "
+            f"a better design may lie outside it." if best["boundary"] else "")
     return (f"Optimum of the grid: n = {best['n']}, Lc = {best['Lc']:g} mm, lambda = "
-            f"{best['lam']:g}, K_B ratio {best['kb_ratio']:.2f} at 0.001 rad.")
+            f"{best['lam']:g}, K_B ratio {best['kb_ratio']:.2f} at 0.001 rad.{edge}")
 
 
 def _trend_part(section: Section, table) -> str:
