@@ -72,7 +72,7 @@ def assemble(model, u=None, *, stiffness=True, shift=0.0) -> Assembly:
         finite (a degenerate element, a hinge folded flat, an overflow): never a silent NaN.
     """
     u = _displacement(model, u)
-    eb, eh, force, K = _core.solvers.assemble(model._core, u, as_finite_real("shift", shift),
+    eb, eh, force, K = _core.assembly.assemble(model._core, u, as_finite_real("shift", shift),
                                               as_bool("stiffness", stiffness))
     force = np.asarray(force)
     if not (np.isfinite(eb) and np.isfinite(eh) and np.isfinite(force).all()):

@@ -10,9 +10,11 @@ page ``kresling``).
 """
 
 import ast
+import re
 import subprocess
 import sys
 from pathlib import Path
+from types import ModuleType
 
 import pytest
 
@@ -204,3 +206,68 @@ def test_an_unknown_top_level_module_is_reported(monkeypatch):
     assert found == ["kresling/newthing.py: top-level module 'newthing' is not in the layer "
                      "table: add it to docs/architecture.md and to LAYERS in "
                      "tests/test_architecture.py"]
+
+
+# The binding layer mirrors the C++ core: cpp/python/bind_<folder>.cpp binds what
+# cpp/kresling/<folder>/ declares, into the submodule kresling._core.<folder>.
+CPP = PACKAGE.parent / "cpp"
+
+
+def _declarations():
+    """Each class, struct or enum declared in a header of cpp/kresling -> its folder, and each
+    folder -> the text of its headers."""
+    types, text = {}, {}
+    for header in sorted((CPP / "kresling").glob("*/*.hpp")):
+        source = header.read_text(encoding="utf-8")
+        text[header.parent.name] = text.get(header.parent.name, "") + source
+        for name in re.findall(r"^\s*(?:struct|class|enum class|enum)\s+(\w+)\b[^;]*$", source,
+                               flags=re.MULTILINE):
+            types.setdefault(name, set()).add(header.parent.name)
+    return types, text
+
+
+def _bindings():
+    """Each binding file's folder -> (the types it binds, the free functions it binds by
+    address)."""
+    out = {}
+    for path in sorted((CPP / "python").glob("bind_*.cpp")):
+        source = path.read_text(encoding="utf-8")
+        types = [t.split("::")[-1] for t in re.findall(r"py::(?:class_|enum_)<([\w:]+)", source)]
+        functions = [f.split("::")[-1]
+                     for f in re.findall(r"m\.def\(\s*\"\w+\",\s*&([\w:]+)", source)]
+        out[path.stem.removeprefix("bind_")] = (types, functions)
+    return out
+
+
+def test_the_binding_files_mirror_the_cpp_folders():
+    from kresling import _core
+
+    folders = {p.name for p in (CPP / "kresling").iterdir() if p.is_dir()}
+    bindings = _bindings()
+    assert set(bindings) <= folders, "a binding file for no folder of cpp/kresling"
+    submodules = {name for name in dir(_core) if isinstance(getattr(_core, name), ModuleType)}
+    assert submodules == set(bindings), "kresling._core's submodules are not the binding files"
+    module = (CPP / "python" / "module.cpp").read_text(encoding="utf-8")
+    for folder in bindings:
+        assert re.search(rf'def_submodule\(\s*"{folder}",[^;]*;\s*kresling::python::'
+                         rf'bind_{folder}\({folder}\);', module), folder
+
+    types, text = _declarations()
+    bound_folders = set()
+    for folder, (bound_types, functions) in bindings.items():
+        assert bound_types, f"bind_{folder}.cpp binds no type"
+        for name in bound_types:
+            assert folder in types.get(name, set()), \
+                f"bind_{folder}.cpp binds {name}, declared in {sorted(types.get(name, []))}"
+            bound_folders.add(folder)
+        for name in functions:
+            assert re.search(rf"\b{name}\(", text[folder]), \
+                f"bind_{folder}.cpp binds {name}(), not declared in cpp/kresling/{folder}"
+    # Every folder whose declarations are bound has its own binding file (so `core`, which
+    # has nothing to bind, has none).
+    assert bound_folders == set(bindings)
+    unbound = folders - set(bindings)
+    for folder in unbound:
+        for bound_types, _ in bindings.values():
+            assert not [t for t in bound_types if types.get(t) == {folder}], \
+                f"types of cpp/kresling/{folder} bound outside a bind_{folder}.cpp"

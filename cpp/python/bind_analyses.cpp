@@ -1,8 +1,10 @@
+#include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "kresling/analyses/arm_analysis.hpp"
 #include "kresling/analyses/bending_test.hpp"
 #include "kresling/analyses/snap_through.hpp"
 #include "kresling/model/kresling_specimen.hpp"
@@ -10,16 +12,12 @@
 namespace py = pybind11;
 using kresling::geometry::Design;
 using kresling::model::SpecimenParameters;
+using kresling::model::Arm;
+using namespace kresling::analyses;
 
 namespace kresling::python {
 
 namespace {
-
-std::vector<int> families(const std::vector<model::EdgeFamily>& f) {
-  std::vector<int> out(f.size());
-  for (std::size_t i = 0; i < f.size(); ++i) out[i] = static_cast<int>(f[i]);
-  return out;
-}
 
 // A copy of `v` as a numpy array (the Python side owns its arrays).
 template <typename T>
@@ -73,44 +71,153 @@ py::dict snap_result_dict(const analyses::SnapThroughResult& r) {
   return out;
 }
 
+// Every path-following call runs without the GIL (the interrupt check takes it back).
+template <typename F>
+auto unlocked(F&& f) {
+  py::gil_scoped_release release;
+  return f();
+}
+
+// The manipulator as one structure (analyses/arm_analysis.hpp): tip loads, pulls, capacity.
+void bind_arm_analysis(py::module_& m) {
+  py::class_<ArmOptions>(m, "ArmOptions")
+      .def(py::init<>())
+      .def_property(
+          "tolerance", [](const ArmOptions& o) { return o.newton.tolerance; },
+          [](ArmOptions& o, double v) { o.newton.tolerance = v; })
+      .def_property(
+          "max_iterations", [](const ArmOptions& o) { return o.newton.max_iterations; },
+          [](ArmOptions& o, int v) { o.newton.max_iterations = v; })
+      .def_readwrite("steps", &ArmOptions::steps)
+      .def_readwrite("max_bisections", &ArmOptions::max_bisections)
+      .def_readwrite("shift", &ArmOptions::shift);
+
+  py::class_<ArmState>(m, "ArmState")
+      .def_readonly("displacement", &ArmState::displacement)
+      .def_readonly("pulls", &ArmState::pulls)
+      .def_readonly("load", &ArmState::load)
+      .def_readonly("tip_position", &ArmState::tip_position)
+      .def_readonly("tip_displacement", &ArmState::tip_displacement)
+      .def_readonly("tension", &ArmState::tension)
+      .def_readonly("tendon_length", &ArmState::tendon_length)
+      .def_readonly("cell_height", &ArmState::cell_height)
+      .def_readonly("module_length", &ArmState::module_length)
+      .def_readonly("cell_states", &ArmState::cell_states)
+      .def_readonly("negative_eigenvalues", &ArmState::negative_eigenvalues)
+      .def_readonly("energy", &ArmState::energy)
+      .def_readonly("iterations", &ArmState::iterations);
+
+  py::class_<ArmPath>(m, "ArmPath")
+      .def_readonly("parameter", &ArmPath::parameter)
+      .def_readonly("states", &ArmPath::states)
+      .def_readonly("completed", &ArmPath::completed)
+      .def_readonly("event", &ArmPath::event)
+      .def_readonly("lost", &ArmPath::lost)
+      .def_readonly("end_parameter", &ArmPath::end_parameter)
+      .def_readonly("message", &ArmPath::message)
+      .def_readonly("attempted_increments", &ArmPath::attempted_increments)
+      .def_readonly("critical_cell", &ArmPath::critical_cell);
+
+  py::class_<ArmRelease>(m, "ArmRelease")
+      .def_readonly("converged", &ArmRelease::converged)
+      .def_readonly("state", &ArmRelease::state)
+      .def_readonly("message", &ArmRelease::message);
+
+  py::class_<ArmSolver>(m, "ArmSolver")
+      .def(py::init<const Arm&, ArmOptions>(), py::arg("arm"), py::arg("options"),
+           py::keep_alive<1, 2>())
+      .def("built", [](ArmSolver& s) { return unlocked([&] { return s.built(); }); })
+      .def(
+          "evaluate",
+          [](ArmSolver& s, const VectorX& u, const Pulls& pulls, const Vector3& load) {
+            return unlocked([&] { return s.evaluate(u, pulls, load); });
+          },
+          py::arg("u"), py::arg("pulls"), py::arg("load"))
+      .def(
+          "ramp",
+          [](ArmSolver& s, const ArmState& start, const Pulls& pulls, const Vector3& load) {
+            return unlocked([&] { return s.ramp(start, pulls, load); });
+          },
+          py::arg("start"), py::arg("pulls"), py::arg("load"))
+      .def(
+          "release",
+          [](ArmSolver& s, const ArmState& from, const Pulls& pulls) {
+            return unlocked([&] { return s.release(from, pulls); });
+          },
+          py::arg("start"), py::arg("pulls"))
+      .def(
+          "tip_compliance",
+          [](ArmSolver& s, const ArmState& state) {
+            return unlocked([&] { return Eigen::Matrix3d(s.tip_compliance(state)); });
+          },
+          py::arg("state"))
+      .def(
+          "tension_sensitivity",
+          [](ArmSolver& s, const ArmState& state) {
+            return unlocked([&] { return Eigen::Matrix3d(s.tension_sensitivity(state)); });
+          },
+          py::arg("state"))
+      .def(
+          "pretension",
+          [](ArmSolver& s, const ArmState& start, double tension) {
+            return unlocked([&] { return s.pretension(start, tension); });
+          },
+          py::arg("start"), py::arg("tension"));
+
+  py::class_<ArmLoadResult>(m, "ArmLoadResult")
+      .def_readonly("path", &ArmLoadResult::path)
+      .def_readonly("pretensioned", &ArmLoadResult::pretensioned)
+      .def_readonly("pretension_pulls", &ArmLoadResult::pretension_pulls)
+      .def_readonly("completed", &ArmLoadResult::completed)
+      .def_readonly("message", &ArmLoadResult::message);
+  m.attr("DEFAULT_PRETENSION") = kDefaultPretension;
+  m.def(
+      "arm_tip_load",
+      [](ArmSolver& s, const Vector3& load, const Pulls& pulls, double pretension) {
+        return unlocked([&] { return arm_tip_load(s, load, pulls, pretension); });
+      },
+      py::arg("solver"), py::arg("load"), py::arg("pulls"), py::arg("pretension"));
+
+  py::class_<ArmSnapResult>(m, "ArmSnapResult")
+      .def_readonly("path", &ArmSnapResult::path)
+      .def_readonly("snapped", &ArmSnapResult::snapped)
+      .def_readonly("pull", &ArmSnapResult::pull)
+      .def_readonly("pulls", &ArmSnapResult::pulls)
+      .def_readonly("tension", &ArmSnapResult::tension)
+      .def_readonly("tension_sum", &ArmSnapResult::tension_sum)
+      .def_readonly("snapped_module", &ArmSnapResult::snapped_module)
+      .def_readonly("snapped_cells", &ArmSnapResult::snapped_cells)
+      .def_readonly("cell_states_after", &ArmSnapResult::cell_states_after)
+      .def_readonly("configuration_after", &ArmSnapResult::configuration_after)
+      .def_readonly("after", &ArmSnapResult::after)
+      .def_readonly("release_converged", &ArmSnapResult::release_converged)
+      .def_readonly("message", &ArmSnapResult::message);
+  m.def(
+      "arm_pull_until_snap",
+      [](ArmSolver& s, const ArmState& start, const Pulls& direction, double max_pull) {
+        return unlocked([&] { return arm_pull_until_snap(s, start, direction, max_pull); });
+      },
+      py::arg("solver"), py::arg("start"), py::arg("direction"), py::arg("max_pull"));
+
+  py::class_<ArmCapacityResult>(m, "ArmCapacityResult")
+      .def_readonly("load", &ArmCapacityResult::load)
+      .def_readonly("limit", &ArmCapacityResult::limit)
+      .def_readonly("tendon", &ArmCapacityResult::tendon)
+      .def_readonly("module", &ArmCapacityResult::module)
+      .def_readonly("path", &ArmCapacityResult::path)
+      .def_readonly("message", &ArmCapacityResult::message);
+  m.def(
+      "arm_load_capacity",
+      [](ArmSolver& s, const ArmState& start, const Vector3& direction, double max_load) {
+        return unlocked([&] { return arm_load_capacity(s, start, direction, max_load); });
+      },
+      py::arg("solver"), py::arg("start"), py::arg("direction"), py::arg("max_load"));
+}
+
 }  // namespace
 
 void bind_analyses(py::module_& m) {
-  py::class_<SpecimenParameters>(m, "SpecimenParameters")
-      .def(py::init<>())
-      .def_readwrite("kf", &SpecimenParameters::kf)
-      .def_readwrite("valley_factor", &SpecimenParameters::valley_factor)
-      .def_readwrite("polygon_edge_factor", &SpecimenParameters::polygon_edge_factor)
-      .def_readwrite("spoke_factor", &SpecimenParameters::spoke_factor)
-      .def_readwrite("mountain_factor", &SpecimenParameters::mountain_factor)
-      .def_readwrite("modulus_factor", &SpecimenParameters::modulus_factor)
-      .def_readwrite("material_area", &SpecimenParameters::material_area)
-      .def_readwrite("mountain_area", &SpecimenParameters::mountain_area)
-      .def_readwrite("theta1", &SpecimenParameters::theta1)
-      .def_readwrite("theta2", &SpecimenParameters::theta2)
-      .def_property(
-          "bar_law", [](const SpecimenParameters& p) { return static_cast<int>(p.bar_law); },
-          [](SpecimenParameters& p, int law) {
-            if (law != 0 && law != 1) throw std::invalid_argument("bar_law: unknown law code");
-            p.bar_law = static_cast<elements::BarLawKind>(law);
-          })
-      .def_readwrite("duplicate_shared_edges", &SpecimenParameters::duplicate_shared_edges);
-
-  m.def(
-      "build_kresling_specimen",
-      [](const Design& design, const std::vector<int>& states, const std::vector<int>& chirality,
-         const SpecimenParameters& parameters, const std::vector<std::uint8_t>& fixed) {
-        auto s = model::build_kresling_specimen(design, states, chirality, parameters, fixed);
-        py::dict info;
-        info["bar_family"] = families(s.bar_family);
-        info["hinge_family"] = families(s.hinge_family);
-        info["level_height"] = s.level_height;
-        info["level_angle"] = s.level_angle;
-        return py::make_tuple(std::move(s.model), info);
-      },
-      py::arg("design"), py::arg("states"), py::arg("chirality"), py::arg("parameters"),
-      py::arg("fixed"));
-
+  bind_arm_analysis(m);
   py::class_<analyses::BendingTest>(m, "BendingTest")
       .def(py::init([](int n, double deflection, double deflection_angle, int steps, int cells,
                        const SpecimenParameters& parameters,
@@ -153,7 +260,6 @@ void bind_analyses(py::module_& m) {
       py::arg("design"), py::arg("state"), py::arg("cells"), py::arg("deflection"),
       py::arg("deflection_angle"), py::arg("steps"),
       "The bending test's checks of its inputs; returns the imposed motion [mm].");
-  m.attr("MAX_SPECIMEN_NODES") = model::kMaxSpecimenNodes;
   m.def("check_snap_design", &analyses::check_snap_design, py::arg("design"));
   m.def("check_bending_state", &analyses::check_bending_state, py::arg("design"),
         py::arg("state"));

@@ -4,7 +4,9 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "kresling/model/arm.hpp"
 #include "kresling/model/calibration.hpp"
+#include "kresling/model/kresling_specimen.hpp"
 #include "kresling/model/merlin2_rest_angle.hpp"
 #include "kresling/model/model.hpp"
 #include "kresling/model/panel_centre.hpp"
@@ -95,6 +97,96 @@ py::array_t<Index> index_rows(const std::vector<std::array<Index, Width>>& v) {
 template <typename T>
 py::array_t<T> vector_array(const std::vector<T>& v) {
   return py::array_t<T>(static_cast<py::ssize_t>(v.size()), v.data());
+}
+
+std::vector<int> families(const std::vector<model::EdgeFamily>& f) {
+  std::vector<int> out(f.size());
+  for (std::size_t i = 0; i < f.size(); ++i) out[i] = static_cast<int>(f[i]);
+  return out;
+}
+
+// Kresling specimens (model/kresling_specimen.hpp): their parameters, the built specimen.
+void bind_specimen(py::module_& m) {
+  using model::SpecimenParameters;
+  py::class_<SpecimenParameters>(m, "SpecimenParameters")
+      .def(py::init<>())
+      .def_readwrite("kf", &SpecimenParameters::kf)
+      .def_readwrite("valley_factor", &SpecimenParameters::valley_factor)
+      .def_readwrite("polygon_edge_factor", &SpecimenParameters::polygon_edge_factor)
+      .def_readwrite("spoke_factor", &SpecimenParameters::spoke_factor)
+      .def_readwrite("mountain_factor", &SpecimenParameters::mountain_factor)
+      .def_readwrite("modulus_factor", &SpecimenParameters::modulus_factor)
+      .def_readwrite("material_area", &SpecimenParameters::material_area)
+      .def_readwrite("mountain_area", &SpecimenParameters::mountain_area)
+      .def_readwrite("theta1", &SpecimenParameters::theta1)
+      .def_readwrite("theta2", &SpecimenParameters::theta2)
+      .def_property(
+          "bar_law", [](const SpecimenParameters& p) { return static_cast<int>(p.bar_law); },
+          [](SpecimenParameters& p, int law) { p.bar_law = bar_law_kind(law, "bar_law"); })
+      .def_readwrite("duplicate_shared_edges", &SpecimenParameters::duplicate_shared_edges);
+
+  py::class_<model::KreslingSpecimen>(
+      m, "KreslingSpecimen", "A Kresling stack's model with its element families and levels")
+      .def_readonly("model", &model::KreslingSpecimen::model)
+      .def_property_readonly(
+          "bar_family", [](const model::KreslingSpecimen& s) { return families(s.bar_family); },
+          "edge family code per bar (B,)")
+      .def_property_readonly(
+          "hinge_family", [](const model::KreslingSpecimen& s) { return families(s.hinge_family); },
+          "edge family code of each hinge's axis (H,)")
+      .def_readonly("level_height", &model::KreslingSpecimen::level_height, "z of each level [mm]")
+      .def_readonly("level_angle", &model::KreslingSpecimen::level_angle,
+                    "theta of each level [rad]")
+      .def_readonly("n", &model::KreslingSpecimen::n)
+      .def_readonly("cells", &model::KreslingSpecimen::cells);
+
+  m.def(
+      "build_kresling_specimen",
+      [](const geometry::Design& design, const std::vector<int>& states,
+         const std::vector<int>& chirality, const SpecimenParameters& parameters,
+         const std::vector<std::uint8_t>& fixed) {
+        return model::build_kresling_specimen(design, states, chirality, parameters, fixed);
+      },
+      py::arg("design"), py::arg("states"), py::arg("chirality"), py::arg("parameters"),
+      py::arg("fixed"));
+  m.attr("MAX_SPECIMEN_NODES") = model::kMaxSpecimenNodes;
+}
+
+// The manipulator as one structure (model/arm.hpp): modules, guide plates, tendons.
+void bind_arm_model(py::module_& m) {
+  using model::Arm;
+  using model::ArmParameters;
+  py::class_<ArmParameters>(m, "ArmParameters")
+      .def(py::init<>())
+      .def_readwrite("specimen", &ArmParameters::specimen)
+      .def_readwrite("tendon_radius", &ArmParameters::tendon_radius)
+      .def_readwrite("guide_radius", &ArmParameters::guide_radius)
+      .def_readwrite("guide_factor", &ArmParameters::guide_factor)
+      .def_readwrite("tendon_stiffness", &ArmParameters::tendon_stiffness);
+
+  py::class_<Arm>(m, "Arm")
+      .def_readonly("model", &Arm::model)
+      .def_readonly("n", &Arm::n)
+      .def_readonly("modules", &Arm::modules)
+      .def_readonly("states", &Arm::states)
+      .def_readonly("cell_states", &Arm::cell_states)
+      .def_readonly("chirality", &Arm::chirality)
+      .def_readonly("level_height", &Arm::level_height)
+      .def_readonly("level_angle", &Arm::level_angle)
+      .def_readonly("cell_bars", &Arm::cell_bars)
+      .def_readonly("cell_hinges", &Arm::cell_hinges)
+      .def_readonly("holes", &Arm::holes)
+      .def_readonly("slack_length", &Arm::slack_length)
+      .def_readonly("cell_extended", &Arm::cell_extended)
+      .def_readonly("cell_contracted", &Arm::cell_contracted)
+      .def_property_readonly("tip_node", &Arm::tip_node)
+      .def("node", &Arm::node, py::arg("level"), py::arg("j"))
+      .def("guide_level", &Arm::guide_level, py::arg("guide"));
+
+  m.def("parse_configuration", &model::parse_configuration, py::arg("configuration"),
+        py::arg("modules") = 0);
+  m.def("build_arm", &model::build_arm, py::arg("design"), py::arg("states"),
+        py::arg("parameters"));
 }
 
 }  // namespace
@@ -240,6 +332,8 @@ void bind_model(py::module_& m) {
   m.def("quad_centre", &model::quad_centre);
   m.def("polygon_optimal_centre", &model::polygon_optimal_centre);
   m.def("polygon_centre_objective", &model::polygon_centre_objective);
+  bind_specimen(m);
+  bind_arm_model(m);
 }
 
 }  // namespace kresling::python

@@ -6,7 +6,6 @@
 #include <memory>
 
 #include "bindings.hpp"
-#include "kresling/assembly/assembler.hpp"
 #include "kresling/solvers/displacement_control.hpp"
 #include "kresling/solvers/force_control.hpp"
 #include "kresling/solvers/limits.hpp"
@@ -19,14 +18,6 @@ using namespace kresling::solvers;
 namespace kresling::python {
 
 namespace {
-
-py::tuple csc(const assembly::SparseMatrix& K) {
-  // Copies: the Python side owns its arrays.
-  py::array_t<int> indptr(K.outerSize() + 1, K.outerIndexPtr());
-  py::array_t<int> indices(K.nonZeros(), K.innerIndexPtr());
-  py::array_t<double> data(K.nonZeros(), K.valuePtr());
-  return py::make_tuple(data, indices, indptr, py::make_tuple(K.rows(), K.cols()));
-}
 
 using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
@@ -112,40 +103,6 @@ void bind_solvers(py::module_& m) {
   m.attr("MAX_BISECTIONS") = kMaxBisections;
   m.attr("MAX_ITERATIONS") = kMaxIterations;
   m.attr("MAX_SHIFT") = kMaxShift;
-  m.def(
-      "assemble",
-      [](const Model& model, const VectorX& u, double shift, bool with_matrix) {
-        assembly::Assembler assembler(model, assembly::all_dofs(model.num_dofs()), shift);
-        VectorX force;
-        assembly::Energies e;
-        {
-          py::gil_scoped_release release;
-          e = assembler.assemble(u, force, with_matrix);
-        }
-        py::object K = with_matrix ? py::object(csc(assembler.matrix())) : py::none();
-        return py::make_tuple(e.bars, e.hinges, force, K);
-      },
-      py::arg("model"), py::arg("u"), py::arg("shift"), py::arg("with_matrix"));
-
-  m.def(
-      "element_state",
-      [](const Model& model, const VectorX& u) {
-        const auto s = assembly::element_state(model, u);
-        py::dict out;
-        out["bar_strain"] = s.bar_strain;
-        out["bar_force"] = s.bar_force;
-        out["hinge_angle"] = s.hinge_angle;
-        out["hinge_moment"] = s.hinge_moment;
-        out["bar_stress"] = s.bar_stress;
-        out["bar_energy"] = s.bar_energy;
-        out["hinge_energy"] = s.hinge_energy;
-        out["cable_length"] = s.cable_length;
-        out["cable_tension"] = s.cable_tension;
-        out["cable_energy"] = s.cable_energy;
-        return out;
-      },
-      py::arg("model"), py::arg("u"));
-
   py::class_<DisplacementControlOptions>(m, "DisplacementControlOptions")
       .def(py::init<>())
       .def_property(
@@ -159,6 +116,8 @@ void bind_solvers(py::module_& m) {
       .def_readwrite("shift", &DisplacementControlOptions::shift)
       .def_readwrite("extrapolation", &DisplacementControlOptions::extrapolation)
       .def_readwrite("merlin2_steps", &DisplacementControlOptions::merlin2_steps)
+      .def_readwrite("adaptive", &DisplacementControlOptions::adaptive)
+      .def_readwrite("adaptive_tolerance", &DisplacementControlOptions::adaptive_tolerance)
       .def_property(
           "stop", [](const DisplacementControlOptions& o) { return static_cast<bool>(o.stop); },
           [](DisplacementControlOptions& o, const py::object& f) { o.stop = stop_rule(f); });

@@ -1,6 +1,7 @@
 #pragma once
 /// \file bindings.hpp
-/// One binding file per C++ area; each fills one submodule of kresling._core.
+/// One binding file per folder of cpp/kresling: bind_<folder>.cpp fills the submodule
+/// kresling._core.<folder> with what that folder declares.
 
 #include <pybind11/pybind11.h>
 
@@ -19,9 +20,9 @@ elements::SpringLawKind spring_law_kind(Index code, const char* name);
 void bind_geometry(pybind11::module_& m);
 void bind_elements(pybind11::module_& m);
 void bind_model(pybind11::module_& m);
+void bind_assembly(pybind11::module_& m);
 void bind_solvers(pybind11::module_& m);
 void bind_analyses(pybind11::module_& m);
 void bind_kinematics(pybind11::module_& m);
-void bind_arm(pybind11::module_& m);
 
 }  // namespace kresling::python

@@ -80,10 +80,10 @@ class LinearBendingTester:
         if cells < 2 or cells % 2:
             raise ValueError(f"cells = {cells!r} is invalid: must be an even number >= 2 (the "
                              "load acts on the middle polygon)")
-        if (cells + 1) * (n + 1) > _core.analyses.MAX_SPECIMEN_NODES:
+        if (cells + 1) * (n + 1) > _core.model.MAX_SPECIMEN_NODES:
             raise ValueError(f"cells = {cells} is invalid for n = {n}: the specimen would have "
                              f"(cells + 1) (n + 1) = {(cells + 1) * (n + 1)} nodes; must have "
-                             f"at most {_core.analyses.MAX_SPECIMEN_NODES}")
+                             f"at most {_core.model.MAX_SPECIMEN_NODES}")
         self.n, self.cells = n, cells
         self.parameters = parameters or SpecimenParameters()
 

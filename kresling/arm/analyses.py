@@ -33,7 +33,7 @@ __all__ = ["ArmState", "ArmSolver", "DEFAULT_PRETENSION", "TipLoadResult", "tip_
            "arm_summary"]
 
 #: Tension of each tendon before a tip load is applied [N] (an assumption, see above).
-DEFAULT_PRETENSION = float(_core.arm.DEFAULT_PRETENSION)
+DEFAULT_PRETENSION = float(_core.analyses.DEFAULT_PRETENSION)
 
 
 @dataclass(frozen=True)
@@ -136,12 +136,12 @@ class ArmSolver:
                  tolerance: float = 1e-6):
         if not isinstance(arm, Arm):
             raise ValueError(f"arm = {show(arm)} is invalid: must be a kresling.arm.Arm")
-        o = _core.arm.ArmOptions()
+        o = _core.analyses.ArmOptions()
         o.steps = as_integer("steps", steps, minimum=1)
         o.max_bisections = as_integer("max_bisections", max_bisections, minimum=0)
         o.tolerance = as_real("tolerance", tolerance)
         self.arm = arm
-        self._core = _core.arm.ArmSolver(arm._core, o)
+        self._core = _core.analyses.ArmSolver(arm._core, o)
 
     def built(self) -> ArmState:
         """The built, unloaded arm."""
@@ -245,7 +245,7 @@ def tip_load(arm: Arm, load, *, pulls=None, pretension: float = DEFAULT_PRETENSI
     if not (math.isfinite(pretension) and pretension >= 0):
         raise ValueError(f"pretension = {pretension!r} is invalid: must be >= 0 (N per tendon)")
     solver = ArmSolver(arm) if solver is None else solver
-    r = _core.arm.arm_tip_load(solver._core, load, pulls, pretension)
+    r = _core.analyses.arm_tip_load(solver._core, load, pulls, pretension)
     unloaded = ArmState.from_core(r.pretensioned)
     states = r.path.states
     state = ArmState.from_core(states[-1]) if states else unloaded
@@ -335,7 +335,7 @@ def pull_until_snap(arm: Arm, direction=(1.0, 1.0, 1.0), *, max_pull: float | No
         max_pull = max(travel, travel * arm.configuration.count("1"))
         max_pull = min(max_pull, 0.9 * float(np.min(arm.slack_length - start.pulls)))
     max_pull = as_real("max_pull", max_pull)
-    r = _core.arm.arm_pull_until_snap(solver._core, start._core, d, max_pull)
+    r = _core.analyses.arm_pull_until_snap(solver._core, start._core, d, max_pull)
     states = [ArmState.from_core(s) for s in r.path.states]
     after = ArmState.from_core(r.after) if r.snapped and len(r.cell_states_after) else None
     return SnapResult(bool(r.snapped), np.asarray(d) / max(d), float(r.pull),
@@ -403,7 +403,7 @@ def load_capacity(arm: Arm, direction, *, pretension: float = DEFAULT_PRETENSION
     max_load = as_real("max_load", max_load)
     solver = ArmSolver(arm) if solver is None else solver
     start = solver.pretension(pretension) if pretensioned is None else pretensioned
-    r = _core.arm.arm_load_capacity(solver._core, start._core, _vector("direction", direction),
+    r = _core.analyses.arm_load_capacity(solver._core, start._core, _vector("direction", direction),
                                     max_load)
     last = r.path.states[-1]
     e = np.asarray(direction, dtype=float)

@@ -68,7 +68,7 @@ class ArmParameters:
 
     def to_core(self):
         """The C++ parameters object (values are range-checked there)."""
-        p = _core.arm.ArmParameters()
+        p = _core.model.ArmParameters()
         p.specimen = self.specimen.to_core()
         p.tendon_radius = self.tendon_radius
         p.guide_radius = self.guide_radius
@@ -96,7 +96,7 @@ def parse_configuration(configuration, modules: int | None = None) -> tuple:
         raise ValueError(f"configuration = {show(configuration)} is invalid: must be a string "
                          "of 0 (contracted) and 1 (extended), one per module from the base")
     count = 0 if modules is None else as_integer("modules", modules, minimum=1)
-    return tuple(_core.arm.parse_configuration(configuration, count))
+    return tuple(_core.model.parse_configuration(configuration, count))
 
 
 def all_configurations(modules: int) -> list:
@@ -220,7 +220,7 @@ def build_arm(configuration="111", *, n: int = 10, lam: float = 0.9, Lc: float =
     parameters = ArmParameters() if parameters is None else parameters
     if not isinstance(parameters, ArmParameters):
         raise ValueError(f"parameters = {show(parameters)} is invalid: must be an ArmParameters")
-    core = _core.arm.build_arm(design._core, list(states), parameters.to_core())
+    core = _core.model.build_arm(design._core, list(states), parameters.to_core())
     model = Model._from_core(core.model)
     return Arm(configuration, design, parameters, model,
                np.asarray(core.level_height), np.asarray(core.holes, dtype=np.int64),

@@ -73,7 +73,7 @@ class SpecimenParameters:
 
     def to_core(self):
         """The C++ parameters object (values are range-checked there)."""
-        p = _core.analyses.SpecimenParameters()
+        p = _core.model.SpecimenParameters()
         for f in fields(self):
             value = getattr(self, f.name)
             if f.name == "fold_limits":
@@ -195,13 +195,13 @@ def kresling_specimen(design: Design, states, chirality=None, parameters=None,
         if mask.shape != (num_nodes, 3):
             raise ValueError(f"fixed has shape {mask.shape}: must be ({num_nodes}, 3)")
         mask = mask.astype(np.uint8).ravel()
-    core_model, info = _core.analyses.build_kresling_specimen(
+    core = _core.model.build_kresling_specimen(
         design._core, list(states), list(chirality), parameters.to_core(), mask.tolist())
     names = np.array(EDGE_FAMILIES)
     return KreslingSpecimen(
         design=design, states=states, chirality=chirality, parameters=parameters,
-        model=Model._from_core(core_model),
-        bar_family=names[np.asarray(info["bar_family"], dtype=int)],
-        hinge_family=names[np.asarray(info["hinge_family"], dtype=int)],
-        level_height=np.asarray(info["level_height"]),
-        level_angle=np.asarray(info["level_angle"]))
+        model=Model._from_core(core.model),
+        bar_family=names[np.asarray(core.bar_family, dtype=int)],
+        hinge_family=names[np.asarray(core.hinge_family, dtype=int)],
+        level_height=np.asarray(core.level_height),
+        level_angle=np.asarray(core.level_angle))

@@ -274,7 +274,10 @@ class Model:
                                  "node)")
             if not np.isfinite(u).all():
                 raise ValueError("u contains NaN or inf")
-        state = {k: np.asarray(v) for k, v in _core.solvers.element_state(self._core, u).items()}
+        core = _core.assembly.element_state(self._core, u)
+        # Every field of the core's ElementState, in the order it declares them.
+        state = {k: np.asarray(getattr(core, k)) for k, v in type(core).__dict__.items()
+                 if isinstance(v, property)}
         for key, values in state.items():
             if values.size and not np.isfinite(values).all():
                 i = int(np.flatnonzero(~np.isfinite(values))[0])

@@ -1,0 +1,65 @@
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+#include "kresling/assembly/assembler.hpp"
+
+namespace py = pybind11;
+using kresling::model::Model;
+
+namespace kresling::python {
+
+namespace {
+
+py::tuple csc(const assembly::SparseMatrix& K) {
+  // Copies: the Python side owns its arrays.
+  py::array_t<int> indptr(K.outerSize() + 1, K.outerIndexPtr());
+  py::array_t<int> indices(K.nonZeros(), K.innerIndexPtr());
+  py::array_t<double> data(K.nonZeros(), K.valuePtr());
+  return py::make_tuple(data, indices, indptr, py::make_tuple(K.rows(), K.cols()));
+}
+
+}  // namespace
+
+void bind_assembly(py::module_& m) {
+  m.def(
+      "assemble",
+      [](const Model& model, const VectorX& u, double shift, bool with_matrix) {
+        assembly::Assembler assembler(model, assembly::all_dofs(model.num_dofs()), shift);
+        VectorX force;
+        assembly::Energies e;
+        {
+          py::gil_scoped_release release;
+          e = assembler.assemble(u, force, with_matrix);
+        }
+        py::object K = with_matrix ? py::object(csc(assembler.matrix())) : py::none();
+        return py::make_tuple(e.bars, e.hinges, force, K);
+      },
+      py::arg("model"), py::arg("u"), py::arg("shift"), py::arg("with_matrix"));
+
+  using assembly::ElementState;
+  // Fields in the order kresling.Model.element_state returns them.
+  py::class_<ElementState>(m, "ElementState",
+                           "Per-element state at one displacement (B bars, H hinges, C cables)")
+      .def_readonly("bar_strain", &ElementState::bar_strain, "Green-Lagrange strain (B,)")
+      .def_readonly("bar_force", &ElementState::bar_force,
+                    "axial force (B,) [N], tension positive")
+      .def_readonly("hinge_angle", &ElementState::hinge_angle, "dihedral angle (H,) [rad]")
+      .def_readonly("hinge_moment", &ElementState::hinge_moment,
+                    "moment times hinge length (H,) [N*mm]")
+      .def_readonly("bar_stress", &ElementState::bar_stress,
+                    "second Piola-Kirchhoff stress (B,) [N/mm^2]")
+      .def_readonly("bar_energy", &ElementState::bar_energy, "stored energy per bar (B,) [N*mm]")
+      .def_readonly("hinge_energy", &ElementState::hinge_energy,
+                    "stored energy per hinge (H,) [N*mm]")
+      .def_readonly("cable_length", &ElementState::cable_length,
+                    "length of each cable's path (C,) [mm]")
+      .def_readonly("cable_tension", &ElementState::cable_tension,
+                    "tension per cable (C,) [N], 0 when slack")
+      .def_readonly("cable_energy", &ElementState::cable_energy,
+                    "stored energy per cable (C,) [N*mm]");
+  m.def("element_state", &assembly::element_state, py::arg("model"), py::arg("u"));
+}
+
+}  // namespace kresling::python
