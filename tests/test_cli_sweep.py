@@ -19,6 +19,12 @@ def test_writes_results_prints_the_optimum_and_resumes(tmp_path, capsys):
     printed = capsys.readouterr().out
     assert "18 designs: 18 computed, 0 read back" in printed
     assert "optimum (kb_ratio): n = 6, Lc = 15 mm, lam = 0.9: kb_ratio = 18.1243" in printed
+    # the thesis's optimum is on a corner of the searched domain (largest n and lambda,
+    # smallest Lc): said, with the way to widen it
+    assert ("on the boundary of the searched domain (n max, Lc min, lam max): a better design "
+            "may lie outside it; widen --n, --Lc or --lam") in printed
+    assert "4  10.3459   15       0.9  Lc min, lam max" in printed  # maximum by n
+    assert not (out / ".lock").exists()  # the lock goes with the sweep
     with open(out / "results.csv", newline="") as f:
         rows = list(csv.DictReader(f))
     assert len(rows) == 18
@@ -28,6 +34,36 @@ def test_writes_results_prints_the_optimum_and_resumes(tmp_path, capsys):
 
     assert main([*ARGS, "--out", str(out)]) == 0
     assert "18 designs: 0 computed, 18 read back" in capsys.readouterr().out
+    assert sorted(p.name for p in out.iterdir()) == ["manifest.json", "results.csv"]
+
+
+@pytest.mark.parametrize("executor, workers, said", [
+    ("threads", "2", "2 threads"), ("threads", "1", "1 thread,"),
+    ("processes", "1", "1 process,")])
+def test_verbose_names_the_workers(tmp_path, capsys, executor, workers, said):
+    assert main(["sweep", "--n", "8", "--grid", "2", "--metrics", "psi_ratio", "--no-progress",
+                 "--verbose", "--executor", executor, "--workers", workers,
+                 "--out", str(tmp_path)]) == 0
+    err = capsys.readouterr().err
+    assert f"metrics psi_ratio, {said}" in err and "workers" not in err.split("metrics")[1]
+    assert not (tmp_path / ".lock").exists()
+
+
+def test_the_lock_file_goes_when_the_store_closes_and_still_keeps_out_a_second_writer(tmp_path):
+    from kresling.sweeps.store import SweepStore
+
+    manifest = {"format": "test", "columns": ["n", "index"]}
+    store = SweepStore.open(tmp_path, manifest)
+    assert (tmp_path / ".lock").exists()
+    with pytest.raises(ValueError, match="being written by another sweep"):
+        SweepStore.open(tmp_path, manifest)
+    store.close()
+    assert not (tmp_path / ".lock").exists()
+    again = SweepStore.open(tmp_path, manifest)  # reopened and locked anew
+    with pytest.raises(ValueError, match="being written by another sweep"):
+        SweepStore.open(tmp_path, manifest)
+    again.close()
+    assert not (tmp_path / ".lock").exists()
 
 
 def test_plot_writes_the_figures(tmp_path, capsys):

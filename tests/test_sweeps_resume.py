@@ -89,6 +89,7 @@ def test_ctrl_c_keeps_finished_chunks(tmp_path):
     finally:
         sweep_fakes.INTERRUPT_AT.clear()
     assert data_rows(out / "results.csv") == 36  # every chunk of n = 4
+    assert not (out / ".lock").exists()  # unlocked and removed on the way out
     resumed = sweep(grid, [sweep_fakes.INTERRUPTING], workers=1, out=out, progress=False)
     assert resumed.attrs["loaded"] == 36 and resumed.attrs["computed"] == 36
     assert resumed["fake"].tolist() == [d.psi_ratio for d in grid]

@@ -95,16 +95,20 @@ def _print_summary(table, metrics, out: Path) -> None:
             try:
                 best = table.best(metric.name, n=n)
             except ValueError:
-                rows.append((n, "-", "-", "-"))
+                rows.append((n, "-", "-", "-", "-"))
                 continue
-            rows.append((n, f"{best[metric.name]:.6g}", f"{best['Lc']:.6g}", f"{best['lam']:.6g}"))
+            rows.append((n, f"{best[metric.name]:.6g}", f"{best['Lc']:.6g}", f"{best['lam']:.6g}",
+                         ", ".join(best["boundary"]) or "-"))
         print(f"\nmaximum {metric.name} by n")
-        print_table(rows, ("n", metric.name, "Lc [mm]", "lam"))
+        print_table(rows, ("n", metric.name, "Lc [mm]", "lam", "on boundary"))
     main = metrics[0].name
     try:
         best = table.best(main)
         print(f"\noptimum ({main}): n = {best['n']}, Lc = {best['Lc']:.6g} mm, "
               f"lam = {best['lam']:.6g}: {main} = {best[main]:.6g}")
+        if best["boundary"]:
+            print(f"on the boundary of the searched domain ({', '.join(best['boundary'])}): a "
+                  f"better design may lie outside it; widen --n, --Lc or --lam to find out")
     except ValueError:
         print(f"\noptimum ({main}): no design succeeded")
     if failed:

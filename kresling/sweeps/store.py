@@ -9,7 +9,8 @@ complete.
 Opening a directory again reads back every complete row (a line cut short by a crash is
 dropped, and the file truncated to the last whole line), so only the missing designs are
 computed. A directory holding a different sweep is refused rather than mixed. A lock file
-keeps two processes from writing one directory at once.
+(``.lock``, removed when the sweep ends or is interrupted) keeps two processes from writing one
+directory at once.
 """
 
 from __future__ import annotations
@@ -223,20 +224,41 @@ def _write_atomic(path: Path, text: str) -> None:
 
 
 def _acquire(path: Path):
-    handle = open(path, "a")
-    if fcntl is not None:
+    """Lock ``path`` (created if missing); the lock is the open file. The file is removed
+    when the lock is released, so a check that the path still names the locked file guards
+    against locking a file another process has just released and removed."""
+    for _ in range(100):
+        handle = open(path, "a")
+        if fcntl is None:
+            return handle
         try:
             fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:
             handle.close()
             raise ValueError(f"{path.parent} is being written by another sweep (locked); wait "
                              f"for it or use another directory") from None
-    return handle
+        try:
+            same = os.stat(path).st_ino == os.fstat(handle.fileno()).st_ino
+        except FileNotFoundError:
+            same = False
+        if same:
+            return handle
+        handle.close()  # released and removed by its holder meanwhile: lock the new file
+    raise ValueError(f"{path.parent}: could not lock {path.name} (it keeps being replaced); "
+                     f"is another sweep starting and stopping in this directory?")
 
 
 def _release(handle) -> None:
-    if handle is not None:
+    """Remove the lock file, then unlock (in that order: see :func:`_acquire`)."""
+    if handle is None:
+        return
+    if fcntl is None:  # pragma: no cover - not POSIX: an open file cannot be removed there
         handle.close()
+    try:
+        os.unlink(handle.name)
+    except OSError:  # pragma: no cover - removed by hand; a file left does no harm
+        pass
+    handle.close()
 
 
 def _now() -> str:

@@ -102,9 +102,9 @@ def sweep(designs, metrics=DEFAULT_METRICS, *, workers=None, executor=None, out=
     pending = [i for i in range(len(design_set)) if i not in done]
     size = max(1, min(_MAX_CHUNK, len(pending) // (16 * handle.workers))) \
         if chunk_size is None else chunk_size
-    logger.info("sweep: %d designs (%d on disk), metrics %s, %d %s workers, chunks of %d",
-                len(design_set), loaded, ", ".join(m.name for m in metrics), handle.workers,
-                handle.kind or "executor", size)
+    logger.info("sweep: %d designs (%d on disk), metrics %s, %s, chunks of %d",
+                len(design_set), loaded, ", ".join(m.name for m in metrics),
+                _describe_workers(handle), size)
     bar = tqdm(total=len(design_set), initial=loaded, unit="design", desc="sweep",
                disable=None if progress else True, smoothing=0.05, dynamic_ncols=True)
     interrupted = True
@@ -129,6 +129,16 @@ def sweep(designs, metrics=DEFAULT_METRICS, *, workers=None, executor=None, out=
     logger.info("sweep: %d designs computed, %d loaded, %d failed, %.1f s", len(pending),
                 loaded, failed, seconds)
     return table
+
+
+def _describe_workers(handle) -> str:
+    """``"2 threads"``, ``"1 process"``, ``"8 workers of the given executor"``."""
+    count = handle.workers
+    if handle.kind == "threads":
+        return f"{count} thread{'s' if count != 1 else ''}"
+    if handle.kind == "processes":
+        return f"{count} process{'es' if count != 1 else ''}"
+    return f"{count} worker{'s' if count != 1 else ''} of the given executor"
 
 
 def _plan(metrics, design_set: DesignSet) -> Plan:
