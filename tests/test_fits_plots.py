@@ -41,3 +41,18 @@ def test_malformed_model_curve(result):
 def test_crease_runs_plot_marks_every_run():
     ax = plot_crease_runs(table1())
     assert len(ax.collections[0].get_offsets()) == 15
+
+
+def test_the_crease_runs_legend_covers_no_data():
+    # The report's Table 1 figure: the legend sat on the runs and the bands.
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    ax = plot_crease_runs(table1(), ax=Figure(figsize=(5.5, 4.0)).add_subplot(), title="Table 1")
+    figure = ax.figure
+    figure.tight_layout()
+    renderer = FigureCanvasAgg(figure).get_renderer()
+    legend, axes = ax.get_legend().get_window_extent(renderer), ax.get_window_extent(renderer)
+    assert not legend.overlaps(axes), (legend, axes)
+    assert figure.bbox.contains(legend.x1 - 1, legend.y0 + 1)  # still inside the figure
+    assert [t.get_text() for t in ax.get_legend().get_texts()][0] == "runs"

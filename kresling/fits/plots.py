@@ -82,7 +82,8 @@ def plot_bending_test(result: BendingStiffness, model=None, ax=None, *, title: s
 
 def plot_crease_runs(result: CreaseStiffness, ax=None, *, title: str = ""):
     """Stiffness of every run by sample, with the overall mean, ±1 SD band and the
-    confidence interval of the mean; flagged outliers in red.
+    confidence interval of the mean; flagged outliers in red. The legend is to the right of
+    the axes (``figure.tight_layout()`` makes room for it).
 
     Parameters
     ----------
@@ -112,7 +113,8 @@ def plot_crease_runs(result: CreaseStiffness, ax=None, *, title: str = ""):
     ax.set_xticks(range(len(labels)), labels)
     ax.set_xlabel("sample")
     ax.set_ylabel("crease stiffness k [N/rad]")
-    ax.legend(fontsize=7, loc="best")
+    # Beside the axes, not on them: inside, every placement hides runs or the bands.
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
     if title:
         ax.set_title(title, fontsize=9)
     return ax
