@@ -1,7 +1,10 @@
-// The tangent solver's paths (dense Cholesky, CHOLMOD, LDL^T with inertia, UMFPACK)
-// against dense references.
+// The tangent solver's paths (dense Cholesky, CHOLMOD simplicial and supernodal with AMD or
+// nested dissection, LDL^T with inertia, UMFPACK) against dense references, and the cost
+// model that chooses among the Cholesky factorisations.
 
 #include <random>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -9,7 +12,9 @@
 #include "kresling/solvers/tangent_solver.hpp"
 
 using namespace kresling;
+using kresling::solvers::CholeskyChoice;
 using kresling::solvers::Factorization;
+using kresling::solvers::Ordering;
 using kresling::solvers::SparseMatrix;
 using kresling::solvers::TangentSolver;
 
@@ -31,6 +36,45 @@ SparseMatrix lower_sparse(const Eigen::MatrixXd& A) {
   SparseMatrix S = A.triangularView<Eigen::Lower>().toDenseMatrix().sparseView();
   S.makeCompressed();
   return S;
+}
+
+// The 5-point Laplacian of an m x m grid, shifted to be positive definite (lower triangle):
+// the sparsity of a sheet, for which nested dissection beats AMD.
+SparseMatrix grid_laplacian(int m) {
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int i = 0; i < m; ++i) {
+    for (int j = 0; j < m; ++j) {
+      const int k = i * m + j;
+      t.emplace_back(k, k, 4.01);
+      if (i + 1 < m) t.emplace_back(k + m, k, -1.0);
+      if (j + 1 < m) t.emplace_back(k + 1, k, -1.0);
+    }
+  }
+  SparseMatrix S(m * m, m * m);
+  S.setFromTriplets(t.begin(), t.end());
+  return S;
+}
+
+// A banded positive definite matrix built sparse (lower triangle), for sizes where the
+// dense helper above would be wasteful.
+SparseMatrix sparse_banded(int n, int bandwidth, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Eigen::Triplet<double, int>> t;
+  for (int j = 0; j < n; ++j) {
+    t.emplace_back(j, j, 1.0 + 0.3 * 2 * bandwidth);  // diagonally dominant
+    for (int i = j + 1; i <= std::min(n - 1, j + bandwidth); ++i) t.emplace_back(i, j, 0.3 * u(rng));
+  }
+  SparseMatrix S(n, n);
+  S.setFromTriplets(t.begin(), t.end());
+  return S;
+}
+
+void expect_solves_sparse(const SparseMatrix& lower, TangentSolver& solver) {
+  const SparseMatrix A = lower.selfadjointView<Eigen::Lower>();
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), 1.0, 2.0);
+  const Eigen::VectorXd x = solver.solve(b);
+  EXPECT_LE((A * x - b).norm(), 1e-10 * b.norm());
 }
 
 void expect_solves(const Eigen::MatrixXd& A, TangentSolver& solver) {
@@ -93,4 +137,82 @@ TEST(TangentSolver, SingularMatrixIsReported) {
   for (int i = 0; i < 3; ++i) S.insert(i, i) = 0.0;
   TangentSolver solver;
   EXPECT_FALSE(solver.factorize(S).ok);
+}
+
+// The cost model's decisions at the sizes it was calibrated on (benchmarks/cpp/
+// factorisation_cost.cpp): the n = 10 Kresling bending specimen (136 DOFs, a 57 % full
+// factor) is dense; MERLIN2's 234-DOF Miura sheet is sparse (simplicial 102 us against
+// dense 256 us measured); a 25,545-DOF sheet (264 flops per factor entry) is supernodal.
+TEST(TangentSolver, CostModelChoosesByMeasuredCost) {
+  EXPECT_EQ(solvers::choose_cholesky(136, 5087, 2.26e5), CholeskyChoice::Dense);
+  EXPECT_EQ(solvers::choose_cholesky(52, 931, 1.92e4), CholeskyChoice::Dense);
+  EXPECT_EQ(solvers::choose_cholesky(234, 6867, 2.34e5), CholeskyChoice::Simplicial);
+  EXPECT_EQ(solvers::choose_cholesky(332, 16271, 9.17e5), CholeskyChoice::Simplicial);
+  EXPECT_EQ(solvers::choose_cholesky(12285, 1.44e6, 2.86e8), CholeskyChoice::Simplicial);
+  EXPECT_EQ(solvers::choose_cholesky(25545, 3.52e6, 9.28e8), CholeskyChoice::Supernodal);
+  // Never dense beyond its size limit, however full.
+  EXPECT_NE(solvers::choose_cholesky(5000, 5000.0 * 5001 / 2, 5000.0 * 5000 * 5000 / 3),
+            CholeskyChoice::Dense);
+}
+
+TEST(TangentSolver, EveryForcedCholeskySolves) {
+  const Eigen::MatrixXd A = banded(300, 8, Eigen::VectorXd::Constant(300, 10.0), 4);
+  const std::pair<CholeskyChoice, Factorization> paths[] = {
+      {CholeskyChoice::Dense, Factorization::DenseCholesky},
+      {CholeskyChoice::Simplicial, Factorization::Cholesky},
+      {CholeskyChoice::Supernodal, Factorization::SupernodalCholesky}};
+  for (const auto& [choice, method] : paths) {
+    TangentSolver solver(choice);
+    for (int repeat = 0; repeat < 2; ++repeat) {  // the second call reuses the analysis
+      const auto info = solver.factorize(lower_sparse(A));
+      EXPECT_TRUE(info.ok);
+      EXPECT_EQ(info.method, method);
+      EXPECT_EQ(info.negative_eigenvalues, 0);
+      expect_solves(A, solver);
+    }
+    EXPECT_EQ(solver.plan().cholesky, choice);
+  }
+}
+
+TEST(TangentSolver, SupernodalPathAlsoFindsTheInertia) {
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Constant(300, 10.0);
+  diagonal[7] = diagonal[150] = -10.0;
+  const Eigen::MatrixXd A = banded(300, 5, diagonal, 5);
+  TangentSolver solver(CholeskyChoice::Supernodal);
+  const auto info = solver.factorize(lower_sparse(A));
+  EXPECT_TRUE(info.ok);
+  EXPECT_EQ(info.method, Factorization::LDLT);
+  EXPECT_EQ(info.negative_eigenvalues, 2);
+  expect_solves(A, solver);
+}
+
+TEST(TangentSolver, HighFlopsPerEntryChoosesSupernodal) {
+  // 2,400 DOFs (beyond the dense limit) with a band of 300: ~300 flops per factor entry.
+  const SparseMatrix S = sparse_banded(2400, 300, 6);
+  TangentSolver solver;
+  const auto info = solver.factorize(S);
+  EXPECT_TRUE(info.ok);
+  EXPECT_EQ(info.method, Factorization::SupernodalCholesky);
+  EXPECT_GE(solver.plan().flops / solver.plan().factor_nonzeros, 250.0);
+  expect_solves_sparse(S, solver);
+}
+
+TEST(TangentSolver, SheetsGetNestedDissectionChainsAmd) {
+  // A 90 x 90 grid (8,100 DOFs): nested dissection needs fewer flops than AMD.
+  const SparseMatrix grid = grid_laplacian(90);
+  TangentSolver sheet;
+  EXPECT_TRUE(sheet.factorize(grid).ok);
+  EXPECT_EQ(sheet.plan().ordering, Ordering::NestedDissection);
+  expect_solves_sparse(grid, sheet);
+  // A long narrow band (a tower's tangent is one): AMD's ordering is already optimal.
+  const SparseMatrix chain = sparse_banded(3000, 4, 7);
+  TangentSolver tower;
+  EXPECT_TRUE(tower.factorize(chain).ok);
+  EXPECT_EQ(tower.factorize(chain).method, Factorization::Cholesky);
+  EXPECT_EQ(tower.plan().ordering, Ordering::AMD);
+  expect_solves_sparse(chain, tower);
+  // Below kTryNestedDissection DOFs only AMD is tried (its analysis is the cheapest).
+  TangentSolver small;
+  EXPECT_TRUE(small.factorize(grid_laplacian(30)).ok);
+  EXPECT_EQ(small.plan().ordering, Ordering::AMD);
 }

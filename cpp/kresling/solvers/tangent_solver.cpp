@@ -1,5 +1,6 @@
 #include "kresling/solvers/tangent_solver.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -12,38 +13,132 @@ namespace kresling::solvers {
 
 namespace {
 
-// Below this size, and with a lower triangle at least this dense, a dense Cholesky is
-// faster than CHOLMOD's sparse one: the Kresling specimens' tangents (136 DOFs for n = 10,
-// factor ~57 % dense) factorise in ~112 us dense against ~142 us sparse (benchmarks/).
-constexpr Index kDenseLimit = 400;
-constexpr double kDenseFill = 0.10;
+// The cost model, calibrated with benchmarks/cpp/factorisation_cost.cpp on this project's
+// 2-core machine (Release build, Debian's reference BLAS), on Kresling towers (52-1,984
+// DOFs) and Miura-ori sheets (63-100,233 DOFs):
+//  - dense Cholesky (Eigen, blocked): ~20 GFlop/s on its n^3/3 flops, plus ~1 ns per entry
+//    of the n x n matrix it fills (136 DOFs: 58 us; 332: 641 us; 556: 2.9 ms);
+//  - CHOLMOD simplicial: ~3 GFlop/s on CHOLMOD's flop count, plus ~6 us per call
+//    (136 DOFs: 85 us; 234: 102 us; 1,053: 1.4 ms);
+//  - CHOLMOD supernodal: its dense blocks go through the BLAS, which pays once the factor
+//    costs enough flops per entry; with the reference BLAS that is from ~250 (12,285 DOFs,
+//    199 flops per entry: simplicial 78 ms, supernodal 131 ms; 25,545 DOFs, 264: 473 ms
+//    against 359 ms). An optimised BLAS would move this down (CHOLMOD's own default is 40).
+constexpr double kDenseFlopsPerSecond = 20e9;
+constexpr double kDenseSecondsPerEntry = 1e-9;
+constexpr double kSimplicialFlopsPerSecond = 3e9;
+constexpr double kSimplicialSecondsPerCall = 6e-6;
+constexpr double kSupernodalFlopsPerEntry = 250.0;
+// A dense matrix this large never wins (0.45 s at 3,000 DOFs) and would cost memory.
+constexpr Index kDenseLimit = 2000;
 
-bool prefer_dense(const SparseMatrix& K) {
-  const double n = static_cast<double>(K.rows());
-  return K.rows() <= kDenseLimit && K.nonZeros() >= kDenseFill * n * (n + 1) / 2;
+double dense_seconds(Index n) {
+  const double m = static_cast<double>(n);
+  return m * m * m / 3.0 / kDenseFlopsPerSecond + m * m * kDenseSecondsPerEntry;
+}
+
+double simplicial_seconds(double flops) {
+  return flops / kSimplicialFlopsPerSecond + kSimplicialSecondsPerCall;
+}
+
+Ordering ordering_of(int cholmod_ordering) {
+  switch (cholmod_ordering) {
+    case CHOLMOD_AMD:
+      return Ordering::AMD;
+    case CHOLMOD_METIS:
+    case CHOLMOD_NESDIS:
+      return Ordering::NestedDissection;
+    default:
+      return Ordering::Other;
+  }
+}
+
+// The orderings to try: AMD alone for small tangents, AMD and CHOLMOD's nested dissection
+// (METIS bisection) from kTryNestedDissection DOFs up; CHOLMOD keeps the better one.
+void set_orderings(cholmod_common& c, Index n) {
+  c.nmethods = n >= kTryNestedDissection ? 2 : 1;
+  c.method[0].ordering = CHOLMOD_AMD;
+  c.method[1].ordering = CHOLMOD_NESDIS;
+  c.postorder = 1;
 }
 
 }  // namespace
 
+CholeskyChoice choose_cholesky(Index n, double factor_nonzeros, double flops) {
+  if (factor_nonzeros > 0 && flops / factor_nonzeros >= kSupernodalFlopsPerEntry) {
+    return CholeskyChoice::Supernodal;
+  }
+  if (n <= kDenseLimit && dense_seconds(n) < simplicial_seconds(flops)) {
+    return CholeskyChoice::Dense;
+  }
+  return CholeskyChoice::Simplicial;
+}
+
 struct TangentSolver::Impl {
+  CholeskyChoice requested = CholeskyChoice::Auto;
+  FactorizationPlan plan;
+  bool planned = false;
   Eigen::MatrixXd dense_matrix;
   Eigen::LLT<Eigen::MatrixXd, Eigen::Lower> dense;
-  // Simplicial: at the sizes of these models (10^2-10^4 DOFs, sparse) it beats the
-  // supernodal factorisation, which leans on BLAS (Debian links the reference BLAS) and
-  // OpenMP threads whose start-up cost dominates small factorisations.
+  // Simplicial for most models; at these sizes the supernodal factorisation leans on a
+  // BLAS (Debian links the reference one) whose per-call cost dominates small blocks.
   Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> cholesky;
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> supernodal;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
   Eigen::UmfPackLU<SparseMatrix> lu;
-  bool cholesky_analysed = false, ldlt_analysed = false, lu_analysed = false;
+  bool ldlt_analysed = false, lu_analysed = false;
   Factorization current = Factorization::None;
   SparseMatrix whole;  // the full matrix UMFPACK factorises
+
+  void make_plan(const SparseMatrix& K);
 };
 
-TangentSolver::TangentSolver() : impl_(std::make_unique<Impl>()) {
+void TangentSolver::Impl::make_plan(const SparseMatrix& K) {
+  const auto start = std::chrono::steady_clock::now();
+  const Index n = K.rows();
+  // The symbolic analysis is what the cost model needs (flops, factor entries); it is
+  // kept for the simplicial factorisation, or redone with the same ordering if the
+  // supernodal one is chosen. A forced dense factorisation skips it.
+  if (requested == CholeskyChoice::Dense) {
+    plan.cholesky = CholeskyChoice::Dense;
+  } else {
+    cholmod_common& c = cholesky.cholmod();
+    set_orderings(c, n);
+    cholesky.analyzePattern(K);
+    plan.factor_nonzeros = c.lnz;
+    plan.flops = c.fl;
+    const int selected = c.method[c.selected].ordering;
+    plan.ordering = ordering_of(selected);
+    plan.cholesky = requested == CholeskyChoice::Auto ? choose_cholesky(n, c.lnz, c.fl)
+                                                       : requested;
+    if (plan.cholesky == CholeskyChoice::Supernodal) {
+      cholmod_common& s = supernodal.cholmod();
+      s.nmethods = 1;
+      s.method[0].ordering = selected;
+      s.postorder = 1;
+      supernodal.analyzePattern(K);
+    }
+  }
+  if (plan.cholesky == CholeskyChoice::Dense) {
+    const double m = static_cast<double>(n);
+    plan.ordering = Ordering::None;
+    plan.factor_nonzeros = m * (m + 1) / 2;
+    plan.flops = m * m * m / 3.0;
+  }
+  plan.analysis_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  planned = true;
+}
+
+TangentSolver::TangentSolver(CholeskyChoice choice) : impl_(std::make_unique<Impl>()) {
+  impl_->requested = choice;
   // An indefinite tangent is an expected outcome here, not something to print about.
   impl_->cholesky.cholmod().print = 0;
+  impl_->supernodal.cholmod().print = 0;
 }
 TangentSolver::~TangentSolver() = default;
+
+const FactorizationPlan& TangentSolver::plan() const { return impl_->plan; }
 
 FactorizeInfo TangentSolver::factorize(const SparseMatrix& K) {
   Impl& s = *impl_;
@@ -53,28 +148,34 @@ FactorizeInfo TangentSolver::factorize(const SparseMatrix& K) {
     s.current = Factorization::Cholesky;
     return {true, Factorization::Cholesky, 0};
   }
-  if (prefer_dense(K)) {
-    s.dense_matrix.setZero(K.rows(), K.cols());
-    for (int col = 0; col < K.outerSize(); ++col) {
-      for (SparseMatrix::InnerIterator it(K, col); it; ++it) {
-        if (it.row() >= it.col()) s.dense_matrix(it.row(), it.col()) = it.value();
+  if (!s.planned) s.make_plan(K);
+  switch (s.plan.cholesky) {
+    case CholeskyChoice::Dense:
+      s.dense_matrix.setZero(K.rows(), K.cols());
+      for (int col = 0; col < K.outerSize(); ++col) {
+        for (SparseMatrix::InnerIterator it(K, col); it; ++it) {
+          if (it.row() >= it.col()) s.dense_matrix(it.row(), it.col()) = it.value();
+        }
       }
-    }
-    s.dense.compute(s.dense_matrix);
-    if (s.dense.info() == Eigen::Success) {
-      s.current = Factorization::DenseCholesky;
-      return {true, Factorization::DenseCholesky, 0};
-    }
-  } else {
-    if (!s.cholesky_analysed) {
-      s.cholesky.analyzePattern(K);
-      s.cholesky_analysed = true;
-    }
-    s.cholesky.factorize(K);
-    if (s.cholesky.info() == Eigen::Success) {
-      s.current = Factorization::Cholesky;
-      return {true, Factorization::Cholesky, 0};
-    }
+      s.dense.compute(s.dense_matrix);
+      if (s.dense.info() == Eigen::Success) {
+        s.current = Factorization::DenseCholesky;
+        return {true, Factorization::DenseCholesky, 0};
+      }
+      break;
+    case CholeskyChoice::Supernodal:
+      s.supernodal.factorize(K);
+      if (s.supernodal.info() == Eigen::Success) {
+        s.current = Factorization::SupernodalCholesky;
+        return {true, Factorization::SupernodalCholesky, 0};
+      }
+      break;
+    default:
+      s.cholesky.factorize(K);
+      if (s.cholesky.info() == Eigen::Success) {
+        s.current = Factorization::Cholesky;
+        return {true, Factorization::Cholesky, 0};
+      }
   }
   // Indefinite (or singular): LDL^T for the inertia.
   if (!s.ldlt_analysed) {
@@ -110,6 +211,8 @@ VectorX TangentSolver::solve(const VectorX& b) const {
   switch (impl_->current) {
     case Factorization::Cholesky:
       return b.size() ? VectorX(impl_->cholesky.solve(b)) : VectorX(b);
+    case Factorization::SupernodalCholesky:
+      return impl_->supernodal.solve(b);
     case Factorization::DenseCholesky:
       return impl_->dense.solve(b);
     case Factorization::LDLT:
