@@ -3,6 +3,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <type_traits>
+
 #include "bindings.hpp"
 #include "kresling/analyses/arm_analysis.hpp"
 #include "kresling/analyses/bending_test.hpp"
@@ -25,50 +27,77 @@ py::array_t<T> array(const std::vector<T>& v) {
   return py::array_t<T>(v.size(), v.data());
 }
 
-py::dict bending_result_dict(const analyses::BendingResult& r) {
-  py::dict out;
-  out["stiffness"] = r.stiffness;
-  out["stiffness_intercept"] = r.stiffness_intercept;
-  out["intercept"] = r.intercept;
-  out["module_length"] = r.module_length;
-  out["deflection"] = array(r.deflection);
-  out["force"] = array(r.force);
-  out["angle"] = array(r.angle);
-  out["moment"] = array(r.moment);
-  out["iterations"] = array(r.iterations);
-  out["negative_eigenvalues"] = array(r.negative_eigenvalues);
-  out["final_displacement"] =
-      py::array_t<double>(r.final_displacement.size(), r.final_displacement.data());
-  out["completed"] = r.completed;
-  out["message"] = r.message;
-  out["num_dofs"] = r.num_dofs;
-  out["num_free_dofs"] = r.num_free_dofs;
-  return out;
+// A field of a result struct as a read-only property: vectors as numpy arrays (copies: the
+// Python side owns its arrays), the rest as they are. The docstring is the C++ comment's.
+template <typename Class, typename T, typename Result>
+void field(py::class_<Result>& c, const char* name, T Class::*member, const char* doc) {
+  c.def_property_readonly(
+      name,
+      [member](const Result& r) {
+        if constexpr (std::is_same_v<T, std::vector<double>> || std::is_same_v<T, std::vector<int>>) {
+          return array((r.*member));
+        } else if constexpr (std::is_same_v<T, VectorX>) {
+          return py::array_t<double>((r.*member).size(), (r.*member).data());
+        } else {
+          return r.*member;
+        }
+      },
+      doc);
 }
 
-py::dict snap_result_dict(const analyses::SnapThroughResult& r) {
-  py::dict out;
-  out["snap_force"] = r.snap_force;
-  out["snap_displacement"] = r.snap_displacement;
-  out["unstable_displacement"] = r.unstable_displacement;
-  out["energy_barrier"] = r.energy_barrier;
-  out["minimum_force"] = r.minimum_force;
-  out["bistable"] = r.bistable;
-  out["stable_displacement"] = r.stable_displacement;
-  out["stable_height"] = r.stable_height;
-  out["stable_energy"] = r.stable_energy;
-  out["stable_tilt"] = r.stable_tilt;
-  out["stable_negative_eigenvalues"] = r.stable_negative_eigenvalues;
-  out["bistability"] = r.bistability;
-  out["extended_height"] = r.extended_height;
-  out["contracted_height"] = r.contracted_height;
-  out["displacement"] = array(r.displacement);
-  out["force"] = array(r.force);
-  out["energy"] = array(r.energy);
-  out["iterations"] = array(r.iterations);
-  out["completed"] = r.completed;
-  out["message"] = r.message;
-  return out;
+void bind_bending_result(py::module_& m) {
+  using R = analyses::BendingResult;
+  py::class_<R> c(m, "BendingResult",
+                  "One bending test's result (read-only; kresling.analyses.BendingResult reads "
+                  "it field by field)");
+  field(c, "stiffness", &R::stiffness, "K_B, slope of M(delta) through the origin [N m/rad]");
+  field(c, "stiffness_intercept", &R::stiffness_intercept,
+        "K_B of the least-squares line with intercept [N m/rad]");
+  field(c, "intercept", &R::intercept, "that line's moment at delta = 0 [N m]");
+  field(c, "module_length", &R::module_length, "L = two cells' height [mm]");
+  field(c, "deflection", &R::deflection, "centre of the middle polygon, downward (S,) [mm]");
+  field(c, "force", &R::force, "summed reaction at the driven nodes (S,) [N]");
+  field(c, "angle", &R::angle, "deflection angle delta (S,) [rad]");
+  field(c, "moment", &R::moment, "bending moment M (S,) [N m]");
+  field(c, "iterations", &R::iterations, "Newton iterations per increment (S,)");
+  field(c, "negative_eigenvalues", &R::negative_eigenvalues,
+        "negative eigenvalues of the free tangent per increment (S,)");
+  field(c, "final_displacement", &R::final_displacement,
+        "every DOF's displacement at the last converged step (3N,) [mm]; empty if none");
+  field(c, "completed", &R::completed, "the drive reached its full travel");
+  field(c, "message", &R::message, "why the run stopped early");
+  field(c, "num_dofs", &R::num_dofs, "DOFs of the specimen");
+  field(c, "num_free_dofs", &R::num_free_dofs, "DOFs neither supported nor driven");
+}
+
+void bind_snap_result(py::module_& m) {
+  using R = analyses::SnapThroughResult;
+  py::class_<R> c(m, "SnapThroughResult",
+                  "One snap-through test's result (read-only; "
+                  "kresling.analyses.SnapThroughResult reads it field by field)");
+  field(c, "snap_force", &R::snap_force, "first local maximum of F [N]; NaN if none");
+  field(c, "snap_displacement", &R::snap_displacement, "d at that maximum [mm]");
+  field(c, "unstable_displacement", &R::unstable_displacement,
+        "first zero of F after the peak [mm]");
+  field(c, "energy_barrier", &R::energy_barrier, "strain energy at the unstable state [N mm]");
+  field(c, "minimum_force", &R::minimum_force, "smallest F after the peak [N]");
+  field(c, "bistable", &R::bistable, "the released cell rests at a second energy minimum");
+  field(c, "stable_displacement", &R::stable_displacement,
+        "travel of the second stable state (mean of the top perimeter) [mm]");
+  field(c, "stable_height", &R::stable_height, "its cell height, Le - d [mm]");
+  field(c, "stable_energy", &R::stable_energy, "its strain energy [N mm]");
+  field(c, "stable_tilt", &R::stable_tilt, "its top polygon's tilt from horizontal [rad]");
+  field(c, "stable_negative_eigenvalues", &R::stable_negative_eigenvalues,
+        "of its tangent (0 when found; -1: not reached)");
+  field(c, "bistability", &R::bistability, "why the cell is (not) bistable, in words");
+  field(c, "extended_height", &R::extended_height, "Le [mm]");
+  field(c, "contracted_height", &R::contracted_height, "Lc [mm]");
+  field(c, "displacement", &R::displacement, "the path's travel d (S + 1,) [mm], from 0");
+  field(c, "force", &R::force, "the path's force F (S + 1,) [N]");
+  field(c, "energy", &R::energy, "the path's strain energy (S + 1,) [N mm]");
+  field(c, "iterations", &R::iterations, "Newton iterations per increment (S + 1,)");
+  field(c, "completed", &R::completed, "the drive reached Lc");
+  field(c, "message", &R::message, "why the path stopped early");
 }
 
 // Every path-following call runs without the GIL (the interrupt check takes it back).
@@ -217,6 +246,8 @@ void bind_arm_analysis(py::module_& m) {
 }  // namespace
 
 void bind_analyses(py::module_& m) {
+  bind_bending_result(m);
+  bind_snap_result(m);
   bind_arm_analysis(m);
   py::class_<analyses::BendingTest>(m, "BendingTest")
       .def(py::init([](int n, double deflection, double deflection_angle, int steps, int cells,
@@ -242,7 +273,7 @@ void bind_analyses(py::module_& m) {
               py::gil_scoped_release release;
               r = test.run(design, state);
             }
-            return bending_result_dict(r);
+            return r;
           },
           py::arg("design"), py::arg("state"));
 
@@ -282,7 +313,7 @@ void bind_analyses(py::module_& m) {
               py::gil_scoped_release release;
               r = test.run(design);
             }
-            return snap_result_dict(r);
+            return r;
           },
           py::arg("design"));
 }

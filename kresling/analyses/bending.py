@@ -13,7 +13,7 @@ parametric study drives it to a 0.001 rad deflection (``L tan(0.001)``) in 10 st
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -79,6 +79,16 @@ class BendingResult:
     message: str
     num_free_dofs: int
     final_displacement: np.ndarray = None
+
+    @classmethod
+    def _from_core(cls, core, **values) -> "BendingResult":
+        """Read the C++ core's result (``kresling._core.analyses.BendingResult``): every field
+        of this class not given in ``values`` is one of its properties."""
+        for f in fields(cls):
+            if f.name not in values:
+                value = getattr(core, f.name)
+                values[f.name] = value.reshape(-1, 3) if f.name == "final_displacement" else value
+        return cls(**values)
 
     @property
     def state_name(self) -> str:
@@ -169,16 +179,8 @@ class BendingTester:
         state = state_index(state)
         if design.n != self.n:
             raise ValueError(f"design.n = {design.n} is invalid: this tester is for n = {self.n}")
-        d = self._core.run(design._core, state)
-        arrays = {k: np.asarray(d[k]) for k in ("deflection", "force", "angle", "moment",
-                                                "iterations", "negative_eigenvalues")}
-        return BendingResult(design=design, state=state, stiffness=d["stiffness"],
-                             stiffness_intercept=d["stiffness_intercept"],
-                             intercept=d["intercept"], module_length=d["module_length"],
-                             completed=d["completed"], message=d["message"],
-                             num_free_dofs=d["num_free_dofs"],
-                             final_displacement=np.asarray(d["final_displacement"]).reshape(-1, 3),
-                             **arrays)
+        return BendingResult._from_core(self._core.run(design._core, state), design=design,
+                                        state=state)
 
 
 def bending_test(design: Design, state, protocol="5mm", **options) -> BendingResult:

@@ -35,7 +35,7 @@ the first maximum flattens, rises again slightly with Lc and then disappears (Na
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -119,6 +119,13 @@ class SnapThroughResult:
     completed: bool
     message: str
 
+    @classmethod
+    def _from_core(cls, core, design) -> "SnapThroughResult":
+        """Read the C++ core's result (``kresling._core.analyses.SnapThroughResult``): every
+        field of this class but ``design`` is one of its properties."""
+        return cls(design=design, **{f.name: getattr(core, f.name) for f in fields(cls)
+                                     if f.name != "design"})
+
     @property
     def has_peak(self) -> bool:
         """Whether the force has a local maximum (a snap-through force exists)."""
@@ -171,9 +178,7 @@ class SnapThroughTester:
         design = as_design(design)
         if design.n != self.n:
             raise ValueError(f"design.n = {design.n} is invalid: this tester is for n = {self.n}")
-        d = self._core.run(design._core)
-        arrays = {k: np.asarray(d.pop(k)) for k in ("displacement", "force", "energy", "iterations")}
-        return SnapThroughResult(design=design, **d, **arrays)
+        return SnapThroughResult._from_core(self._core.run(design._core), design)
 
 
 def snap_through(design: Design, *, steps=DEFAULT_STEPS, parameters=None,
