@@ -150,23 +150,27 @@ def fit_bending_trial(trial: BendingTrial, *, method: str = "intercept",
     if offset is None:
         offset = CONTRACTED_OFFSET if state == "contracted" else 0.0
     label = trial.source or f"{state} trial"
-    try:
-        angle, moment = moment_and_angle(trial.displacement, trial.force, trial.module_length)
-        used = angle >= offset if offset > 0 else np.ones(angle.shape, dtype=bool)
-        if used.sum() < 2:
-            raise ValueError(f"{int(used.sum())} point(s) at or past the offset angle "
-                             f"{offset} rad (largest angle {angle.max():.4g} rad): a line "
-                             "needs 2")
-        if method == "origin":
-            K, intercept = slope_through_origin(angle[used], moment[used]), 0.0
-        else:
-            K, intercept = fit_line(angle[used], moment[used], "angle")
-        if not (np.isfinite(K) and np.isfinite(intercept)):
-            raise ValueError(f"the fitted K_B = {K!r} is not finite: the values are too large "
-                             f"for the fit's sums (force up to {np.abs(trial.force).max():.3g} "
-                             f"N, displacement up to {np.abs(trial.displacement).max():.3g} mm)")
-    except ValueError as error:
-        raise ValueError(f"{label}: {error}") from None
+    # Overflow in the sums is not warned about: a non-finite fit is refused below, naming
+    # the record.
+    with np.errstate(over="ignore", invalid="ignore"):
+        try:
+            angle, moment = moment_and_angle(trial.displacement, trial.force, trial.module_length)
+            used = angle >= offset if offset > 0 else np.ones(angle.shape, dtype=bool)
+            if used.sum() < 2:
+                raise ValueError(f"{int(used.sum())} point(s) at or past the offset angle "
+                                 f"{offset} rad (largest angle {angle.max():.4g} rad): a line "
+                                 "needs 2")
+            if method == "origin":
+                K, intercept = slope_through_origin(angle[used], moment[used]), 0.0
+            else:
+                K, intercept = fit_line(angle[used], moment[used], "angle")
+            if not (np.isfinite(K) and np.isfinite(intercept)):
+                raise ValueError(f"the fitted K_B = {K!r} is not finite: the values are too "
+                                 f"large for the fit's sums (force up to "
+                                 f"{np.abs(trial.force).max():.3g} N, displacement up to "
+                                 f"{np.abs(trial.displacement).max():.3g} mm)")
+        except ValueError as error:
+            raise ValueError(f"{label}: {error}") from None
     return BendingTrialFit(state, K, intercept, method, float(offset), int(used.sum()),
                            angle, moment, trial.source)
 
