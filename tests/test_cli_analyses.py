@@ -51,7 +51,7 @@ def test_tables_and_snap_plot(tmp_path, capsys):
 @pytest.mark.parametrize("args, message", [
     (["bend", "--n", "5", "--lam", "0.9", "--Lc", "15"], "n = 5 is invalid: must be even for the bending test"),
     (["bend", "--n", "6", "--lam", "0.9", "--Lc", "15", "--deflection-rad", "0"], "--deflection-rad = 0.0 is invalid"),
-    (["bend", "--n", "6", "--lam", "0.9", "--Lc", "15", "--deflection-rad", "1.5"], "deflection_angle = 1.5 is invalid"),
+    (["bend", "--n", "6", "--lam", "0.9", "--Lc", "15", "--deflection-rad", "1.5"], "--deflection-rad = 1.5 is invalid"),
     (["bend", "--n", "6", "--lam", "1.3", "--Lc", "15"], "lam = 1.3 is invalid"),
     (["snap", "--n", "6", "--lam", "0.9", "--Lc", "15", "--steps", "0"], "steps = 0 is invalid"),
     (["snap", "--n", "6", "--lam", "0.9", "--Lc", "-1"], "Lc = -1 is invalid"),

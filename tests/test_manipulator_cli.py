@@ -33,7 +33,8 @@ def test_json_markers_tendons_and_counts(tmp_path):
 def test_table_and_inverse(capsys):
     assert main(["manipulator", "--config", "000", "--k", "3"]) == 0
     assert "marker" in capsys.readouterr().out
-    assert main(["manipulator", "--target", "0", "0", "2000", "--json"]) == 0
+    # Beyond reach: the nearest point is printed and the status says it was not reached.
+    assert main(["manipulator", "--target", "0", "0", "2000", "--json"]) == 1
     out = json.loads(capsys.readouterr().out)
     assert out["reachable"] is False and out["config"] == "111"
 
@@ -42,7 +43,7 @@ def test_table_and_inverse(capsys):
     "args, message",
     [
         (["--config", "121"], "configuration = '121' is invalid"),
-        (["--config", "101", "--k", "16"], "l1[module 2] = -2 is invalid"),
+        (["--config", "101", "--k", "16"], "--k = 16.0 is invalid: must be in [-30, 15] mm"),
         (["--config", "101", "--d", "-1"], "tendon_radius = -1"),
         (["--config", "101", "--modules", "0"], "modules = 0 is invalid"),
     ],

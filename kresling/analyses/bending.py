@@ -24,7 +24,7 @@ from kresling.model.kresling_specimen import SpecimenParameters
 from kresling.solvers.displacement_control import displacement_control_options
 
 __all__ = ["PROTOCOLS", "BendingResult", "BendingComparison", "BendingTester", "bending_test",
-           "bending_stiffness"]
+           "bending_stiffness", "require_even_n"]
 
 #: The thesis's two loading protocols: Table 3 (5 mm in 350 steps) and the parametric
 #: study (0.001 rad, 10 steps: our choice, docs/thesis_equations.md, 'Bending test'; the
@@ -33,6 +33,26 @@ PROTOCOLS = {
     "5mm": {"deflection": 5.0, "deflection_angle": 0.0, "steps": 350},
     "0.001rad": {"deflection": 0.0, "deflection_angle": 0.001, "steps": 10},
 }
+
+
+def require_even_n(n) -> int:
+    """``n`` if the bending test can be run on it; otherwise a ValueError that says why not.
+
+    The test pins each end polygon at two opposite vertices, 0 and n/2, as the thesis's model
+    does (Appendix B). A polygon with an odd number of sides has no vertex opposite another:
+    opposite vertex 0 lies the middle of an edge, where the model has no node, so those
+    supports cannot be placed, and any other choice (a vertex and an edge's midpoint node, or
+    two vertices off the diameter) would be a different test whose K_B the thesis's cannot be
+    compared with. Odd n is fine everywhere else (geometry, snap-through, patterns).
+    """
+    n = as_integer("n", n)
+    if n % 2:
+        raise ValueError(
+            f"n = {n} is invalid: must be even for the bending test: it pins each end polygon "
+            f"at two opposite vertices (0 and n/2), and a polygon with an odd number of sides "
+            f"has none (opposite a vertex lies the middle of an edge, where the model has no "
+            f"node). The snap-through test and the geometry take any n >= 3")
+    return n
 
 
 @dataclass(frozen=True)
@@ -61,6 +81,13 @@ class BendingResult:
     final_displacement : ndarray, shape (N, 3)
         Every node's displacement at the last converged step [mm] (empty if none), in the
         node order of ``kresling_specimen(design, [state] * cells)``.
+    target_deflection : float
+        The drive's full travel [mm] (``deflection``, or ``L tan(deflection_angle)``).
+
+    Notes
+    -----
+    A run that stopped early (``completed`` False) is *partial*: ``stiffness`` is fitted to
+    the increments that converged, ``travel_fraction`` of the drive; its ``repr`` says so.
     """
 
     design: Design
@@ -79,6 +106,7 @@ class BendingResult:
     message: str
     num_free_dofs: int
     final_displacement: np.ndarray = None
+    target_deflection: float = float("nan")
 
     @classmethod
     def _from_core(cls, core, **values) -> "BendingResult":
@@ -89,6 +117,29 @@ class BendingResult:
                 value = getattr(core, f.name)
                 values[f.name] = value.reshape(-1, 3) if f.name == "final_displacement" else value
         return cls(**values)
+
+    def __repr__(self) -> str:
+        status = "" if self.completed else (f", PARTIAL: stopped at {self.travel_fraction:.0%} "
+                                            f"of the travel ({self.message})")
+        return (f"BendingResult({self.design!r}, {self.state_name}, K_B = "
+                f"{self.stiffness:.6g} N*m/rad{status})")
+
+    @property
+    def partial(self) -> bool:
+        """True if the run stopped before the end of its travel (the values are fitted to the
+        part that converged)."""
+        return not self.completed
+
+    @property
+    def travel_fraction(self) -> float:
+        """Fraction of the drive's travel reached (1 for a completed run; 0 if no increment
+        converged)."""
+        if self.completed:
+            return 1.0
+        if not (len(self.deflection) and np.isfinite(self.target_deflection)
+                and self.target_deflection > 0):
+            return 0.0
+        return float(min(1.0, abs(self.deflection[-1]) / self.target_deflection))
 
     @property
     def state_name(self) -> str:
@@ -111,6 +162,19 @@ class BendingComparison:
     @property
     def ratio(self) -> float:
         return self.extended.stiffness / self.contracted.stiffness
+
+    @property
+    def partial(self) -> bool:
+        """True if either run stopped early (then so is the ratio)."""
+        return self.extended.partial or self.contracted.partial
+
+    def __repr__(self) -> str:
+        stopped = [f"{r.state_name} stopped at {r.travel_fraction:.0%}"
+                   for r in (self.extended, self.contracted) if r.partial]
+        status = f", PARTIAL: {'; '.join(stopped)}" if stopped else ""
+        return (f"BendingComparison({self.extended.design!r}, K_ext = "
+                f"{self.extended.stiffness:.6g}, K_con = {self.contracted.stiffness:.6g} "
+                f"N*m/rad, ratio {self.ratio:.6g}{status})")
 
     @property
     def completed(self) -> bool:
@@ -143,7 +207,8 @@ class BendingTester:
     Parameters
     ----------
     n : int
-        Sides of the polygon (even: the pins need opposite vertices).
+        Sides of the polygon, even: the pins need opposite vertices (see
+        :func:`require_even_n` for why odd n cannot be tested).
     protocol : {"5mm", "0.001rad"}, optional
         Presets of ``deflection``, ``deflection_angle`` and ``steps`` (:data:`PROTOCOLS`).
     deflection : float, optional
@@ -165,7 +230,7 @@ class BendingTester:
     def __init__(self, n, protocol="5mm", *, deflection=None, deflection_angle=None, steps=None,
                  cells=4, parameters=None, extrapolation=2, **solver):
         preset = protocol_settings(protocol, deflection, deflection_angle, steps)
-        self.n = as_integer("n", n, minimum=3)
+        self.n = require_even_n(as_integer("n", n, minimum=3))
         self.parameters = parameters or SpecimenParameters()
         self.settings = dict(preset, cells=as_integer("cells", cells))
         options = displacement_control_options(extrapolation=extrapolation, **solver)
@@ -179,8 +244,11 @@ class BendingTester:
         state = state_index(state)
         if design.n != self.n:
             raise ValueError(f"design.n = {design.n} is invalid: this tester is for n = {self.n}")
-        return BendingResult._from_core(self._core.run(design._core, state), design=design,
-                                        state=state)
+        core = self._core.run(design._core, state)
+        target = self.settings["deflection"] if self.settings["deflection_angle"] == 0 else \
+            core.module_length * np.tan(self.settings["deflection_angle"])
+        return BendingResult._from_core(core, design=design, state=state,
+                                        target_deflection=float(target))
 
 
 def bending_test(design: Design, state, protocol="5mm", **options) -> BendingResult:

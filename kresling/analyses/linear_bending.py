@@ -32,6 +32,7 @@ import scipy.sparse.linalg
 
 from kresling import _core
 from kresling._validation import as_finite_real, as_integer
+from kresling.analyses.bending import require_even_n
 from kresling.assembly import tangent_stiffness
 from kresling.geometry import Design, as_design, state_index
 from kresling.model.kresling_specimen import SpecimenParameters, kresling_specimen
@@ -75,8 +76,8 @@ class LinearBendingTester:
     def __init__(self, n, *, cells=4, parameters=None):
         n, cells = as_integer("n", n), as_integer("cells", cells)
         if n < 4 or n % 2:
-            raise ValueError(f"n = {n!r} is invalid: must be even for the bending test: each end "
-                             "is pinned along a line through two opposite points of its polygon")
+            require_even_n(n)   # odd: says why
+            raise ValueError(f"n = {n!r} is invalid: must be even and >= 4 for the bending test")
         if cells < 2 or cells % 2:
             raise ValueError(f"cells = {cells!r} is invalid: must be an even number >= 2 (the "
                              "load acts on the middle polygon)")

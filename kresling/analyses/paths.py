@@ -19,13 +19,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from kresling.analyses.bending import PROTOCOLS
+from kresling.analyses.bending import PROTOCOLS, require_even_n
 from kresling.analyses.snap_through import DEFAULT_STEPS
 from kresling.geometry import Design, state_index
 from kresling.model.kresling_specimen import kresling_specimen
 from kresling.solvers.displacement_control import solve_displacement_control
 
 __all__ = ["BendingPath", "SnapThroughPath", "bending_path", "snap_through_path"]
+
+# The smallest facet angle the bending test accepts [rad], as the C++ tester (cell_checks):
+# hinge angles near a flat fold carry errors up to ~1e-8 rad.
+_MIN_FACET_ANGLE = 1e-6
 
 
 @dataclass(frozen=True)
@@ -126,10 +130,18 @@ def bending_path(design: Design, state, protocol="5mm", *, deflection=None,
         settings.update(deflection_angle=float(deflection_angle))
     if steps is not None:
         settings["steps"] = steps
-    n = design.n
-    if n % 2:
-        raise ValueError(f"n = {n} is invalid: must be even for the bending test: each end is "
-                         "pinned at vertices 0 and n/2, which must be opposite")
+    n = require_even_n(design.n)
+    psi = design.psi_con if state == 0 else design.psi_ext
+    if psi < _MIN_FACET_ANGLE:
+        # As the bending tester says it: a flat module has no length to bend over, and the
+        # deflection the protocol derives from it would be zero.
+        name = "Lc" if state == 0 else "lam"
+        raise ValueError(
+            f"{name} = {getattr(design, name)!r} is invalid: must be > 0 for the bending test in "
+            f"the {'contracted' if state == 0 else 'extended'} state, and large enough that the "
+            f"cell is not flat to within the model's resolution: Psi_"
+            f"{'con' if state == 0 else 'ext'} = {psi:.3g} rad, must be >= "
+            f"{_MIN_FACET_ANGLE:g} rad")
     if cells < 2 or cells % 2:
         raise ValueError(f"cells = {cells!r} is invalid: must be an even number >= 2 (the load "
                          "acts on the middle polygon)")

@@ -6,25 +6,28 @@ from __future__ import annotations
 import json
 import logging
 import math
+import re
 import sys
 from contextlib import contextmanager
 
 import numpy as np
 
 
-def _plain(value):
+def _plain(value, infinite_as_text=False):
     if isinstance(value, dict):
-        return {str(k): _plain(v) for k, v in value.items()}
+        return {str(k): _plain(v, infinite_as_text) for k, v in value.items()}
     if isinstance(value, (list, tuple)):
-        return [_plain(v) for v in value]
+        return [_plain(v, infinite_as_text) for v in value]
     if isinstance(value, np.ndarray):
-        return _plain(value.tolist())
+        return _plain(value.tolist(), infinite_as_text)
     if isinstance(value, (np.bool_, bool)):
         return bool(value)
     if isinstance(value, np.integer):
         return int(value)
     if isinstance(value, (np.floating, float)):
         value = float(value)
+        if math.isinf(value) and infinite_as_text:
+            return "inf" if value > 0 else "-inf"
         if not math.isfinite(value):
             # JSON has no NaN; a non-finite number here is a bug upstream, so say so.
             raise ValueError(f"non-finite number {value} cannot be written as JSON")
@@ -32,9 +35,14 @@ def _plain(value):
     return value
 
 
-def print_json(obj) -> None:
-    """Print ``obj`` as one JSON object (numpy scalars and arrays converted)."""
-    print(json.dumps(_plain(obj), indent=2, allow_nan=False))
+def print_json(obj, infinite_as_text=False) -> None:
+    """Print ``obj`` as one JSON object (numpy scalars and arrays converted).
+
+    JSON has no infinity: with ``infinite_as_text`` an infinite number is written as the
+    string ``"inf"`` (or ``"-inf"``), for quantities that are infinite by definition;
+    otherwise it is an error, as NaN always is (callers write None for a missing value).
+    """
+    print(json.dumps(_plain(obj, infinite_as_text), indent=2, allow_nan=False))
 
 
 def print_table(rows, headers) -> None:
@@ -48,10 +56,33 @@ def print_table(rows, headers) -> None:
         print("  ".join(c.ljust(w) for c, w in zip(row, widths)).rstrip())
 
 
+def degrees(radians) -> str:
+    """An angle in rad as degrees for a table column beside it (4 significant digits)."""
+    if radians is None:
+        return ""
+    return f"{math.degrees(float(radians)):.4g}"
+
+
 def _format(cell) -> str:
     if isinstance(cell, (float, np.floating)):
         return f"{float(cell):.10g}"
     return str(cell)
+
+
+@contextmanager
+def cli_names(names: dict):
+    """Within the block, a ``ValueError`` from the library names the command's options, not
+    the library's keywords: ``names`` maps keyword to option (``{"deflection_angle":
+    "--deflection-rad"}``)."""
+    try:
+        yield
+    except ValueError as error:
+        message = str(error)
+        for keyword, option in names.items():
+            message = re.sub(rf"(?<![\w-]){re.escape(keyword)}\b", option, message)
+        if message == str(error):
+            raise
+        raise ValueError(message) from None
 
 
 @contextmanager
@@ -69,3 +100,55 @@ def log_to_stderr(name: str, prefix: str, level=logging.INFO):
     finally:
         logger.removeHandler(handler)
         logger.setLevel(previous_level)
+
+
+def check_output_file(option: str, path) -> None:
+    """Check, before any computation, that the file ``path`` given to ``option`` can be
+    written: its folder exists and is writable, and ``path`` is not a folder.
+
+    Raises
+    ------
+    ValueError
+        Naming the option, the path and why it cannot be written.
+    """
+    import os
+    from pathlib import Path
+
+    path = Path(path)
+    if path.is_dir():
+        raise ValueError(f"{option} {str(path)!r}: cannot write there, it is a folder")
+    folder = path.parent if str(path.parent) else Path(".")
+    if not folder.exists():
+        raise ValueError(f"{option} {str(path)!r}: cannot write there, the folder "
+                         f"{str(folder)!r} does not exist")
+    if not folder.is_dir():
+        raise ValueError(f"{option} {str(path)!r}: cannot write there, {str(folder)!r} is "
+                         f"not a folder")
+    if not os.access(folder, os.W_OK | os.X_OK) or (path.exists()
+                                                     and not os.access(path, os.W_OK)):
+        raise ValueError(f"{option} {str(path)!r}: cannot write there, no permission")
+
+
+def check_output_folder(option: str, path) -> None:
+    """Check, before any computation, that the folder ``path`` given to ``option`` exists
+    or can be made (its nearest existing ancestor is a writable folder).
+
+    Raises
+    ------
+    ValueError
+        Naming the option, the path and why it cannot be used.
+    """
+    import os
+    from pathlib import Path
+
+    path = Path(path)
+    if path.exists() and not path.is_dir():
+        raise ValueError(f"{option} {str(path)!r}: not a folder (a file of that name exists)")
+    ancestor = path
+    while not ancestor.exists() and ancestor != ancestor.parent:
+        ancestor = ancestor.parent
+    if not ancestor.is_dir():
+        raise ValueError(f"{option} {str(path)!r}: cannot make it, {str(ancestor)!r} is not a "
+                         f"folder")
+    if not os.access(ancestor, os.W_OK | os.X_OK):
+        raise ValueError(f"{option} {str(path)!r}: no permission to write in {str(ancestor)!r}")

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import sys
 
-from kresling.cli._output import print_json, print_table
+from kresling.cli._output import check_output_file, print_json, print_table
 
 
 def register(subparsers) -> None:
@@ -25,8 +25,10 @@ def register(subparsers) -> None:
     )
     design = parser.add_argument_group("the cell (default: the thesis's optimum)")
     design.add_argument("--n", type=int, default=10, help="sides of the polygon (default 10)")
-    design.add_argument("--lam", type=float, default=0.9, help="angle ratio (default 0.9)")
-    design.add_argument("--Lc", type=float, default=15.0, help="contracted height [mm] (default 15)")
+    design.add_argument("--lam", type=float, default=0.9,
+                        help="angle ratio, dimensionless (default 0.9)")
+    design.add_argument("--Lc", type=float, default=15.0,
+                        help="contracted height [mm] (default 15)")
     design.add_argument("--R", type=float, default=30.0, help="circumradius [mm] (default 30)")
     arm = parser.add_argument_group("the arm")
     arm.add_argument("--modules", type=int, help="number of modules (default: the "
@@ -107,6 +109,8 @@ def run(args) -> int:
     if args.plot and not (args.table or args.protocol):
         raise ValueError("plot: --plot draws the load-capacity table or the protocol; add "
                          "--table or --protocol")
+    if args.plot:
+        check_output_file("--plot", args.plot)   # before the analysis, not after
     if args.table:
         return _run_table(args)
     if args.table5:
@@ -224,6 +228,8 @@ def _run_table(args) -> int:
         from kresling.arm.plots import plot_load_capacity
 
         plot_load_capacity(table).savefig(args.plot, dpi=150)
+        print(f"wrote {args.plot} (load-capacity figure)",
+              file=sys.stderr if args.json else sys.stdout)
     return 0
 
 
@@ -288,6 +294,8 @@ def _run_protocol(args) -> int:
         from kresling.arm.plots import plot_actuation
 
         plot_actuation(run).savefig(args.plot, dpi=150)
+        print(f"wrote {args.plot} (markers of both models)",
+              file=sys.stderr if args.json else sys.stdout)
     if not run.completed:
         print(f"kresling arm: warning: {run.message}", file=sys.stderr)
         return 1

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from kresling.cli._output import print_json, print_table
+from kresling.cli._output import degrees, print_json, print_table
 from kresling.geometry import Design
 
 # (key, unit, meaning) in the order the table prints them.
@@ -31,12 +31,14 @@ _ROWS = (
 
 def add_design_arguments(parser) -> None:
     """The design variables every design-based subcommand takes."""
-    parser.add_argument("--n", type=int, required=True, help="sides of the base polygon (>= 3)")
-    parser.add_argument("--lam", type=float, required=True, help="angle ratio, 0.5 < lam < 1")
+    parser.add_argument("--n", type=int, required=True,
+                        help="sides of the base polygon, a count (>= 3)")
+    parser.add_argument("--lam", type=float, required=True,
+                        help="angle ratio lambda, dimensionless: 0.5 < lam < 1")
     parser.add_argument("--Lc", type=float, required=True, help="contracted height [mm], >= 0")
     parser.add_argument("--R", type=float, default=30.0, help="circumradius [mm] (default 30)")
     parser.add_argument("--chirality", type=int, default=1, choices=(1, -1),
-                        help="handedness (default +1)")
+                        help="handedness, +1 or -1 (default +1)")
 
 
 def design_from_args(args) -> Design:
@@ -48,7 +50,9 @@ def register(subparsers) -> None:
         "design",
         help="derived geometry of a generalized Kresling cell",
         description="Print every derived quantity of a generalized Kresling cell "
-                    "(thesis eqns 1-9; mm, rad).",
+                    "(thesis eqns 1-9; lengths in mm, angles in rad with degrees beside "
+                    "them). With --json, angles are in rad and a quantity that is infinite "
+                    "(Psi_ratio at Lc = 0, where Psi_con = 0) is the string \"inf\".",
     )
     add_design_arguments(parser)
     parser.add_argument("--json", action="store_true", help="print one JSON object")
@@ -58,26 +62,9 @@ def register(subparsers) -> None:
 def run(args) -> int:
     quantities = design_from_args(args).quantities()
     if args.json:
-        print_json(quantities)
+        print_json(quantities, infinite_as_text=True)
     else:
-        print_table([(k, quantities[k], unit, meaning) for k, unit, meaning in _ROWS],
-                    ("quantity", "value", "unit", "meaning"))
+        print_table([(k, quantities[k], unit, degrees(quantities[k]) if unit == "rad" else "",
+                      meaning) for k, unit, meaning in _ROWS],
+                    ("quantity", "value", "unit", "[deg]", "meaning"))
     return 0
-
-
-def add_stiffness_argument(parser) -> None:
-    """``--kf``: the crease stiffness the specimen's elements scale with."""
-    parser.add_argument("--kf", type=float, default=0.047, metavar="N/RAD",
-                        help="crease stiffness per unit length [N/rad] (default 0.047, the "
-                             "thesis's); the bars and the other hinges keep their ratios to it")
-
-
-def specimen_parameters_from_args(args):
-    """The specimen's stiffnesses from ``--kf`` (the thesis's ratios to it)."""
-    import math
-
-    from kresling.model import SpecimenParameters
-
-    if not (math.isfinite(args.kf) and args.kf > 0):
-        raise ValueError(f"--kf = {args.kf!r} is invalid: must be a finite stiffness > 0 [N/rad]")
-    return SpecimenParameters(kf=args.kf)

@@ -4,6 +4,9 @@ from laboratory records (thesis sections 3.2-3.3)."""
 from __future__ import annotations
 
 import argparse
+import re
+import sys
+from contextlib import contextmanager
 
 from kresling.cli._output import print_json, print_table
 
@@ -29,7 +32,8 @@ def _add_reader_options(parser, what: str) -> None:
     parser.add_argument("--skip-invalid", action="store_true",
                         help="skip (and report) rows with bad cells instead of stopping")
     parser.add_argument("--confidence", type=float, default=0.95,
-                        help="level of the confidence intervals (default 0.95)")
+                        help="level of the confidence intervals, a fraction in (0, 1) "
+                             "(default 0.95)")
 
 
 def register(subparsers) -> None:
@@ -61,13 +65,66 @@ def register(subparsers) -> None:
     bending.add_argument("--state", choices=("extended", "contracted", "1", "0"),
                          help="state of every record (overrides the files)")
     bending.add_argument("--module-length", type=float, metavar="MM",
-                         help="module length Lm of every record, mm (overrides the files)")
+                         help="module length Lm of every record [mm] (overrides the files)")
     bending.add_argument("--method", choices=("intercept", "origin"), default="intercept",
                          help="least-squares line with intercept (default, as a lab fit) or "
                               "through the origin (as the thesis's model code)")
     bending.add_argument("--offset", type=float, default=0.03, metavar="RAD",
-                         help="contracted-state fits use angles >= this (default 0.03)")
+                         help="contracted-state fits use angles >= this [rad] (default 0.03 rad = "
+                              "1.7 deg)")
     bending.set_defaults(func=run_bending)
+
+
+@contextmanager
+def _option_hints(table=None):
+    """Errors from the readers name the command's options, not the library's keywords
+    (``names={'force': ...}`` becomes ``--column force=HEADER``); in a crease run's machine
+    record (any file but ``table``) the ``--record-...`` options."""
+    from kresling.fits.records import RecordError
+
+    try:
+        yield
+    except RecordError as error:
+        record = table is not None and error.path != str(table)
+        raise RecordError(error.path, error.line, error.column,
+                          _hint(error.problem, record)) from None
+
+
+def _hint(problem: str, record: bool = False) -> str:
+    """A reader's ``problem`` with its keyword hints as the command's options."""
+    column, unit = ("--record-column", "--record-unit") if record else ("--column", "--unit")
+    problem = re.sub(r"names=\{'(\w+)': \.\.\.\}", rf"{column} \1=HEADER", problem)
+    problem = re.sub(r"units=\{'(\w+)': \.\.\.\}", rf"{unit} \1=UNIT", problem)
+    problem = problem.replace("pick one with names=", f"pick one with {column} KEY=HEADER")
+    return problem.replace("units= says", f"{unit} says")
+
+
+def _records_only(paths, args) -> list:
+    """``paths`` without the files that are not bending records at all: no '#' metadata line
+    and no force or displacement column (like the examples' truth.csv, which a glob such as
+    ``DIR/*.csv`` picks up); each skipped file is named on stderr. A file that is a record
+    with a column the reader cannot find is kept, so that its error says what to do."""
+    from kresling.fits.records import RecordError, read_machine_record
+
+    kept = []
+    for path in paths:
+        try:
+            read_machine_record(path, **_reader_options(args))
+        except RecordError as error:
+            if "no column named" in error.problem and not _has_metadata(path):
+                print(f"kresling fit: skipped {path}: not a bending record (no '# state:' "
+                      f"line, and {_hint(error.problem)})", file=sys.stderr)
+                continue
+        kept.append(path)
+    return kept or list(paths)   # none left: fit them all, so that the error is reported
+
+
+def _has_metadata(path) -> bool:
+    try:
+        with open(path, encoding="utf-8", errors="replace") as f:
+            return any(line.lstrip().startswith("#") for line in f)
+    except OSError:
+        return True   # cannot tell: keep it, the reader reports the problem
 
 
 def _reader_options(args) -> dict:
@@ -82,7 +139,8 @@ def run_crease(args) -> int:
     if args.record_column or args.record_unit or args.negate:
         options.update(record_names=dict(args.record_column),
                        record_units=dict(args.record_unit), negate=tuple(args.negate))
-    result = fit_crease_file(args.table, confidence=args.confidence, **options)
+    with _option_hints(args.table):
+        result = fit_crease_file(args.table, confidence=args.confidence, **options)
     report = result.as_dict()
     if args.json:
         print_json(report)
@@ -103,10 +161,12 @@ def run_crease(args) -> int:
 def run_bending(args) -> int:
     from kresling.fits.bending_files import fit_bending_files
 
-    result = fit_bending_files(args.records, state=args.state,
-                               module_length=args.module_length, negate=tuple(args.negate),
-                               method=args.method, contracted_offset=args.offset,
-                               confidence=args.confidence, **_reader_options(args))
+    with _option_hints():
+        records = _records_only(args.records, args)
+        result = fit_bending_files(records, state=args.state,
+                                   module_length=args.module_length, negate=tuple(args.negate),
+                                   method=args.method, contracted_offset=args.offset,
+                                   confidence=args.confidence, **_reader_options(args))
     report = result.as_dict()
     if args.json:
         print_json(report)

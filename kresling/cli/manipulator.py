@@ -3,7 +3,10 @@ step of the section 4.3 protocol, or the configuration and inputs that reach a t
 
 from __future__ import annotations
 
-from kresling.cli._output import print_json, print_table
+import math
+import sys
+
+from kresling.cli._output import degrees, print_json, print_table
 from kresling.geometry import Design
 from kresling.manipulator import (FRAMES, Manipulator, TendonDrive, configuration_name,
                                   forward_kinematics, inverse_kinematics, protocol_tendon_lengths)
@@ -17,21 +20,32 @@ def register(subparsers) -> None:
                     "pseudo-linkage protocol (l1 = 2Lc - 2k, l2 = l3 = 2Lc + k per flexible "
                     "module), or with --target, the configuration and tendon lengths that "
                     "reach a point. Positions in mm in the frame of eqn 26 (z along the "
-                    "undeformed axis, tendon 1 on +x).",
+                    "undeformed axis, tendon 1 on +x). With --target, a point beyond the "
+                    "arm's reach prints the nearest one and exits with status 1.",
     )
     parser.add_argument("--config", default="101",
-                        help="module states, base first: 0 contracted, 1 extended (default 101)")
-    parser.add_argument("--k", type=float, default=10.0, help="protocol step (default 10)")
+                        help="module states, base first: 0 contracted (flexible), 1 extended "
+                             "(rigid) (default 101)")
+    parser.add_argument("--k", type=float, default=10.0, metavar="MM",
+                        help="protocol step [mm]: per flexible module, tendon 1 shortened by "
+                             "2k and tendons 2 and 3 lengthened by k (default 10; the thesis "
+                             "uses 0 to 10). Allowed: -2Lc <= k <= Lc (every tendon length "
+                             ">= 0), i.e. -30 to 15 mm for the default cell")
     parser.add_argument("--target", type=float, nargs=3, metavar=("X", "Y", "Z"),
                         help="solve the inverse kinematics for this point [mm] instead")
     parser.add_argument("--modules", type=int, default=None,
-                        help="number of modules (default: the length of --config)")
-    parser.add_argument("--n", type=int, default=10, help="cell polygon sides (default 10)")
-    parser.add_argument("--lam", type=float, default=0.9, help="cell angle ratio (default 0.9)")
-    parser.add_argument("--Lc", type=float, default=15.0, help="cell contracted height [mm] (default 15)")
+                        help="number of modules, each two cells (default: the length of "
+                             "--config)")
+    parser.add_argument("--n", type=int, default=10,
+                        help="cell polygon sides, a count (default 10)")
+    parser.add_argument("--lam", type=float, default=0.9,
+                        help="cell angle ratio, dimensionless (default 0.9)")
+    parser.add_argument("--Lc", type=float, default=15.0,
+                        help="cell contracted height [mm] (default 15)")
     parser.add_argument("--R", type=float, default=30.0, help="cell circumradius [mm] (default 30)")
     parser.add_argument("--d", type=float, default=32.0, help="tendon radius [mm] (default 32)")
-    parser.add_argument("--N", type=int, default=1, help="tendon segments per module (default 1)")
+    parser.add_argument("--N", type=int, default=1,
+                        help="tendon segments per module, a count (default 1)")
     parser.add_argument("--frame", choices=FRAMES, default="twist_free",
                         help="frame convention of flexible modules (markers do not depend on it)")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
@@ -50,11 +64,22 @@ def _counts(drive: TendonDrive, model, configuration, lengths) -> dict:
     return {f"motor{i + 1}": float(c) for i, c in enumerate(counts)}
 
 
+def _check_step(k: float, model) -> None:
+    """--k in the range where every tendon length ``rest - 2k``, ``rest + k`` is >= 0."""
+    rest = model.rest_tendon_length
+    if not (math.isfinite(k) and -rest <= k <= rest / 2):
+        raise ValueError(f"--k = {k!r} is invalid: must be in [{-rest:g}, {rest / 2:g}] mm for "
+                         f"this cell (Lc = {model.design.Lc:g} mm): tendon 1 is 2Lc - 2k = "
+                         f"{rest:g} - 2k and tendons 2 and 3 are 2Lc + k long, and a length "
+                         f"must be >= 0; the thesis's protocol uses 0 to 10")
+
+
 def run(args) -> int:
     model = _model(args)
     drive = TendonDrive()
     if args.target is not None:
         return _run_inverse(args, model, drive)
+    _check_step(args.k, model)
     configuration = model.configuration(args.config)
     lengths = protocol_tendon_lengths(args.k, model.rest_tendon_length)
     state = forward_kinematics(model, configuration, lengths if 0 in configuration else None)
@@ -85,6 +110,12 @@ def run(args) -> int:
     print_table([(name, *row) for name, row in result["tendon_lengths"].items()],
                 ("module", "l1 [mm]", "l2 [mm]", "l3 [mm]"))
     print()
+    # The arcs (arc length s, curvature kappa, direction phi): the bending angle s kappa and
+    # phi in degrees beside radians, as people read angles.
+    print_table([(name, s, s * kappa, degrees(s * kappa), phi, degrees(phi))
+                 for name, (s, kappa, phi) in result["arcs"].items()],
+                ("module", "arc [mm]", "bend [rad]", "[deg]", "direction [rad]", "[deg]"))
+    print()
     print_table(list(result["motor_counts"].items()), ("motor", "counts"))
     return 0
 
@@ -103,12 +134,18 @@ def _run_inverse(args, model, drive) -> int:
         "motor_counts": _counts(drive, model, found.configuration, found.tendon_lengths)
         if lengths is not None else {"motor1": 0.0, "motor2": 0.0, "motor3": 0.0},
     }
+    status = 0 if found.reachable else 1
     if args.json:
         print_json(result)
-        return 0
-    verdict = "reachable" if found.reachable else "NOT reachable; nearest point"
-    print(f"target {found.target.tolist()} mm: {verdict} with configuration ({result['config']})")
-    print_table([("l1, l2, l3 [mm]", *found.tendon_lengths), ("tip [mm]", *found.position)],
-                ("", "1", "2", "3"))
-    print(f"distance {found.distance:.3g} mm")
-    return 0
+    else:
+        verdict = "reachable" if found.reachable else "NOT reachable; nearest point"
+        print(f"target {found.target.tolist()} mm: {verdict} with configuration "
+              f"({result['config']})")
+        print_table([("l1, l2, l3 [mm]", *found.tendon_lengths), ("tip [mm]", *found.position)],
+                    ("", "1", "2", "3"))
+        print(f"distance {found.distance:.3g} mm")
+    if not found.reachable:
+        print(f"kresling manipulator: the target {found.target.tolist()} mm is beyond the arm's "
+              f"reach: the nearest point reached is {found.distance:.3g} mm from it "
+              f"(configuration {result['config']})", file=sys.stderr)
+    return status

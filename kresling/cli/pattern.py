@@ -3,7 +3,7 @@ cell or a two-cell module."""
 
 from __future__ import annotations
 
-from kresling.cli._output import print_json
+from kresling.cli._output import check_output_file, print_json
 from kresling.cli.design import add_design_arguments, design_from_args
 
 # Optional parameters: (option, destination, help). Only those given reach the library, so
@@ -47,19 +47,25 @@ def register(subparsers) -> None:
                         help="laminate: bridges on the base polygon in cut layer 1 (default 2)")
     for option, destination, text in _PARAMETERS:
         parser.add_argument(option, type=float, dest=destination, help=text)
-    parser.add_argument("--dpi", type=float, default=96.0, help="PNG resolution (default 96)")
-    parser.add_argument("--json", action="store_true", help="print the summary as JSON")
+    parser.add_argument("--dpi", type=float, default=96.0,
+                        help="PNG resolution [dots per inch] (default 96)")
+    parser.add_argument("--json", action="store_true",
+                        help="print the summary as JSON (width_mm, height_mm: the pattern's "
+                             "extent; page_width_mm, page_height_mm: the SVG or PNG page with "
+                             "its margins)")
     parser.set_defaults(func=run)
 
 
 def run(args) -> int:
     from kresling.fabrication import FORMATS, cut_sheet, module_sheet, write_pattern
     from kresling.fabrication.export import file_format, write_sheet
+    from kresling.fabrication.svg import MARGIN
 
     design = design_from_args(args)
     names = ["polygon_bridges"] + [destination for _, destination, _ in _PARAMETERS]
     parameters = {name: getattr(args, name) for name in names if getattr(args, name) is not None}
     suffix = file_format(args.output)
+    check_output_file("--output", args.output)   # before the pattern is made
     summary = {"file": args.output, "format": FORMATS[suffix], "process": args.process,
                "module": args.module, "design": repr(design)}
     if suffix == ".fold":
@@ -68,12 +74,19 @@ def run(args) -> int:
         sheet = (module_sheet if args.module else cut_sheet)(design, args.process, **parameters)
         write_sheet(sheet, args.output, dpi=args.dpi)
         width, height = sheet.size
-        summary.update(width_mm=width, height_mm=height,
+        # The pattern's extent, and the page an SVG or PNG puts it on (with margins; a DXF
+        # file has no page).
+        margin = 0.0 if suffix == ".dxf" else MARGIN
+        summary.update(width_mm=width, height_mm=height, margin_mm=margin,
+                       page_width_mm=width + 2 * margin, page_height_mm=height + 2 * margin,
                        layers={layer.name: len(layer.paths) for layer in sheet.layers})
     if args.json:
         print_json(summary)
     else:
-        size = (f", {summary['width_mm']:.1f} x {summary['height_mm']:.1f} mm"
-                if "width_mm" in summary else "")
+        size = ""
+        if "width_mm" in summary:
+            size = f"; pattern {summary['width_mm']:.1f} x {summary['height_mm']:.1f} mm"
+            size += (f", page {summary['page_width_mm']:.1f} x {summary['page_height_mm']:.1f} "
+                     f"mm with {margin:g} mm margins" if margin else ", no margins")
         print(f"wrote {args.output} ({summary['format']}{size})")
     return 0

@@ -12,7 +12,7 @@ from __future__ import annotations
 import shlex
 import sys
 
-from kresling.cli._output import log_to_stderr, print_table
+from kresling.cli._output import check_output_folder, log_to_stderr, print_table
 
 _PROGRESS_LOGGER = "kresling.report.runner"
 
@@ -47,6 +47,7 @@ def run(args) -> int:
 
     if args.list:
         return _list(chapters.CHAPTERS)
+    check_output_folder("--out", args.out)   # before the analyses, not after
     import matplotlib
 
     matplotlib.use("Agg")  # files only: never open a window

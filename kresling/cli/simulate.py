@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from kresling.cli._output import log_to_stderr, print_json, print_table
+from kresling.cli._output import check_output_folder, log_to_stderr, print_json, print_table
 
 
 def register(subparsers) -> None:
@@ -38,6 +38,7 @@ def run(args) -> int:
 
     problem = Path(args.problem)
     out = Path(args.out) if args.out else problem.with_suffix("")
+    check_output_folder("--out", out)   # before the run, not after
     with log_to_stderr("kresling.simulate", "simulate"):
         simulation = simulate(problem, progress=False if args.quiet else None)
         written = simulation.write(out, view=not args.no_view)

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import math
 import sys
 
-from kresling.cli._output import print_json, print_table
+from kresling.cli._output import check_output_file, cli_names, print_json, print_table
 from kresling.cli.bend import finite_or_none
-from kresling.cli.design import (add_design_arguments, add_stiffness_argument, design_from_args,
-                                 specimen_parameters_from_args)
+from kresling.cli._specimen import (add_specimen_arguments, describe,
+                                    specimen_parameters_from_args)
+from kresling.cli.design import add_design_arguments, design_from_args
 
 # (key, unit, meaning) in the order the table prints them.
 _ROWS = (
@@ -33,9 +35,10 @@ def register(subparsers) -> None:
                     "snap force, the energy barrier and whether the model is bistable.",
     )
     add_design_arguments(parser)
-    add_stiffness_argument(parser)
+    add_specimen_arguments(parser)
     parser.add_argument("--steps", type=int, default=100,
-                        help="displacement increments (default 100)")
+                        help="displacement increments from Le to Lc (default 100); too few "
+                             "to resolve the force peak draw a warning")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--plot", metavar="FILE.png",
                         help="write the force-travel figure (like thesis figure 3.16)")
@@ -49,20 +52,33 @@ def run(args) -> int:
     from kresling.analyses import snap_through
 
     design = design_from_args(args)
+    # Every output file is checked before the run, not after it.
+    if args.plot:
+        check_output_file("--plot", args.plot)
     if args.view:
         from kresling.view import check_writable
 
-        check_writable(args.view)   # before the run, not after
+        check_writable(args.view)
     parameters = specimen_parameters_from_args(args)
-    result = snap_through(design, steps=args.steps, parameters=parameters)
+    with cli_names({"steps": "--steps"}):
+        result = snap_through(design, steps=args.steps, parameters=parameters)
     summary = {key: finite_or_none(value) for key, value in result.summary().items()}
     summary["design"] = {"n": design.n, "lam": design.lam, "Lc": design.Lc, "R": design.R}
     summary["kf"] = parameters.kf
+    summary["parameters"] = describe(parameters)
+    summary["stable_tilt_deg"] = finite_or_none(math.degrees(result.stable_tilt))
     if args.json:
         print_json(summary)
     else:
-        print_table([(k, summary[k], unit, meaning) for k, unit, meaning in _ROWS],
-                    ("quantity", "value", "unit", "meaning"))
+        partial = (f" - PARTIAL: the run stopped at {result.travel_fraction:.0%} of its travel"
+                   if result.partial else "")
+        rows = []
+        for key, unit, meaning in _ROWS:
+            value = summary[key]
+            if unit == "rad" and value is not None:
+                value, unit = f"{value:.10g} ({math.degrees(value):.4g} deg)", unit
+            rows.append((key, value, unit, meaning + partial))
+        print_table(rows, ("quantity", "value", "unit", "meaning"))
         print(f"\n{result.bistability}")
     if args.plot:
         import matplotlib
@@ -71,12 +87,20 @@ def run(args) -> int:
         from kresling.analyses.plots import plot_snap_through
 
         plot_snap_through(result).figure.savefig(args.plot, dpi=150)
+        print(f"wrote {args.plot} (force-travel figure)",
+              file=sys.stderr if args.json else sys.stdout)
     if args.view:
         from kresling.view import view_snap_through, write_html
 
         write_html(view_snap_through(design, steps=args.steps, result=result,
                                      parameters=parameters), args.view)
+        print(f"wrote {args.view} (interactive page)",
+              file=sys.stderr if args.json else sys.stdout)
+    if result.resolution:
+        advice = result.resolution.replace("raise steps", "raise --steps")
+        print(f"kresling snap: warning: {advice}", file=sys.stderr)
     if not result.completed:
-        print(f"kresling snap: warning: the run stopped early: {result.message}", file=sys.stderr)
+        print(f"kresling snap: warning: the run stopped at {result.travel_fraction:.0%} of its "
+              f"travel, so the values are partial: {result.message}", file=sys.stderr)
         return 1
     return 0

@@ -12,7 +12,8 @@ import logging
 import sys
 from pathlib import Path
 
-from kresling.cli._output import log_to_stderr, print_table
+from kresling.cli._output import check_output_folder, log_to_stderr, print_table
+from kresling.cli._specimen import add_specimen_arguments, specimen_parameters_from_args
 
 
 def register(subparsers) -> None:
@@ -27,26 +28,29 @@ def register(subparsers) -> None:
                         f"{name}: {m.description}" for name, m in METRICS.items()) + ".",
     )
     parser.add_argument("--n", type=int, nargs="+", default=list(THESIS_N),
-                        help="sides of the base polygon (default: 4 6 8 10)")
+                        help="sides of the base polygon, counts (default: 4 6 8 10)")
     parser.add_argument("--grid", type=int, nargs="+", default=[100], metavar="G",
                         help="grid points along Lc and lambda: one number for both, or two "
                              "(default 100, the thesis's)")
     parser.add_argument("--Lc", type=float, nargs=2, metavar=("MIN", "MAX"),
                         help="contracted-height range [mm] (default R/2 to 2R)")
     parser.add_argument("--lam", type=float, nargs=2, metavar=("MIN", "MAX"),
-                        default=list(THESIS_LAM), help="angle-ratio range (default 0.7 0.9)")
+                        default=list(THESIS_LAM),
+                                     help="angle-ratio range, dimensionless (default 0.7 0.9)")
     parser.add_argument("--R", type=float, default=30.0, help="circumradius [mm] (default 30)")
     parser.add_argument("--metrics", nargs="+", default=list(DEFAULT_METRICS),
                         metavar="METRIC", help=f"any of {', '.join(METRICS)} "
                                                f"(default: {' '.join(DEFAULT_METRICS)})")
-    parser.add_argument("--workers", type=int, help="parallel workers (default: every core)")
+    parser.add_argument("--workers", type=int,
+                        help="parallel workers, a count (default: every core)")
     parser.add_argument("--executor", choices=("threads", "processes"), default="threads",
                         help="run designs on threads (default; the C++ releases the GIL) or "
                              "on a process pool")
     parser.add_argument("--scheduler", metavar="ADDRESS",
                         help="run on a dask.distributed cluster (e.g. tcp://host:8786; "
                              "needs the 'dask' extra)")
-    parser.add_argument("--chunk-size", type=int, help="designs per task (default: automatic)")
+    parser.add_argument("--chunk-size", type=int,
+                        help="designs per task, a count (default: automatic)")
     parser.add_argument("--out", required=True, metavar="DIR",
                         help="directory of results.csv and manifest.json (resumed if present)")
     parser.add_argument("--plot", action="store_true",
@@ -54,6 +58,7 @@ def register(subparsers) -> None:
     parser.add_argument("--no-progress", dest="progress", action="store_false",
                         help="no progress bar")
     parser.add_argument("--verbose", action="store_true", help="log the sweep's progress")
+    add_specimen_arguments(parser)
     parser.set_defaults(func=run)
 
 
@@ -61,6 +66,8 @@ def run(args) -> int:
     from kresling.sweeps import design_grid, resolve_metrics, sweep
 
     metrics = resolve_metrics(args.metrics)
+    parameters = specimen_parameters_from_args(args)
+    check_output_folder("--out", args.out)   # before the sweep, not after
     if len(args.grid) > 2:
         raise ValueError(f"--grid takes one or two numbers, got {len(args.grid)}")
     grid = design_grid(args.n, args.grid, Lc=args.Lc, lam=args.lam, R=args.R)
@@ -70,7 +77,8 @@ def run(args) -> int:
     with log_to_stderr("kresling.sweeps", "sweep", level):
         try:
             table = sweep(grid, metrics, workers=args.workers, executor=executor, out=args.out,
-                          progress=args.progress, chunk_size=args.chunk_size)
+                          progress=args.progress, chunk_size=args.chunk_size,
+                          parameters=parameters)
         except RuntimeError as error:
             print(f"kresling sweep: error: {error}", file=sys.stderr)
             return 1

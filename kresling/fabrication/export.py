@@ -14,7 +14,7 @@ from kresling.fabrication.fold import fold_angles, fold_document, write_fold
 from kresling.fabrication.pattern import CreasePattern, crease_pattern
 from kresling.fabrication.processes import make_process
 from kresling.fabrication.sheet import cut_sheet, module_sheet, split_parameters
-from kresling.fabrication.svg import render_png, svg_document, write_svg
+from kresling.fabrication.svg import MARGIN, render_png, svg_document, write_svg
 from kresling.geometry import STATES, Design, state_index
 
 __all__ = ["FORMATS", "file_format", "pattern_fold_document", "write_sheet", "write_pattern"]
@@ -101,7 +101,7 @@ def write_sheet(sheet: CutSheet, path, *, dpi: float = 96.0) -> Path:
         return write_dxf(sheet, path)
     if suffix == ".png":
         width, height = sheet.size
-        dpi = png_pixels(width + 10.0, height + 10.0, dpi)  # svg_document's 5 mm margins
+        dpi = png_pixels(width + 2 * MARGIN, height + 2 * MARGIN, dpi)  # svg_document's margins
         # A preview: lines thick enough to see at screen resolution.
         return render_png(svg_document(sheet, stroke_width=0.35), path, dpi=dpi)
     raise ValueError(f"file extension {suffix!r} is invalid for a cut sheet: must be one of "

@@ -15,7 +15,7 @@ from pathlib import Path
 
 from kresling.fabrication.layers import CutSheet
 
-__all__ = ["svg_document", "write_svg", "render_png"]
+__all__ = ["svg_document", "write_svg", "render_png", "MARGIN"]
 
 logger = logging.getLogger(__name__)
 
@@ -24,8 +24,12 @@ INKSCAPE_NS = "http://www.inkscape.org/namespaces/inkscape"
 ET.register_namespace("", SVG_NS)
 ET.register_namespace("inkscape", INKSCAPE_NS)
 
+#: Blank border around the pattern on an SVG or PNG page [mm]: the page is the pattern's
+#: extent plus twice this, each way (a DXF file has no page, only the pattern).
+MARGIN = 5.0
 
-def svg_document(sheet: CutSheet, *, margin: float = 5.0, stroke_width: float = 0.1) -> str:
+
+def svg_document(sheet: CutSheet, *, margin: float = MARGIN, stroke_width: float = 0.1) -> str:
     """The SVG text of a cut sheet.
 
     Parameters

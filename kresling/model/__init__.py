@@ -6,7 +6,7 @@ by MERLIN2's rules for the Kresling specimen; :func:`build_pattern_model` builds
 any crease pattern (panels, fold families, a sheet's material) as MERLIN2 v1.1 does.
 """
 
-from kresling.model.kresling_specimen import (EDGE_FAMILIES, KreslingSpecimen,
+from kresling.model.kresling_specimen import (EDGE_FAMILIES, MOUNTAIN_CREASES, KreslingSpecimen,
                                               SpecimenParameters, alternating_chirality,
                                               kresling_specimen)
 from kresling.model.calibration import (ManualProperties, SheetMaterial, SheetStiffness,
@@ -19,6 +19,7 @@ from kresling.model.topology import Topology, panel_topology
 
 __all__ = ["Model", "Topology", "panel_topology", "BAR_LAWS", "SPRING_LAWS",
            "KreslingSpecimen", "SpecimenParameters", "kresling_specimen", "EDGE_FAMILIES",
+           "MOUNTAIN_CREASES",
            "alternating_chirality", "PanelElements", "build_panel_elements", "SheetMaterial",
            "ManualProperties", "SheetStiffness", "calibrate_sheet", "HingeLaw", "CreaseLaws",
            "PatternModel", "build_pattern_model", "FOLD_FAMILIES", "HINGE_FAMILIES"]

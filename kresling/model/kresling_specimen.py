@@ -6,7 +6,7 @@ The C++ core builds the nodes, panels and elements exactly as docs/thesis_equati
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
 
@@ -17,10 +17,17 @@ from kresling.geometry import Design, as_design, state_index
 from kresling.model.model import BAR_LAWS, Model
 
 __all__ = ["SpecimenParameters", "KreslingSpecimen", "kresling_specimen", "EDGE_FAMILIES",
-           "alternating_chirality"]
+           "alternating_chirality", "MOUNTAIN_CREASES"]
 
 #: Element families by code: the family of a bar is its edge's, of a hinge its axis's.
 EDGE_FAMILIES = ("valley", "mountain", "polygon_edge", "polygon_spoke")
+
+#: The mountain creases' elements, cut through (the thesis's specimens: no hinge, a weak bar
+#: of area 0.01) or intact (a crease like the valleys: hinge ``kf``, a bar on material).
+MOUNTAIN_CREASES = {
+    "cut": {"mountain_factor": 0.0, "mountain_area": 0.01},
+    "intact": {"mountain_factor": 1.0, "mountain_area": 1.0},
+}
 
 
 @dataclass(frozen=True)
@@ -45,7 +52,22 @@ class SpecimenParameters:
         Linear range of the enhanced linear spring law [rad] (5 and 355 degrees).
     bar_law : {"ogden", "linear"}
     duplicate_shared_edges : bool
-        MERLIN2's topology (True) or one bar per edge (see ``kresling.model.panel_topology``).
+        MERLIN2's topology (True, the thesis's default), which puts coincident bars and
+        hinges on every edge shared by more than two triangles (the intermediate polygons of
+        a stack), or one bar per edge (False; see ``kresling.model.panel_topology``), which
+        is softer. It changes the bending stiffness of stacks: K_con of the Table 3
+        specimens by 1.8 to about 8 % (5 mm protocol; up to 8.4 % for n = 10, Lc = 15 mm,
+        lambda = 0.9, whose single-element run loses stability before the end of its
+        travel; 9.5 % linearised), K_ext by under 1 %; a single cell not at all
+        (``kresling.analyses.table3.topology_effect`` measures it).
+
+    Examples
+    --------
+    >>> p = SpecimenParameters(kf=0.1).with_mountain_creases("intact")
+    >>> p.mountain_creases, p.mountain_factor, p.mountain_area
+    ('intact', 1.0, 1.0)
+    >>> SpecimenParameters.from_dict(p.as_dict()) == p
+    True
     """
 
     kf: float = 0.047
@@ -70,6 +92,50 @@ class SpecimenParameters:
             if f.name not in ("fold_limits", "bar_law", "duplicate_shared_edges"):
                 as_real(f.name, getattr(self, f.name))
         as_bool("duplicate_shared_edges", self.duplicate_shared_edges)
+
+    @property
+    def mountain_creases(self) -> str:
+        """``"cut"`` or ``"intact"`` (:data:`MOUNTAIN_CREASES`), or ``"custom"`` for other
+        values of ``mountain_factor`` and ``mountain_area``."""
+        for name, values in MOUNTAIN_CREASES.items():
+            if all(getattr(self, key) == value for key, value in values.items()):
+                return name
+        return "custom"
+
+    def with_mountain_creases(self, kind: str) -> "SpecimenParameters":
+        """A copy with the mountain creases ``"cut"`` or ``"intact"`` (:data:`MOUNTAIN_CREASES`)."""
+        as_choice("mountain creases", kind, MOUNTAIN_CREASES)
+        return replace(self, **MOUNTAIN_CREASES[kind])
+
+    def as_dict(self) -> dict:
+        """Every parameter as plain Python values (JSON-ready: ``fold_limits`` a list of two
+        floats [rad]); :meth:`from_dict` reads it back."""
+        out = {}
+        for f in fields(self):
+            value = getattr(self, f.name)
+            if f.name == "fold_limits":
+                value = [float(v) for v in value]
+            elif f.name == "duplicate_shared_edges":
+                value = bool(value)
+            elif f.name != "bar_law":
+                value = float(value)
+            out[f.name] = value
+        return out
+
+    @classmethod
+    def from_dict(cls, values: dict) -> "SpecimenParameters":
+        """The parameters of :meth:`as_dict`'s output (missing keys take the defaults)."""
+        if not isinstance(values, dict):
+            raise ValueError(f"parameters = {show(values)} is invalid: must be a dict")
+        known = {f.name for f in fields(cls)}
+        unknown = sorted(set(values) - known)
+        if unknown:
+            raise ValueError(f"unknown specimen parameter {unknown[0]!r}: must be one of "
+                             f"{', '.join(sorted(known))}")
+        values = dict(values)
+        if "fold_limits" in values:
+            values["fold_limits"] = tuple(values["fold_limits"])
+        return cls(**values)
 
     def to_core(self):
         """The C++ parameters object (values are range-checked there)."""

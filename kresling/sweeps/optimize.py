@@ -67,7 +67,8 @@ class DesignOptimum:
 
 
 def optimize_design(n, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, R=30.0,
-                    constraints=None, start_grid=5, workers=None) -> DesignOptimum:
+                    constraints=None, start_grid=5, workers=None,
+                    parameters=None) -> DesignOptimum:
     """Maximise ``metric`` over Lc x lambda for one n.
 
     Parameters
@@ -87,6 +88,9 @@ def optimize_design(n, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, R=30.0,
         The optimiser starts from the best feasible design of this coarse grid.
     workers : int, optional
         For the starting grid.
+    parameters : SpecimenParameters, optional
+        The specimens' material and model (the thesis's by default; see
+        :func:`~kresling.sweeps.sweep`).
 
     Returns
     -------
@@ -110,7 +114,7 @@ def optimize_design(n, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, R=30.0,
     grid = design_grid([n], start_grid, Lc=Lc, lam=lam, R=R)
     low = np.array([grid.spec["Lc"][0], grid.spec["lam"][0]])
     high = np.array([grid.spec["Lc"][1], grid.spec["lam"][1]])
-    plan = make_plan(metrics)
+    plan = make_plan(metrics, parameters)
     cache = {}
 
     def design_point(u):  # unit box -> (Lc, lam), the bounds exactly at its faces
@@ -130,7 +134,7 @@ def optimize_design(n, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, R=30.0,
         v = values(u)
         return -math.log(v[metric]) if v and v[metric] > 0 else 1e3
 
-    start = _start(grid, metrics, metric, constraints, workers)
+    start = _start(grid, metrics, metric, constraints, workers, parameters)
     result = optimize.minimize(
         objective, (start - low) / (high - low), method="SLSQP", bounds=[(0, 1), (0, 1)],
         constraints=_slsqp_constraints(values, constraints),
@@ -163,9 +167,9 @@ def _metrics_for(columns):
     return resolve_metrics(found)
 
 
-def _start(grid, metrics, metric, constraints, workers) -> np.ndarray:
+def _start(grid, metrics, metric, constraints, workers, parameters=None) -> np.ndarray:
     """The best feasible design of the grid; if none is feasible, the least infeasible."""
-    table = sweep(grid, metrics, workers=workers, progress=False)
+    table = sweep(grid, metrics, workers=workers, progress=False, parameters=parameters)
     violation = np.where(table.ok & np.isfinite(table[metric]), 0.0, np.inf)
     for column, (lo, hi) in constraints.items():
         x = table[column]

@@ -69,7 +69,7 @@ class Sensitivity:
 
 
 def sensitivity(design: Design, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, points=41,
-                levels=(0.9, 0.75, 0.5), workers=None) -> Sensitivity:
+                levels=(0.9, 0.75, 0.5), workers=None, parameters=None) -> Sensitivity:
     """Derivatives and profiles of ``metric`` around ``design``.
 
     Parameters
@@ -86,6 +86,8 @@ def sensitivity(design: Design, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, p
     levels : sequence of float
         Fractions of the value whose crossing points are reported.
     workers : int, optional
+    parameters : SpecimenParameters, optional
+        The specimens' material and model (the thesis's by default).
 
     Returns
     -------
@@ -108,7 +110,7 @@ def sensitivity(design: Design, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, p
             for key, value in (("n", design.n), ("Lc", point["Lc"]), ("lam", point["lam"]),
                                ("R", design.R)):
                 columns[key].append(value)
-    table = sweep(columns, [metric], workers=workers, progress=False)
+    table = sweep(columns, [metric], workers=workers, progress=False, parameters=parameters)
     values = np.where(table.ok, table[metric], np.nan)
     value = values[1]
     gradient, elasticity, profiles, drop = {}, {}, {}, {}

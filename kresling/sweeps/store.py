@@ -35,7 +35,7 @@ logger = logging.getLogger(__name__)
 
 RESULTS, MANIFEST, _LOCK = "results.csv", "manifest.json", ".lock"
 # Manifest entries that must agree for a directory to be resumed.
-_IDENTITY = ("format", "metrics", "columns", "analyses", "designs")
+_IDENTITY = ("format", "metrics", "columns", "analyses", "parameters", "designs")
 
 
 class SweepStore:
@@ -136,19 +136,35 @@ def _identity(manifest: dict, key: str):
     value = manifest.get(key)
     if key == "designs" and isinstance(value, dict):  # the values, not how they were made
         return value.get("count"), value.get("sha256")
+    if key == "parameters" and value is None:
+        # Written before sweeps took parameters: those ran with the thesis's.
+        from kresling.model import SpecimenParameters
+
+        return SpecimenParameters().as_dict()
     return value
 
 
 def _check_same(directory: Path, found: dict, wanted: dict) -> None:
     differ = [key for key in _IDENTITY if _identity(found, key) != _identity(wanted, key)]
     if differ:
-        shown = "; ".join(f"{key}: {_short(found.get(key))} there, {_short(wanted.get(key))} "
+        shown = "; ".join(_difference(key, _identity(found, key), _identity(wanted, key))
+                          if key == "parameters" else
+                          f"{key}: {_short(found.get(key))} there, {_short(wanted.get(key))} "
                           f"here" for key in differ)
         raise ValueError(f"{directory} holds a sweep with different parameters ({shown}); "
                          f"use another directory, or delete it to start again")
     if found.get("kresling") != wanted.get("kresling"):
         logger.warning("%s was written by kresling %s; resuming with %s", directory,
                        found.get("kresling"), wanted.get("kresling"))
+
+
+def _difference(key: str, there, here) -> str:
+    """The parameters that differ, each with both values (``kf = 0.047 there, 0.094 here``)."""
+    if not (isinstance(there, dict) and isinstance(here, dict)):
+        return f"{key}: {_short(there)} there, {_short(here)} here"
+    names = [name for name in sorted(set(there) | set(here)) if there.get(name) != here.get(name)]
+    return "; ".join(f"{name} = {_short(there.get(name))} there, {_short(here.get(name))} here"
+                     for name in names)
 
 
 def _short(value) -> str:

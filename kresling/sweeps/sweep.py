@@ -29,7 +29,7 @@ _MAX_CHUNK = 32
 
 
 def sweep(designs, metrics=DEFAULT_METRICS, *, workers=None, executor=None, out=None,
-          progress=True, chunk_size=None) -> SweepTable:
+          progress=True, chunk_size=None, parameters=None) -> SweepTable:
     """Compute ``metrics`` for every design, in parallel; write to and resume from ``out``.
 
     Parameters
@@ -53,6 +53,11 @@ def sweep(designs, metrics=DEFAULT_METRICS, *, workers=None, executor=None, out=
         A progress bar (designs done, rate, ETA) on stderr when it is a terminal.
     chunk_size : int, optional
         Designs per task; default up to 32, smaller so each worker gets about 16 chunks.
+    parameters : SpecimenParameters, optional
+        The specimens' material and model (crease stiffness ``kf`` [N/rad], the other
+        elements' ratios to it, cut or intact mountain creases, MERLIN2's duplicated
+        elements or one per edge); default the thesis's. Recorded in the manifest: a
+        directory is resumed only under the same parameters.
 
     Returns
     -------
@@ -65,8 +70,9 @@ def sweep(designs, metrics=DEFAULT_METRICS, *, workers=None, executor=None, out=
     ------
     ValueError
         For no designs, an invalid design, an unknown or repeated metric, an odd n with a
-        bending metric, ``workers < 1``, a bad executor, or an ``out`` that holds a different
-        sweep.
+        bending metric, ``workers < 1``, a bad executor, ``parameters`` that are not a
+        SpecimenParameters, or an ``out`` that holds a different sweep (other designs,
+        metrics or parameters: the message names what differs, with both values).
 
     Notes
     -----
@@ -86,13 +92,15 @@ def sweep(designs, metrics=DEFAULT_METRICS, *, workers=None, executor=None, out=
         chunk_size = as_integer("chunk_size", chunk_size, minimum=1)
     design_set = as_design_set(designs)
     metrics = resolve_metrics(metrics)
-    plan = _plan(metrics, design_set)
+    parameters = _parameters(parameters)
+    plan = _plan(metrics, design_set, parameters)
     handle = make_executor(executor, workers)
     columns = (*DESIGN_COLUMNS, *plan.columns, *STATUS_COLUMNS)
     store = None
     if out is not None:
         try:
-            store = SweepStore.open(out, _manifest(metrics, plan, columns, design_set),
+            store = SweepStore.open(out, _manifest(metrics, plan, columns, design_set,
+                                                   parameters),
                                     check_row=_row_checker(design_set, columns))
         except BaseException:
             handle.shutdown(interrupted=True)
@@ -122,7 +130,8 @@ def sweep(designs, metrics=DEFAULT_METRICS, *, workers=None, executor=None, out=
     seconds = time.perf_counter() - start
     table = SweepTable(dict(zip(columns, map(list, zip(*rows)))), {
         "metrics": [m.name for m in metrics], "computed": len(pending), "loaded": loaded,
-        "seconds": seconds, "workers": handle.workers, "out": None if out is None else str(out)})
+        "seconds": seconds, "workers": handle.workers, "out": None if out is None else str(out),
+        "parameters": parameters.as_dict()})
     failed = int((table["status"] != OK).sum())
     if store is not None:
         store.finish(rows, {"failed": failed, "seconds_last_run": round(seconds, 3)})
@@ -141,15 +150,28 @@ def _describe_workers(handle) -> str:
     return f"{count} worker{'s' if count != 1 else ''} of the given executor"
 
 
-def _plan(metrics, design_set: DesignSet) -> Plan:
+def _parameters(parameters):
+    """``parameters`` checked, the thesis's when None."""
+    from kresling.model import SpecimenParameters
+
+    if parameters is None:
+        return SpecimenParameters()
+    if not isinstance(parameters, SpecimenParameters):
+        raise ValueError(f"parameters = {parameters!r} is invalid: must be a "
+                         f"kresling.model.SpecimenParameters")
+    return parameters
+
+
+def _plan(metrics, design_set: DesignSet, parameters) -> Plan:
     require_even_n(metrics, np.unique(design_set.n))
-    return make_plan(metrics)
+    return make_plan(metrics, parameters)
 
 
-def _manifest(metrics, plan: Plan, columns, design_set: DesignSet) -> dict:
+def _manifest(metrics, plan: Plan, columns, design_set: DesignSet, parameters) -> dict:
     return {"format": _FORMAT, "kresling": __version__,
             "metrics": [m.name for m in metrics], "columns": list(columns),
             "analyses": {a.name: a.settings for a in plan.analyses},
+            "parameters": parameters.as_dict(),
             "designs": {"count": len(design_set), "sha256": design_set.key,
                         "spec": design_set.spec}}
 

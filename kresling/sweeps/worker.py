@@ -30,29 +30,34 @@ class Plan:
     analyses : tuple of Analysis
     columns : tuple of str
         The metric columns of the table (a subset of the analyses' columns).
+    parameters : SpecimenParameters, optional
+        The specimens' stiffnesses for every tester (None: the thesis's).
     """
 
     analyses: tuple
     columns: tuple
+    parameters: object = None
 
 
-def make_plan(metrics) -> Plan:
-    """The plan of resolved ``metrics``: each analysis once, the columns in metric order."""
+def make_plan(metrics, parameters=None) -> Plan:
+    """The plan of resolved ``metrics``: each analysis once, the columns in metric order;
+    ``parameters`` (a ``SpecimenParameters``) go to every tester."""
     analyses, columns = [], []
     for metric in metrics:
         if metric.analysis not in analyses:
             analyses.append(metric.analysis)
         columns += [c for c in metric.columns if c not in columns]
-    return Plan(tuple(analyses), tuple(columns))
+    return Plan(tuple(analyses), tuple(columns), parameters)
 
 
-def _tester(analysis, n: int):
+def _tester(analysis, n: int, parameters=None):
     cache = getattr(_local, "testers", None)
     if cache is None:
         cache = _local.testers = {}
-    key = (analysis.name, repr(sorted(analysis.settings.items())), n)
+    key = (analysis.name, repr(sorted(analysis.settings.items())), n, repr(parameters))
     if key not in cache:
-        cache[key] = analysis.make_tester(n)
+        cache[key] = analysis.make_tester(n) if parameters is None else \
+            analysis.make_tester(n, parameters=parameters)
     return cache[key]
 
 
@@ -74,7 +79,8 @@ def evaluate_design(plan: Plan, n: int, Lc: float, lam: float, R: float) -> tupl
         design, failures = None, [f"design: {_describe(error)}"]
     for analysis in plan.analyses if design is not None else ():
         try:
-            tester = _tester(analysis, n) if analysis.make_tester is not None else None
+            tester = _tester(analysis, n, plan.parameters) \
+                if analysis.make_tester is not None else None
             result = analysis.evaluate(tester, design)
         except Exception as error:  # noqa: BLE001 - recorded in the table, the sweep goes on
             failures.append(f"{analysis.name}: {_describe(error)}")

@@ -1,0 +1,241 @@
+"""What a new user hit on the command line, one test each: infinite quantities in JSON, a
+glob that picks up a file that is not a record, output paths checked before the work and
+reported after it, one name per option in errors, an under-resolved snap force, the
+manipulator's step range and unreachable targets, K_con > K_ext, partial results marked
+as such, the pattern's extent beside its page, odd n in the bending test, Lc = 0 in the
+bending path."""
+
+from __future__ import annotations
+
+import dataclasses
+import glob
+import json
+import math
+
+import numpy as np
+import pytest
+
+import kresling.analyses
+from cli_helpers import run_kresling
+from kresling import Design, data
+from kresling.analyses import bending_stiffness, bending_test, snap_through
+from kresling.analyses.paths import bending_path
+from kresling.cli import main
+
+BEND = ["bend", "--n", "4", "--lam", "0.7", "--Lc", "30", "--deflection-rad", "0.001"]
+
+
+def test_design_json_writes_infinity_as_a_string(capsys):
+    # Lc = 0 is a valid design whose Psi_con is 0, so Psi_ext / Psi_con is infinite.
+    assert main(["design", "--n", "8", "--lam", "0.85", "--Lc", "0", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["Psi_ratio"] == "inf" and out["Psi_con"] == 0.0
+    assert main(["design", "--n", "8", "--lam", "0.85", "--Lc", "0"]) == 0
+    table = capsys.readouterr().out
+    assert "[deg]" in table
+    phi = next(line for line in table.splitlines() if line.startswith("phi "))
+    assert "22.5" in phi.split()   # pi / 8 in degrees beside the radians
+
+
+def test_fit_bending_glob_skips_the_truth_table(tmp_path):
+    folder = data.path("examples/synthetic_bending/truth.csv").parent
+    files = sorted(glob.glob(f"{folder}/*.csv"))   # as a shell expands DIR/*.csv
+    assert any(f.endswith("truth.csv") for f in files)
+    result = run_kresling("fit", "bending", *files, "--json", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert "skipped" in result.stderr and "truth.csv" in result.stderr
+    report = json.loads(result.stdout)
+    records = [f for f in files if not f.endswith("truth.csv")]
+    alone = json.loads(run_kresling("fit", "bending", *records, "--json", cwd=tmp_path).stdout)
+    assert report == alone   # the same six trials fitted
+
+
+def test_fit_error_names_the_cli_option_not_a_python_keyword(tmp_path):
+    truth = str(data.path("examples/synthetic_bending/truth.csv"))
+    result = run_kresling("fit", "bending", truth, cwd=tmp_path)
+    assert result.returncode == 2 and "Traceback" not in result.stderr
+    assert "--column displacement=HEADER" in result.stderr and "names=" not in result.stderr
+
+
+def _no_analysis(*_args, **_kwargs):
+    raise AssertionError("the analysis ran before the output path was checked")
+
+
+@pytest.mark.parametrize("command, option", [
+    (BEND, "--plot"), (["snap", "--n", "4", "--lam", "0.7", "--Lc", "30"], "--plot")])
+def test_bad_output_path_fails_before_the_analysis(monkeypatch, capsys, command, option):
+    monkeypatch.setattr(kresling.analyses, "bending_stiffness", _no_analysis)
+    monkeypatch.setattr(kresling.analyses, "snap_through", _no_analysis)
+    assert main([*command, option, "/nonexistent/dir/x.png"]) == 2
+    err = capsys.readouterr().err
+    assert option in err and "/nonexistent/dir" in err and "does not exist" in err
+
+
+@pytest.mark.parametrize("command", [
+    ["pattern", "--n", "8", "--lam", "0.8", "--Lc", "30", "-o", "/nonexistent/dir/x.svg"],
+    ["sweep", "--n", "4", "--grid", "2", "--out", "/dev/null/x"],
+    ["reproduce", "--quick", "--out", "/dev/null/x"],
+    ["arm", "--table", "--plot", "/nonexistent/dir/x.png"],
+])
+def test_other_commands_check_outputs_first(capsys, command):
+    assert main(command) == 2
+    err = capsys.readouterr().err
+    assert "/nonexistent/dir" in err or "/dev/null" in err
+    assert "Traceback" not in err
+
+
+def test_plot_says_what_it_wrote(tmp_path, capsys):
+    target = tmp_path / "bend.png"
+    assert main([*BEND, "--plot", str(target)]) == 0
+    assert target.stat().st_size > 0
+    assert f"wrote {target}" in capsys.readouterr().out
+    target = tmp_path / "snap.png"
+    assert main(["snap", "--n", "4", "--lam", "0.7", "--Lc", "30", "--plot", str(target)]) == 0
+    assert f"wrote {target}" in capsys.readouterr().out
+
+
+def test_errors_name_the_cli_option(capsys):
+    # The library calls it deflection_angle; the command line --deflection-rad.
+    assert main([*BEND[:-1], "1.5"]) == 2
+    err = capsys.readouterr().err
+    assert "--deflection-rad = 1.5 is invalid" in err and "deflection_angle" not in err
+
+
+def test_snap_warns_when_the_peak_is_under_resolved(capsys):
+    # n = 8, lambda = 0.9, Lc = 15 mm: with 3 increments the force peak (at 6.8 mm) falls
+    # within the first increment of 13 mm, and the snap force comes out 29 % low.
+    args = ["snap", "--n", "8", "--lam", "0.9", "--Lc", "15", "--json"]
+    assert main([*args, "--steps", "3"]) == 0
+    captured = capsys.readouterr()
+    coarse = json.loads(captured.out)
+    assert "under-resolved" in captured.err and "--steps" in captured.err
+    assert coarse["resolution"]
+    assert main(args) == 0
+    captured = capsys.readouterr()
+    fine = json.loads(captured.out)
+    assert "under-resolved" not in captured.err and fine["resolution"] == ""
+    assert coarse["snap_force"] / fine["snap_force"] - 1 < -0.2
+
+
+def test_under_resolution_criterion_as_measured():
+    # Against a 2000-increment reference: 3 or more increments before the peak give the
+    # force within 0.25 % (no warning); fewer are flagged. Two designs of the measurement.
+    for design, steps_ok, steps_bad in ((Design(8, 0.8, 30), 15, 8),
+                                        (Design(10, 0.9, 15), 30, 10)):
+        reference = snap_through(design, steps=2000).snap_force
+        ok, bad = snap_through(design, steps=steps_ok), snap_through(design, steps=steps_bad)
+        assert ok.increments_to_peak >= 3 and ok.resolution == ""
+        assert ok.snap_force == pytest.approx(reference, rel=2.5e-3)
+        assert bad.increments_to_peak < 3 and "under-resolved" in bad.resolution
+    # A peak skipped entirely: the force is negative at the first increment.
+    missed = snap_through(Design(10, 0.9, 15), steps=3)
+    assert math.isnan(missed.snap_force) and "missed" in missed.resolution
+
+
+def test_manipulator_k_range_and_unit(capsys):
+    assert main(["manipulator", "--k", "100"]) == 2
+    err = capsys.readouterr().err
+    assert "--k = 100.0 is invalid: must be in [-30, 15] mm" in err
+    assert main(["manipulator", "--k", "15"]) == 0   # the end of the range: l1 = 0
+    capsys.readouterr()
+    text = run_kresling("manipulator", "--help", cwd=".").stdout
+    assert "--k MM" in text and "[mm]" in text
+
+
+def test_manipulator_target_beyond_reach_exits_non_zero(capsys):
+    assert main(["manipulator", "--target", "0", "0", "1000"]) == 1
+    captured = capsys.readouterr()
+    assert "NOT reachable" in captured.out and "beyond the arm's reach" in captured.err
+    assert main(["manipulator", "--target", "0", "0", "1000", "--json"]) == 1
+    assert json.loads(capsys.readouterr().out)["reachable"] is False
+
+
+def test_manipulator_prints_bend_angles_in_degrees(capsys):
+    assert main(["manipulator"]) == 0
+    out = capsys.readouterr().out
+    assert "bend [rad]" in out and "[deg]" in out
+
+
+def test_k_con_above_k_ext_is_commented(capsys):
+    # n = 40, lambda = 0.9, Lc = 15 mm: K_con = 11.5 > K_ext = 1.23 N*m/rad (5 mm).
+    assert main(["bend", "--n", "40", "--lam", "0.9", "--Lc", "15", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["ratio"] < 1 and any("K_con > K_ext" in note for note in out["notes"])
+    assert main(BEND) == 0
+    assert "K_con > K_ext" not in capsys.readouterr().out   # the thesis's kind: no note
+
+
+def _stopped_at(result, fraction, message="increment 4 failed (scripted)"):
+    # The increments up to ``fraction`` of the travel, as a run that failed after them.
+    keep = int(np.sum(np.abs(result.deflection) <= fraction * result.target_deflection * 1.001))
+    arrays = {k: getattr(result, k)[:keep] for k in ("deflection", "force", "angle", "moment",
+                                                      "iterations", "negative_eigenvalues")}
+    return dataclasses.replace(result, completed=False, message=message, **arrays)
+
+
+def test_partial_results_are_marked_everywhere(monkeypatch, capsys):
+    # A contracted run that stops at 30 % of its travel (n = 200 once stopped at 21 %): the
+    # table, the JSON and the Python result each say so, and the exit status is 1.
+    real = bending_stiffness
+
+    def stopping(design, protocol, **options):
+        result = real(design, protocol, **options)
+        return dataclasses.replace(result, contracted=_stopped_at(result.contracted, 0.3))
+
+    monkeypatch.setattr(kresling.analyses, "bending_stiffness", stopping)
+    assert main(BEND) == 1
+    captured = capsys.readouterr()
+    k_con = next(line for line in captured.out.splitlines() if line.startswith("K_con"))
+    assert "PARTIAL" in k_con and "30%" in k_con
+    ratio = next(line for line in captured.out.splitlines() if line.startswith("ratio"))
+    assert "PARTIAL" in ratio
+    k_ext = next(line for line in captured.out.splitlines() if line.startswith("K_ext"))
+    assert "PARTIAL" not in k_ext
+    assert "stopped at 30%" in captured.err
+    assert main([*BEND, "--json"]) == 1
+    out = json.loads(capsys.readouterr().out)
+    assert out["completed"] is False
+    assert out["partial"] == {"contracted": pytest.approx(0.3, abs=1e-3)}
+    result = stopping(Design(4, 0.7, 30), "0.001rad")
+    assert result.partial and result.contracted.partial and not result.extended.partial
+    assert "PARTIAL" in repr(result) and "PARTIAL" in repr(result.contracted)
+    assert "PARTIAL" not in repr(result.extended)
+
+
+def test_a_real_failed_run_reports_its_travel():
+    # A tolerance the solver cannot reach stops the run at its first increment.
+    r = bending_test(Design(8, 0.8, 30), 0, tolerance=1e-14, max_iterations=3)
+    assert r.partial and r.travel_fraction == 0.0 and "PARTIAL" in repr(r)
+    s = snap_through(Design(8, 0.8, 30), tolerance=1e-14, max_iterations=3)
+    assert s.partial and s.travel_fraction < 1 and s.summary()["partial"] is True
+
+
+def test_pattern_reports_extent_and_page(tmp_path, capsys):
+    svg = tmp_path / "cell.svg"
+    assert main(["pattern", "--n", "8", "--lam", "0.8", "--Lc", "30", "-o", str(svg)]) == 0
+    out = capsys.readouterr().out
+    text = svg.read_text()
+    page = [float(v) for v in (text.split('width="')[1].split("mm")[0],
+                               text.split('height="')[1].split("mm")[0])]
+    assert f"page {page[0]:.1f} x {page[1]:.1f} mm with 5 mm margins" in out
+    assert f"pattern {page[0] - 10:.1f} x {page[1] - 10:.1f} mm" in out
+    assert main(["pattern", "--n", "8", "--lam", "0.8", "--Lc", "30", "-o",
+                 str(tmp_path / "cell.svg"), "--json"]) == 0
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["page_width_mm"] == pytest.approx(summary["width_mm"] + 10)
+    assert summary["page_width_mm"] == pytest.approx(page[0], abs=1e-5)
+
+
+def test_odd_n_in_the_bending_test_is_explained(capsys):
+    assert main(["bend", "--n", "5", "--lam", "0.9", "--Lc", "15"]) == 2
+    err = capsys.readouterr().err
+    assert "must be even for the bending test" in err and "opposite" in err
+    assert "snap-through test" in err
+    assert main(["snap", "--n", "5", "--lam", "0.9", "--Lc", "15"]) == 0   # odd n is fine there
+
+
+def test_bending_path_at_lc_zero_names_lc():
+    with pytest.raises(ValueError, match="^Lc = 0.0 is invalid: must be > 0 for the bending "
+                                         "test in the contracted state"):
+        bending_path(Design(8, 0.8, 0), "contracted")
+    assert np.isfinite(bending_path(Design(8, 0.8, 0), "extended", steps=2).force).all()
