@@ -101,6 +101,11 @@ def run(args) -> int:
                 ("snap_force", result["snap_force"], "N",
                  mark("first local maximum (section 3.5)", "snap_through")),
                 ("bistable", result["bistable"], "", mark(snap.bistability, "snap_through"))]
+        if args.deflection_rad is None:
+            print("protocol: the middle polygon driven 5 mm in 350 increments (Table 3)")
+        else:
+            print(f"protocol: driven to a deflection of {args.deflection_rad:g} rad "
+                  f"({math.degrees(args.deflection_rad):.4g} deg) in 10 increments")
         print_table(rows, ("quantity", "value", "unit", "meaning"))
         for note in notes:
             print(f"\nnote: {note}")

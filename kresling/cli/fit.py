@@ -8,7 +8,7 @@ import re
 import sys
 from contextlib import contextmanager
 
-from kresling.cli._output import print_json, print_table
+from kresling.cli._output import degrees, print_json, print_table
 
 
 def _pair(text: str) -> tuple:
@@ -171,10 +171,10 @@ def run_bending(args) -> int:
     if args.json:
         print_json(report)
         return 0
-    print_table([[f.source, f.state, f.K, f.intercept, f.offset, f.points]
+    print_table([[f.source, f.state, f.K, f.intercept, f.offset, degrees(f.offset), f.points]
                  for fits in result.fits.values() for f in fits],
                 ("record", "state", "K_B [N*m/rad]", "intercept [N*m]", "offset [rad]",
-                 "points"))
+                 "[deg]", "points"))
     print()
     for state, summary in result.summaries.items():
         _print_summary(f"K_B {state} [N*m/rad]", summary)
