@@ -239,3 +239,29 @@ def test_bending_path_at_lc_zero_names_lc():
                                          "test in the contracted state"):
         bending_path(Design(8, 0.8, 0), "contracted")
     assert np.isfinite(bending_path(Design(8, 0.8, 0), "extended", steps=2).force).all()
+
+
+def _options(parser, name):
+    import argparse
+
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub, subparser in action.choices.items():
+                yield from _options(subparser, f"{name} {sub}".strip())
+        elif action.option_strings:
+            yield name, action
+
+
+def test_every_numeric_option_says_its_unit():
+    # A number on the command line is a length, a force, an angle, a stiffness ... or a
+    # count or a ratio: the help says which.
+    import re
+
+    from kresling.cli import build_parser
+
+    unit = re.compile(r"\[[^\]]+\]|\bcounts?\b|dimensionless|\bratio\b|RATIO|fraction|\bmm\b|"
+                      r"dots per inch|\bindex\b|number of")
+    missing = [f"{name} {action.option_strings[-1]}" for name, action in
+               _options(build_parser(), "") if action.type in (int, float)
+               and not action.choices and not unit.search(action.help or "")]
+    assert not missing, missing

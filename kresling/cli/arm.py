@@ -24,7 +24,8 @@ def register(subparsers) -> None:
                     "forces in N.",
     )
     design = parser.add_argument_group("the cell (default: the thesis's optimum)")
-    design.add_argument("--n", type=int, default=10, help="sides of the polygon (default 10)")
+    design.add_argument("--n", type=int, default=10,
+                        help="sides of the polygon, a count (default 10)")
     design.add_argument("--lam", type=float, default=0.9,
                         help="angle ratio, dimensionless (default 0.9)")
     design.add_argument("--Lc", type=float, default=15.0,

@@ -25,9 +25,9 @@ def register(subparsers) -> None:
                         help="grid points along Lc and lambda (default 19 21: every 2.5 mm "
                              "and every 0.01)")
     parser.add_argument("--n", type=int, nargs="+", default=None, metavar="N",
-                        help="polygon sizes (even; default 4 6 8 10)")
+                        help="polygon sizes, counts of sides (even; default 4 6 8 10)")
     parser.add_argument("--workers", type=int, default=None,
-                        help="parallel workers of the sweep (default: every core)")
+                        help="parallel workers of the sweep, a count (default: every core)")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.set_defaults(func=run)
 

@@ -44,7 +44,8 @@ def register(subparsers) -> None:
     parser.add_argument("--module", action="store_true",
                         help="cut a module: the cell and its mirror image on one sheet")
     parser.add_argument("--polygon-bridges", type=int, dest="polygon_bridges",
-                        help="laminate: bridges on the base polygon in cut layer 1 (default 2)")
+                        help="laminate: bridges on the base polygon in cut layer 1, a count "
+                             "(default 2)")
     for option, destination, text in _PARAMETERS:
         parser.add_argument(option, type=float, dest=destination, help=text)
     parser.add_argument("--dpi", type=float, default=96.0,

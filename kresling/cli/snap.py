@@ -37,8 +37,8 @@ def register(subparsers) -> None:
     add_design_arguments(parser)
     add_specimen_arguments(parser)
     parser.add_argument("--steps", type=int, default=100,
-                        help="displacement increments from Le to Lc (default 100); too few "
-                             "to resolve the force peak draw a warning")
+                        help="displacement increments from Le to Lc, a count (default 100); "
+                             "too few to resolve the force peak draw a warning")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--plot", metavar="FILE.png",
                         help="write the force-travel figure (like thesis figure 3.16)")

@@ -30,8 +30,8 @@ def register(subparsers) -> None:
     parser.add_argument("--n", type=int, nargs="+", default=list(THESIS_N),
                         help="sides of the base polygon, counts (default: 4 6 8 10)")
     parser.add_argument("--grid", type=int, nargs="+", default=[100], metavar="G",
-                        help="grid points along Lc and lambda: one number for both, or two "
-                             "(default 100, the thesis's)")
+                        help="grid points along Lc and lambda, counts: one number for both, or "
+                             "two (default 100, the thesis's)")
     parser.add_argument("--Lc", type=float, nargs=2, metavar=("MIN", "MAX"),
                         help="contracted-height range [mm] (default R/2 to 2R)")
     parser.add_argument("--lam", type=float, nargs=2, metavar=("MIN", "MAX"),

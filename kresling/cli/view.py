@@ -23,10 +23,11 @@ def register(subparsers) -> None:
     parser.add_argument("-o", "--out", metavar="FILE.html",
                         help="the page to write (default: beside the file, with .html)")
     parser.add_argument("--frame", type=int, metavar="K",
-                        help="open at frame K when the address names none (out of range: "
-                             "the nearest frame, said on stderr)")
+                        help="open at frame K (an index) when the address names none (out of "
+                             "range: the nearest frame, said on stderr)")
     parser.add_argument("--max-frames", type=int, default=200, metavar="M",
-                        help="at most M frames in the page, evenly spaced (default 200)")
+                        help="at most M frames in the page, a count, evenly spaced (default "
+                             "200)")
     parser.set_defaults(func=run)
 
 
