@@ -163,3 +163,13 @@ def test_parameters_round_trip_and_bad_ones():
         SpecimenParameters().with_mountain_creases("open")
     with pytest.raises(ValueError, match="parameters = .* is invalid"):
         sweep(design_grid((4,), 2), ["psi_ratio"], parameters={"kf": 0.1}, progress=False)
+
+
+def test_tables_say_which_material_and_model(tmp_path):
+    default = run_kresling("snap", *DESIGN, cwd=tmp_path)
+    assert "material and model: the thesis's (kf = 0.047 N/rad" in default.stdout
+    changed = run_kresling("snap", *DESIGN, "--kf", "0.05", "--mountain", "intact",
+                           "--topology", "single", cwd=tmp_path)
+    line = next(text for text in changed.stdout.splitlines()
+                if text.startswith("material and model"))
+    assert "kf = 0.05 N/rad" in line and "intact" in line and "--topology single" in line

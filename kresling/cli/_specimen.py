@@ -87,3 +87,25 @@ def describe(parameters) -> dict:
     """The parameters as the commands print them in JSON: every field of
     ``SpecimenParameters`` plus ``mountain_creases`` (cut, intact or custom)."""
     return dict(parameters.as_dict(), mountain_creases=parameters.mountain_creases)
+
+
+def summary_line(parameters) -> str:
+    """One line saying which material and model the numbers are for: the thesis's, or what
+    differs from it (``kf = 0.094 N/rad; mountain creases intact``)."""
+    from kresling.model import SpecimenParameters
+
+    thesis = SpecimenParameters()
+    changes = []
+    if parameters.kf != thesis.kf:
+        changes.append(f"kf = {parameters.kf:g} N/rad")
+    for option, name, _, _ in _RATIOS:
+        if getattr(parameters, name) != getattr(thesis, name):
+            changes.append(f"{name_of(option).replace('_', ' ')} = {getattr(parameters, name):g}")
+    if parameters.mountain_creases != "cut":
+        changes.append(f"mountain creases {parameters.mountain_creases}")
+    if not parameters.duplicate_shared_edges:
+        changes.append("one element per edge (--topology single)")
+    if not changes:
+        return ("material and model: the thesis's (kf = 0.047 N/rad, its stiffness ratios, "
+                "cut mountain creases, MERLIN2's duplicated elements)")
+    return "material and model: the thesis's but " + "; ".join(changes)

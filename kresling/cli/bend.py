@@ -8,7 +8,7 @@ import sys
 
 from kresling.cli._output import check_output_file, cli_names, print_json, print_table
 from kresling.cli._specimen import (add_specimen_arguments, describe,
-                                    specimen_parameters_from_args)
+                                    specimen_parameters_from_args, summary_line)
 from kresling.cli.design import add_design_arguments, design_from_args
 
 
@@ -107,6 +107,7 @@ def run(args) -> int:
             print(f"protocol: driven to a deflection of {args.deflection_rad:g} rad "
                   f"({math.degrees(args.deflection_rad):.4g} deg) in 10 increments")
         print_table(rows, ("quantity", "value", "unit", "meaning"))
+        print(f"\n{summary_line(parameters)}")
         for note in notes:
             print(f"\nnote: {note}")
     if args.plot:

@@ -8,7 +8,7 @@ import sys
 from kresling.cli._output import check_output_file, cli_names, print_json, print_table
 from kresling.cli.bend import finite_or_none
 from kresling.cli._specimen import (add_specimen_arguments, describe,
-                                    specimen_parameters_from_args)
+                                    specimen_parameters_from_args, summary_line)
 from kresling.cli.design import add_design_arguments, design_from_args
 
 # (key, unit, meaning) in the order the table prints them.
@@ -80,6 +80,7 @@ def run(args) -> int:
             rows.append((key, value, unit, meaning + partial))
         print_table(rows, ("quantity", "value", "unit", "meaning"))
         print(f"\n{result.bistability}")
+        print(summary_line(parameters))
     if args.plot:
         import matplotlib
 

@@ -13,7 +13,8 @@ import sys
 from pathlib import Path
 
 from kresling.cli._output import check_output_folder, log_to_stderr, print_table
-from kresling.cli._specimen import add_specimen_arguments, specimen_parameters_from_args
+from kresling.cli._specimen import (add_specimen_arguments, specimen_parameters_from_args,
+                                    summary_line)
 
 
 def register(subparsers) -> None:
@@ -86,6 +87,7 @@ def run(args) -> int:
             if client is not None:
                 client.close()
     _print_summary(table, metrics, Path(args.out))
+    print(f"\n{summary_line(parameters)}")
     if args.plot:
         _plot(table, metrics, Path(args.out))
     return 0
