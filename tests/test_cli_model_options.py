@@ -110,10 +110,14 @@ def test_topology_moves_k_con_of_a_stack_not_a_single_cell():
 
 def test_sweep_records_parameters_and_scales_with_kf(tmp_path):
     grid = design_grid((4,), 2)
-    base = sweep(grid, ["snap_force"], workers=1, progress=False, out=tmp_path / "a")
-    double = sweep(grid, ["snap_force"], workers=1, progress=False, out=tmp_path / "b",
+    metrics = ["snap_force", "kb_ratio_linear"]
+    base = sweep(grid, metrics, workers=1, progress=False, out=tmp_path / "a")
+    double = sweep(grid, metrics, workers=1, progress=False, out=tmp_path / "b",
                    parameters=SpecimenParameters(kf=0.094))
     assert double["snap_force"] == pytest.approx(2 * base["snap_force"], rel=1e-7)
+    # The linearised K_B is one linear solve: exact to round-off; the ratio does not move.
+    assert double["kb_ext_linear"] == pytest.approx(2 * base["kb_ext_linear"], rel=1e-9)
+    assert double["kb_ratio_linear"] == pytest.approx(base["kb_ratio_linear"], rel=1e-9)
     manifest = json.loads((tmp_path / "b" / "manifest.json").read_text())
     assert manifest["parameters"] == SpecimenParameters(kf=0.094).as_dict()
     assert double.attrs["parameters"]["kf"] == 0.094

@@ -64,7 +64,8 @@ def sweep(designs, metrics=DEFAULT_METRICS, *, workers=None, executor=None, out=
     SweepTable
         One row per design, in the order of ``designs``: ``n, Lc, lam, R``, every metric's
         columns, ``status``, ``reason``, ``iterations``, ``seconds``, ``index``.
-        ``attrs["computed"]`` counts the designs computed by this call.
+        ``attrs["computed"]`` counts the designs computed by this call;
+        ``attrs["parameters"]`` holds the specimen parameters (``SpecimenParameters.as_dict``).
 
     Raises
     ------
