@@ -208,6 +208,8 @@ def test_a_real_failed_run_reports_its_travel():
     assert r.partial and r.travel_fraction == 0.0 and "PARTIAL" in repr(r)
     s = snap_through(Design(8, 0.8, 30), tolerance=1e-14, max_iterations=3)
     assert s.partial and s.travel_fraction < 1 and s.summary()["partial"] is True
+    assert "PARTIAL" in repr(s)
+    assert "PARTIAL" not in repr(snap_through(Design(8, 0.8, 30)))
 
 
 def test_pattern_reports_extent_and_page(tmp_path, capsys):

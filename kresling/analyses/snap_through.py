@@ -186,6 +186,15 @@ class SnapThroughResult:
         """Whether the force has a local maximum (a snap-through force exists)."""
         return not math.isnan(self.snap_force)
 
+    def __repr__(self) -> str:
+        peak = (f"snap force {self.snap_force:.6g} N at {self.snap_displacement:.4g} mm"
+                if self.has_peak else "no force peak")
+        status = "" if self.completed else (f", PARTIAL: stopped at {self.travel_fraction:.0%} "
+                                            f"of the travel ({self.message})")
+        warning = f", {self.resolution}" if self.resolution else ""
+        return (f"SnapThroughResult({self.design!r}, {peak}, "
+                f"{'bistable' if self.bistable else 'not bistable'}{status}{warning})")
+
     def summary(self) -> dict:
         """The scalar results as a ``dict`` (NaN where undefined)."""
         keys = ("snap_force", "snap_displacement", "unstable_displacement", "energy_barrier",
