@@ -81,3 +81,24 @@ def with_views(out_dir, quick=True):
     view_model(model).write_json(second)
     section.add_view(second, "The sheet at rest.")
     return section
+
+
+#: Rows of the long table of :func:`long_table` (more than the page shows unfolded).
+LONG_ROWS = 45
+
+
+def long_table(out_dir, quick=True):
+    """Symbols to set (K_B, Psi_ext), a check on synthetic data, a short and a long table."""
+    out_dir.mkdir(parents=True, exist_ok=True)
+    section = Section("K_B ratios", "The K_B ratio is K_ext / K_con; Psi_ext too.")
+    section.checks += [Check("K_B of the cell", 2.0, 2.0, "thesis", atol=0.1),
+                       Check("K_B recovered from synthetic trials", 1.0, 1.0, "synthetic truth",
+                             atol=0.1, synthetic=True)]
+    lines = ["n,K_B,status"] + [f"{4 + k % 4},{0.5 * k},{'ok' if k % 9 else 'failed'}"
+                                for k in range(LONG_ROWS)]
+    (out_dir / "long.csv").write_text("\n".join(lines) + "\n")
+    section.add_table(out_dir / "long.csv", "Every K_B.")
+    (out_dir / "short.csv").write_text("a,b\n1,2\n")
+    section.add_table(out_dir / "short.csv", "Two numbers.")
+    section.add_figure(_png(out_dir / "line.png"), "K_B against nothing.")
+    return section

@@ -94,3 +94,51 @@ def test_the_browser_check_sees_a_broken_image(tmp_path):
                     '<img src="missing.png" alt="missing">'
                     '<img src="data:image/png;base64,AAAA" alt="garbled"></body></html>')
     assert images_in_browser(page, tmp_path) == {"total": 3, "broken": ["missing", "garbled"]}
+
+
+LAYOUT_CHECK = """<script>
+window.addEventListener("load", function () {
+  var nav = document.getElementById("toc"), height = document.documentElement.scrollHeight;
+  var seen = [];
+  [0.25, 0.5, 0.99].forEach(function (f) {
+    window.scrollTo(0, Math.floor(f * (height - window.innerHeight)));
+    var box = nav.getBoundingClientRect();
+    seen.push({scrolled: window.scrollY, top: box.top, bottom: box.bottom});
+  });
+  var folded = Array.prototype.map.call(document.querySelectorAll("details"), function (d) {
+    return {open: d.open, rows: d.querySelectorAll("tbody tr").length,
+            height: d.getBoundingClientRect().height,
+            summary: d.querySelector("summary").getBoundingClientRect().height};
+  });
+  var out = document.createElement("pre");
+  out.id = "layout-check";
+  out.textContent = JSON.stringify({height: height, view: window.innerHeight, nav: seen,
+                                    links: nav.querySelectorAll("a").length, folded: folded});
+  document.body.appendChild(out);
+});
+</script>"""
+
+
+@needs_browser
+def test_the_contents_stay_in_view_and_the_sweep_table_is_folded(quick_report, tmp_path):
+    out, _, _ = quick_report
+    page = out / "report.html"
+    probe = page.with_name("_layout_probe.html")
+    probe.write_text(page.read_text().replace("</body>", LAYOUT_CHECK + "</body>"))
+    result = subprocess.run(
+        [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
+         f"--user-data-dir={tmp_path / 'chromium-profile'}", "--window-size=1400,1000",
+         "--virtual-time-budget=30000", "--dump-dom", probe.as_uri()],
+        capture_output=True, text=True, timeout=180)
+    start = result.stdout.find('<pre id="layout-check">')
+    assert start >= 0, f"no result in the DOM; chromium said: {result.stderr[-2000:]}"
+    found = json.loads(html.unescape(result.stdout[start:].split(">", 1)[1].split("</pre>")[0]))
+    assert found["height"] > 10 * found["view"]  # a long page, scrolled for real
+    for position in found["nav"]:
+        assert position["scrolled"] > 0 and position["top"] == 0, found["nav"]
+    sections = json.loads((out / "report.json").read_text())["sections"]
+    assert found["links"] >= 2 + len(sections)  # top, summary, every section (and parts)
+    # The sweep's 1,600 designs: all in the page, folded away until asked for
+    folded = [d for d in found["folded"] if d["rows"] == 1600]
+    assert len(folded) == 1 and not folded[0]["open"], found["folded"]
+    assert folded[0]["height"] <= folded[0]["summary"] + 10  # only its one-line summary shows

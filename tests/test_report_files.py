@@ -53,7 +53,7 @@ def test_json_has_every_check_with_its_tolerance(document):
     assert relative == {
         "name": "relative", "value": 101.0, "reference": 100.0, "source": "by hand",
         "unit": "", "rtol": 0.02, "atol": 0.0, "tolerance": 2.0, "difference": 1.0,
-        "relative_difference": 0.01, "passed": True, "note": "2 %"}
+        "relative_difference": 0.01, "passed": True, "note": "2 %", "synthetic": False}
     assert [c["passed"] for c in off["checks"]] == [True, False, False]
     nan = off["checks"][2]
     assert nan["value"] is None and nan["difference"] is None and nan["reference"] == 2.0
@@ -163,3 +163,87 @@ def test_the_commit_is_that_of_the_checkout_holding_the_package_or_none(tmp_path
     (tmp_path / "site-packages").mkdir()
     assert git_commit(tmp_path / "site-packages") == (None, None)
     assert provenance(tmp_path / "site-packages")["git_commit"] is None
+
+
+@pytest.fixture(scope="module")
+def long_page(tmp_path_factory):
+    chapters = (Chapter("long", "Part 1", "Symbols and a long table", "report_fakes",
+                        "long_table"),) + CHAPTERS[:2]
+    report = build_report(tmp_path_factory.mktemp("long"), chapters=chapters)
+    return report, report.html_path.read_text()
+
+
+def test_the_table_of_contents_links_every_section_and_its_parts(long_page):
+    _, page = long_page
+    toc = page[page.index('<nav id="toc"'):page.index("</nav>")]
+    targets = re.findall(r'href="#([^"]+)"', toc)
+    assert targets[:2] == ["top", "summary"]
+    assert {"long", "long-checks", "long-figures", "long-tables", "good", "good-checks",
+            "good-figures", "good-tables", "off", "off-checks"} <= set(targets)
+    assert "off-figures" not in targets  # a section without figures lists none
+    ids = set(re.findall(r'\sid="([^"]+)"', page))
+    assert set(targets) <= ids, set(targets) - ids
+    assert '<span class="count">1/3</span>' in toc  # checks passed, beside the section
+    assert "position: sticky" in page  # stays in view (the browser test scrolls it)
+
+
+def test_a_long_table_is_summarised_and_folded_a_short_one_shown(long_page):
+    import csv as csv_module
+
+    import numpy as np
+
+    from report_fakes import LONG_ROWS
+
+    report, page = long_page
+    start = page.index("Every K<sub>B</sub>.")
+    block = page[start:page.index("Two numbers.")]
+    summary, folded = block.split("<details>")
+    assert f"<summary>Show all {LONG_ROWS} rows</summary>" in folded
+    assert folded.count("<tr>") == 1 + LONG_ROWS  # header and every row
+    with open(report.out_dir / "long" / "long.csv", newline="") as handle:
+        rows = list(csv_module.DictReader(handle))
+    k_b = np.array([float(r["K_B"]) for r in rows])
+    expected = (f"<tr><td>K_B</td><td class=\"num\">{LONG_ROWS}</td><td class=\"num\">"
+                f"{k_b.min():.6g}</td><td class=\"num\">{np.median(k_b):.6g}</td>"
+                f"<td class=\"num\">{k_b.max():.6g}</td><td></td></tr>")
+    assert expected in summary
+    failed = sum(r["status"] == "failed" for r in rows)
+    assert f"ok \u00d7 {LONG_ROWS - failed}, failed \u00d7 {failed}" in summary
+    short = page[page.index("Two numbers."):]
+    assert "<details>" not in short.split("</section>")[0] and "<td class=\"num\">2</td>" in short
+
+
+def test_symbols_are_set_with_subscripts(long_page):
+    _, page = long_page
+    main = page[page.index("<main"):]
+    assert "The K<sub>B</sub> ratio is K<sub>ext</sub> / K<sub>con</sub>; &Psi;<sub>ext</sub> " \
+           "too." in main
+    assert "K<sub>B</sub> of the cell" in main and "K<sub>B</sub> against nothing." in main
+    assert "<h2>Part 1: K<sub>B</sub> ratios</h2>" in main  # the section's own title
+    # Visible text keeps no plain K_B but in CSV cells and column names (data, not prose)
+    text = re.sub(r"<details>.*?</details>", "", main, flags=re.S)
+    text = re.sub(r"<table class=\"columns\">.*?</table>", "", text, flags=re.S)
+    text = re.sub(r"<[^>]*>", "", text)
+    assert "K_B" not in text
+    assert 'alt="K_B against nothing."' in main  # an attribute holds plain text
+
+
+def test_checks_on_synthetic_data_are_tagged_as_pipeline_recovery(long_page):
+    report, page = long_page
+    document = json.loads(report.json_path.read_text())
+    checks = document["sections"][0]["checks"]
+    assert [c["synthetic"] for c in checks] == [False, True]
+    section = page[page.index('<section id="long">'):page.index("</section>")]
+    rows = re.findall(r"<tr>.*?</tr>", section[section.index('<table class="checks">'):],
+                      flags=re.S)
+    assert "pipeline recovery, synthetic data" not in rows[1]  # the thesis's check
+    assert "pipeline recovery, synthetic data" in rows[2]
+    assert section.count("not that the model reproduces the thesis's experiment") == 1
+    assert "pipeline recovery" not in page[page.index('<section id="good">'):]
+
+
+def test_figures_are_shown_at_their_physical_size(long_page):
+    _, page = long_page
+    # report_fakes draws 2 inches wide at 50 dpi (100 pixels): 192 CSS pixels at 96 per inch
+    assert re.findall(r'<img src="data:image/png;base64,[^"]*" width="(\d+)"', page) == \
+        ["192"] * 2

@@ -10,13 +10,15 @@ Layout::
                    "summary", "checks_passed", "checks_total", "checks_text",
                    "checks": [{"name", "value", "reference", "source", "unit", "rtol",
                                "atol", "tolerance", "difference", "relative_difference",
-                               "passed", "note"}],
+                               "passed", "note", "synthetic"}],
                    "figures": [{"path", "caption"}], "tables": [{"path", "caption"}],
                    "views": [{"path", "caption"}]}]}
 
-A view is an interactive plotly figure saved as JSON beside the page. ``git_commit`` is
-``null`` when the package does not run from a git checkout; ``git_dirty`` says whether the
-checkout's tracked files differed from that commit.
+A view is an interactive plotly figure saved as JSON beside the page. A check with
+``synthetic`` true tests a pipeline on synthetic data the model generated (a known truth
+recovered), not the thesis's experiment. ``git_commit`` is ``null`` when the package does
+not run from a git checkout; ``git_dirty`` says whether the checkout's tracked files
+differed from that commit.
 
 Paths are relative to the report's directory. Non-finite numbers are written as ``null``
 (JSON has no NaN); such a check never passes.
@@ -40,6 +42,7 @@ def check_record(check) -> dict:
         "difference": _number(check.difference),
         "relative_difference": _number(check.relative_difference),
         "passed": bool(check.passed), "note": check.note,
+        "synthetic": bool(check.synthetic),
     }
 
 

@@ -33,6 +33,9 @@ class Check:
         Unit of both numbers.
     note : str
         Why this tolerance, or what differs (shown in the report).
+    synthetic : bool
+        True for a check of a pipeline on synthetic data the model generated (a known truth
+        recovered), not a comparison with the thesis's experiment; the report tags it so.
     """
 
     name: str
@@ -43,6 +46,7 @@ class Check:
     atol: float = 0.0
     unit: str = ""
     note: str = ""
+    synthetic: bool = False
 
     @property
     def difference(self) -> float:

@@ -29,6 +29,9 @@ __all__ = ["reproduce", "protocol_deviations", "appendix_e_markers"]
 logger = logging.getLogger(__name__)
 
 _APPENDIX_E = "thesis Appendix E, config [1 0 1] at L1 = 10 (k = 10)"
+#: How the report names what the synthetic marker comparison shows.
+_RECOVERY_LABEL = "Pipeline recovery on synthetic data, not a reproduction of the thesis's " \
+                  "experiment"
 
 
 def appendix_e_markers(model: Manipulator, k: float = 10.0) -> np.ndarray:
@@ -73,12 +76,15 @@ def _figures(section: Section, out_dir: Path, model: Manipulator, measured, comp
         ("fig4_12_configurations.png", plots.plot_configurations(model, 10),
          "Figure 4.12: every configuration at the protocol's full displacement (k = 10)."),
         ("fig4_13_markers.png", plots.plot_marker_comparison(model, measured),
-         "Figure 4.13: predicted markers against the synthetic measured set (the thesis's "
-         "raw marker data is not published)."),
+         f"{_RECOVERY_LABEL}. Figure 4.13's comparison: predicted markers against a synthetic "
+         f"measured set made from the model with known perturbations (the thesis's raw marker "
+         f"data is not published)."),
         ("fig4_14_error.png", plots.plot_marker_errors(comparison),
-         "Figure 4.14: Euclidean error per marker and step (synthetic measured set)."),
+         f"{_RECOVERY_LABEL}. Figure 4.14's comparison: Euclidean error per marker and step "
+         f"against the synthetic measured set."),
         ("fig4_15_normalized_error.png", plots.plot_marker_errors(comparison, normalized=True),
-         "Figure 4.15: error divided by the predicted length from the base."),
+         f"{_RECOVERY_LABEL}. Figure 4.15's comparison: error divided by the predicted length "
+         f"from the base (synthetic measured set)."),
         ("workspaces.png", plots.plot_workspaces(workspaces(model, grid_points)).figure,
          "Beyond the thesis: tip workspace of every configuration (tendons 10-40 mm)."),
     ]
@@ -109,9 +115,10 @@ def reproduce(out_dir, quick: bool = True) -> Section:
         "Manipulator kinematics (chapter 4, Appendix E)",
         "Jones constant-curvature kinematics of the three-module Kresling arm (eqns 25-30) "
         "with atan2 and safe straight-case forms; Appendix E's configurations and motor "
-        "counts; the section 4.3 pseudo-linkage protocol; Table 5's module lengths; marker "
-        "comparison on a synthetic measured set made from the model with known "
-        "perturbations; and an inverse-kinematics configuration planner.")
+        "counts; the section 4.3 pseudo-linkage protocol; Table 5's module lengths; the "
+        "marker comparison run on a synthetic measured set made from the model with known "
+        "perturbations (a pipeline recovery on synthetic data, not a reproduction of the "
+        "thesis's experiment); and an inverse-kinematics configuration planner.")
 
     state = forward_kinematics(model, "101", [10.0, 40.0, 40.0])
     by_hand = appendix_e_markers(model)
@@ -149,7 +156,9 @@ def reproduce(out_dir, quick: bool = True) -> Section:
                ("config", "joint", "state", "min_mm", "max_mm", "predicted_min_mm",
                 "predicted_max_mm", "inside", "outside_by_mm", "measured_min_mm", "measured_max_mm"))
     section.add_table(out_dir / "table5_joint_lengths.csv",
-                      "Table 5 beside the predicted module lengths (and the synthetic set's).")
+                      "Table 5 beside the predicted module lengths (and, in the measured "
+                      "columns, the synthetic set's: model-generated, not the thesis's "
+                      "measurements).")
     for state_code, label, expected in ((1, "extended", model.extended_length),
                                         (0, "contracted", model.rest_tendon_length)):
         middles = [0.5 * (r["min_mm"] + r["max_mm"]) for r in table5 if r["state"] == state_code]
@@ -166,7 +175,8 @@ def reproduce(out_dir, quick: bool = True) -> Section:
                [dict(config=c, **v) for c, v in summary.items()],
                ("config", "mean_error_mm", "max_error_mm", "max_normalized_error"))
     section.add_table(out_dir / "marker_errors.csv",
-                      "Marker errors per configuration on the synthetic measured set.")
+                      f"{_RECOVERY_LABEL}: marker errors per configuration against the "
+                      f"synthetic measured set.")
 
     success, worst = _ik_success(model, 10 if quick else 200)
     far = inverse_kinematics(model, [0.0, 0.0, 1000.0])
