@@ -142,3 +142,30 @@ def test_the_contents_stay_in_view_and_the_sweep_table_is_folded(quick_report, t
     folded = [d for d in found["folded"] if d["rows"] == 1600]
     assert len(folded) == 1 and not folded[0]["open"], found["folded"]
     assert folded[0]["height"] <= folded[0]["summary"] + 10  # only its one-line summary shows
+
+
+def test_the_readme_shows_the_quick_reports_table(quick_report):
+    """README's quick start shows this command's table: the same sections, thesis chapters,
+    checks and outcomes (not the seconds, which depend on the machine)."""
+    import re
+    from pathlib import Path
+
+    _, result, _ = quick_report
+    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    start = readme.index("```text\nsection ")
+    shown = readme[start + len("```text\n"):readme.index("```", start + 8)].splitlines()
+    printed = result.stdout.splitlines()
+    table = printed[printed.index(next(line for line in printed
+                                       if line.startswith("section "))):]
+
+    def rows(lines):  # after the header and its rule, up to the blank line
+        body = lines[2:]
+        body = body[:body.index("")] if "" in body else body
+        # columns are two or more spaces apart; the seconds (the fourth) are left out
+        return [[cell for k, cell in enumerate(re.split(r"\s{2,}", line.strip())) if k != 3]
+                for line in body]
+
+    assert rows(shown) == rows(table)
+    assert len(rows(shown)) == len(CHAPTERS)
+    total = re.search(r"(\d+/\d+) checks passed", "\n".join(shown)).group(1)
+    assert f"{total} checks passed" in result.stdout
