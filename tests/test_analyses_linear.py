@@ -59,3 +59,91 @@ def test_scales_with_kf():
 def test_bad_input(call, message):
     with pytest.raises(ValueError, match=message):
         call()
+
+
+# -- the C++ computation against an independent one in Python ------------------------------
+#
+# The reference builds the constraint map u = T q with the pins' edge points, condenses the
+# tangent assembled in Python with scipy, and refines the solve in extended precision: the
+# linearised test as it was computed in Python before it moved into the C++ core. K_B is the
+# small difference of two large terms (e^T K_pp e is up to ~1e4 F) with cond(K_ff) up to
+# ~1e6, so it is determined only to ~1e-11 relative by the rounding of the tangent's entries
+# (the former Python path and the core, each against this reference: 2.6e-11 and 1.8e-11 at
+# most over 432 cases); 1e-10 relative is asserted.
+
+def _edge_point(n, angle):
+    sector = 2 * math.pi / n
+    phi = angle % (2 * math.pi)
+    j = int(phi // sector) % n
+    psi = phi - j * sector
+    s = math.sin(psi) / (math.sin(psi) + math.sin(sector - psi))
+    return j, (j + 1) % n, min(max(s, 0.0), 1.0)
+
+
+def _reference_kb(design, state, angle, pin_offset, cells=4):
+    import numpy as np
+    import scipy.sparse
+
+    from kresling.assembly import tangent_stiffness
+    from kresling.model.kresling_specimen import kresling_specimen
+    n = design.n
+    specimen = kresling_specimen(design, [state] * cells)
+    held, slaves = set(), {}
+    for level in (0, cells):
+        held.add(specimen.centre(level))
+        for side in (0.0, math.pi):
+            j, j1, s = _edge_point(n, angle + pin_offset + side - specimen.level_angle[level])
+            a, b = specimen.node(level, j), specimen.node(level, j1)
+            if s <= 1e-12:
+                held.add(a)
+            elif s >= 1 - 1e-12:
+                held.add(b)
+            elif s >= 0.5:
+                slaves[b] = (a, -(1 - s) / s)
+            else:
+                slaves[a] = (b, -s / (1 - s))
+    middle = set(specimen.level_nodes(cells // 2).tolist())
+    columns, imposed, count = {}, [], 0
+    c, s_ = math.cos(angle), math.sin(angle)
+    for node in range(specimen.model.num_nodes):
+        if node in held or node in slaves:
+            continue
+        if node in middle:
+            imposed.append(count)
+            columns[3 * node] = [(count, -s_), (count + 1, c)]
+            columns[3 * node + 1] = [(count, c), (count + 1, s_)]
+            columns[3 * node + 2] = [(count + 2, 1.0)]
+            count += 3
+        else:
+            for k in range(3):
+                columns[3 * node + k] = [(count + k, 1.0)]
+            count += 3
+    for slave, (master, weight) in slaves.items():
+        for k in range(3):
+            columns[3 * slave + k] = [(col, weight * v) for col, v in columns[3 * master + k]]
+    rows, cols, values = zip(*((dof, col, v) for dof, entries in columns.items()
+                               for col, v in entries))
+    T = scipy.sparse.csr_matrix((values, (rows, cols)), shape=(specimen.model.num_dofs, count))
+    K = (T.T @ tangent_stiffness(specimen.model) @ T).tocsc()
+    free = np.setdiff1d(np.arange(count), imposed)
+    e = np.ones(len(imposed))
+    b = K[free][:, imposed] @ e
+    Kff = K[free][:, free].toarray()
+    u = np.linalg.solve(Kff, b)
+    for _ in range(2):
+        residual = b.astype(np.longdouble) - Kff.astype(np.longdouble) @ u.astype(np.longdouble)
+        u = u + np.linalg.solve(Kff, residual.astype(float))
+    force = np.longdouble(e @ (K[imposed][:, imposed] @ e)) - b.astype(np.longdouble) @ u
+    L = 2.0 * design.height(state)
+    return float(force) * L * L * 1e-3
+
+
+@pytest.mark.parametrize("design", DESIGNS + [Design(16, 0.9, 30), Design(12, 0.6, 5)],
+                         ids=repr)
+def test_core_matches_an_independent_condensation(design):
+    tester = LinearBendingTester(design.n)
+    for state in (0, 1):
+        for angle, pin_offset in ((0.0, 0.0), (0.3, 0.0), (0.0, math.pi / design.n), (1.1, 0.2)):
+            ours = tester.run(design, state, angle=angle, pin_offset=pin_offset)
+            reference = _reference_kb(design, state, angle, pin_offset)
+            assert ours == pytest.approx(reference, rel=1e-10), (state, angle, pin_offset)

@@ -8,6 +8,7 @@
 #include "bindings.hpp"
 #include "kresling/analyses/arm_analysis.hpp"
 #include "kresling/analyses/bending_test.hpp"
+#include "kresling/analyses/linear_bending.hpp"
 #include "kresling/analyses/snap_through.hpp"
 #include "kresling/model/kresling_specimen.hpp"
 
@@ -291,6 +292,25 @@ void bind_analyses(py::module_& m) {
       py::arg("design"), py::arg("state"), py::arg("cells"), py::arg("deflection"),
       py::arg("deflection_angle"), py::arg("steps"),
       "The bending test's checks of its inputs; returns the imposed motion [mm].");
+  // The linearised bending test (kresling.analyses.LinearBendingTester wraps it): runs
+  // without the GIL, so threads of a sweep evaluate designs in parallel.
+  py::class_<analyses::LinearBendingTest>(m, "LinearBendingTest")
+      .def(py::init<int, int, SpecimenParameters>(), py::arg("n"), py::arg("cells"),
+           py::arg("parameters"))
+      .def(
+          "run",
+          [](analyses::LinearBendingTest& test, const Design& design, int state, double angle,
+             double pin_offset) {
+            analyses::LinearBendingResult r;
+            {
+              py::gil_scoped_release release;
+              r = test.run(design, state, angle, pin_offset);
+            }
+            return py::make_tuple(r.stiffness, r.condensed_force, r.cancelled);
+          },
+          py::arg("design"), py::arg("state"), py::arg("angle"), py::arg("pin_offset"),
+          "(K_B [N m/rad], condensed force F [N/mm], e^T K_pp e [N/mm] of which F is the "
+          "remainder).");
   m.def("check_snap_design", &analyses::check_snap_design, py::arg("design"));
   m.def("check_bending_state", &analyses::check_bending_state, py::arg("design"),
         py::arg("state"));
