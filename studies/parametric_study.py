@@ -33,9 +33,10 @@ def print_section(section) -> None:
 
 
 def print_maxima(table: SweepTable) -> None:
-    print("\nmaximum per n (value at Lc [mm], lambda)")
+    print("\nmaximum per n (value at Lc [mm], lambda; * on the edge of the grid)")
     for metric in [m for m in ("kb_ratio", "psi_ratio", "snap_force") if m in table]:
         cells = [f"n={n}: {r[metric]:.4g} at ({r['Lc']:.4g}, {r['lam']:.4g})"
+                 + ("*" if r["boundary"] else "")
                  for n, r in conclusions.maxima_by_n(table, metric).items()]
         print(f"  {metric:10s} " + "; ".join(cells))
 
