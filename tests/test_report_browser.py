@@ -169,3 +169,16 @@ def test_the_readme_shows_the_quick_reports_table(quick_report):
     assert len(rows(shown)) == len(CHAPTERS)
     total = re.search(r"(\d+/\d+) checks passed", "\n".join(shown)).group(1)
     assert f"{total} checks passed" in result.stdout
+
+
+def test_the_report_says_the_sweeps_optima_are_on_the_grids_boundary(quick_report):
+    import csv
+
+    out, _, _ = quick_report
+    sections = {s["key"]: s for s in json.loads((out / "report.json").read_text())["sections"]}
+    summary = sections["sweeps"]["summary"]
+    assert "on the boundary of the searched domain (n max, Lc min, lam max)" in summary
+    with open(out / "sweeps" / "maxima_by_n.csv", newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    # every maximum of every n at the grid's corner (thesis figures 3.9-3.12, 3.17)
+    assert len(rows) == 12 and {row["on_boundary"] for row in rows} == {"Lc min; lam max"}
