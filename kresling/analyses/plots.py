@@ -17,6 +17,8 @@ __all__ = ["plot_moment_angle", "plot_table3_design", "plot_stiffness_by_n", "pl
 
 _COLORS = {"extended": "tab:blue", "contracted": "tab:orange"}
 _LABELS = {"extended": "state (1), extended", "contracted": "state (0), contracted"}
+#: The bending stiffness K_B as Matplotlib sets it (mathtext: K with a subscript B).
+_KB = "$K_B$"
 
 
 def _axes(ax, size=(5.5, 4.0)):
@@ -55,7 +57,7 @@ def plot_moment_angle(comparison, ax=None, *, reference=None, experiment=None, t
     for name, result in (("extended", comparison.extended), ("contracted", comparison.contracted)):
         color = _COLORS[name]
         ax.plot(result.angle, result.moment, color=color, lw=1.8,
-                label=f"{_LABELS[name]}: model, K_B = {result.stiffness:.3f} N·m/rad")
+                label=f"{_LABELS[name]}: model, {_KB} = {result.stiffness:.3f} N·m/rad")
         if reference and name in reference:
             angle, moment = reference[name]
             ax.plot(angle, moment, color="k", ls=(0, (2, 3)), lw=1.0,
@@ -65,7 +67,7 @@ def plot_moment_angle(comparison, ax=None, *, reference=None, experiment=None, t
             top = float(result.angle.max())
             delta = np.array([0.0, top])
             ax.plot(delta, mean * delta, color=color, ls="-.", lw=1.0,
-                    label=f"{_LABELS[name]}: experiment, K_B = {mean:.2f}" +
+                    label=f"{_LABELS[name]}: experiment, {_KB} = {mean:.2f}" +
                           (f" ± {sd:.2f}" if np.isfinite(sd) else ""))
             if np.isfinite(sd):
                 ax.fill_between(delta, (mean - sd) * delta, (mean + sd) * delta, color=color,
@@ -82,7 +84,7 @@ def plot_table3_design(entry, ax=None, reference_curves=None):
                   if name in e}
     d = entry.design
     return plot_moment_angle(entry.ours, ax, reference=reference_curves, experiment=experiment,
-                             title=f"n = {d.n}, Lc = {d.Lc:g} mm, λ = {d.lam:g}: K_B ratio "
+                             title=f"n = {d.n}, Lc = {d.Lc:g} mm, λ = {d.lam:g}: {_KB} ratio "
                                    f"{entry.ours.ratio:.2f} (thesis model "
                                    f"{entry.thesis_model['ratio']:.2f})")
 
@@ -113,7 +115,7 @@ def plot_stiffness_by_n(comparisons: dict, axes=None):
     right.plot(ns, [comparisons[n].ratio for n in ns], "o-", color="tab:red")
     right.set_xticks(ns)
     right.set_xlabel("number of sides n")
-    right.set_ylabel("K_B ratio")
+    right.set_ylabel(f"{_KB} ratio")
     return left, right
 
 
@@ -163,9 +165,9 @@ def plot_orientation_study(studies, axes=None):
         for values, style in ((study.extended, "-"), (study.contracted, "--")):
             right.plot(study.angles, 100 * (values / values[0] - 1), style, color=line.get_color())
     left.set_xlabel("bending axis angle β [rad]")
-    left.set_ylabel("K_B ratio (linearised)")
+    left.set_ylabel(f"{_KB} ratio (linearised)")
     left.legend(fontsize=8)
     right.set_xlabel("bending axis angle β [rad]")
-    right.set_ylabel("K_B(β) / K_B(0) - 1 [%]")
+    right.set_ylabel(r"$K_B(\beta)\,/\,K_B(0) - 1$ [%]")
     right.set_title("solid: extended, dashed: contracted", fontsize=8)
     return left, right
