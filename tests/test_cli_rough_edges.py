@@ -267,3 +267,11 @@ def test_every_numeric_option_says_its_unit():
                _options(build_parser(), "") if action.type in (int, float)
                and not action.choices and not unit.search(action.help or "")]
     assert not missing, missing
+
+
+def test_fit_crease_table_has_units_and_degrees(capsys):
+    runs = str(data.path("examples/synthetic_crease/runs.csv"))
+    assert main(["fit", "crease", runs]) == 0
+    header = capsys.readouterr().out.splitlines()[0].split()
+    assert header[:5] == ["sample", "run", "k", "[N/rad]", "F1"]
+    assert "beta1" in header and header[header.index("beta1") + 2] == "[deg]"

@@ -11,6 +11,11 @@ from contextlib import contextmanager
 from kresling.cli._output import degrees, print_json, print_table
 
 
+# Units of the per-run columns of 'fit crease' (thesis eqns 17-19).
+_CREASE_UNITS = {"k": "N/rad", "F1": "N", "F2": "N", "beta1": "rad", "beta2": "rad",
+                 "d": "mm"}
+
+
 def _pair(text: str) -> tuple:
     key, found, value = text.partition("=")
     if not (found and key.strip() and value.strip()):
@@ -147,7 +152,17 @@ def run_crease(args) -> int:
         return 0
     keys = [k for k in ("sample", "run", "k", "F1", "F2", "beta1", "beta2", "d")
             if k in report["runs"][0]]
-    print_table([[run[k] for k in keys] for run in report["runs"]], keys)
+    # Headers with units; the panel angles beta in degrees beside radians.
+    headers, rows = [], [[] for _ in report["runs"]]
+    for key in keys:
+        headers.append(f"{key} [{_CREASE_UNITS[key]}]" if key in _CREASE_UNITS else key)
+        for row, run in zip(rows, report["runs"]):
+            row.append(run[key])
+        if key.startswith("beta"):
+            headers.append("[deg]")
+            for row, run in zip(rows, report["runs"]):
+                row.append(degrees(run[key]))
+    print_table(rows, headers)
     print()
     _print_summary("k [N/rad], all runs", result.overall)
     if result.between_samples:
