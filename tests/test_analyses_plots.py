@@ -30,7 +30,7 @@ def test_k_b_is_set_with_a_subscript():
         plain = [t for t in drawn if "K_B" in t.replace("$K_B$", "")]
         assert not plain, plain
     legend = [t.get_text() for t in ax.get_legend().get_texts()]
-    assert legend[0] == f"state (1), extended: model, $K_B$ = {comparison.extended.stiffness:.3f} " \
-                        f"N·m/rad"
+    stiffness = comparison.extended.stiffness
+    assert legend[0] == f"state (1), extended: model, $K_B$ = {stiffness:.3f} N·m/rad"
     assert right.get_ylabel() == "$K_B$ ratio"
     plt.close("all")
