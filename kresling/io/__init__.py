@@ -5,7 +5,8 @@ The bottom layer of the package: numpy and the standard library only.
 - :class:`Pattern` is what a file holds: vertices [mm] of shape (N, 3), panels (faces, 0-based
   vertex indices), edges with a FOLD assignment (``M``, ``V``, ``F``, ``B``, ``C``, ``U``,
   ``J``) and fold angle [degrees] each, further configurations (frames) of the vertices;
-  :func:`pattern_from_arrays` builds one from arrays.
+  :func:`pattern_from_arrays` builds one from arrays; :func:`miura_sheet` generates a
+  folded Miura-ori sheet of any size.
 - :func:`read_pattern` reads ``.fold`` (:func:`read_fold`) or ``.obj`` (:func:`read_obj`)
   files; :func:`write_fold`, :func:`write_obj` and :func:`write_stl` write them.
 
@@ -31,6 +32,7 @@ from pathlib import Path
 from kresling.io.errors import PatternFileError
 from kresling.io.fold_format import (ASSIGNMENTS, fold_angles, fold_document, pattern_from_fold,
                                      read_fold, write_fold, write_fold_document)
+from kresling.io.miura import miura_sheet
 from kresling.io.obj_format import read_obj, write_obj
 from kresling.io.pattern import Pattern, pattern_from_arrays
 from kresling.io.stl_format import fan_triangles, write_stl
@@ -39,7 +41,7 @@ __all__ = [
     "Pattern", "pattern_from_arrays", "PatternFileError", "ASSIGNMENTS",
     "READERS", "read_pattern", "read_fold", "read_obj", "pattern_from_fold",
     "write_fold", "write_obj", "write_stl",
-    "fold_document", "write_fold_document", "fold_angles", "fan_triangles",
+    "fold_document", "write_fold_document", "fold_angles", "fan_triangles", "miura_sheet",
 ]
 
 #: File extensions :func:`read_pattern` reads, and the reader of each.
