@@ -183,7 +183,8 @@ def test_the_table_of_contents_links_every_section_and_its_parts(long_page):
     assert "off-figures" not in targets  # a section without figures lists none
     ids = set(re.findall(r'\sid="([^"]+)"', page))
     assert set(targets) <= ids, set(targets) - ids
-    assert '<span class="count">1/3</span>' in toc  # checks passed, beside the section
+    assert '<span class="count fail">1/3</span>' in toc  # checks passed, beside the section
+    assert '<span class="count pass">2/2</span>' in toc
     assert "position: sticky" in page  # stays in view (the browser test scrolls it)
 
 

@@ -45,10 +45,11 @@ nav#toc { position: sticky; top: 0; align-self: start; height: 100vh; overflow-y
 nav#toc ol { list-style: none; padding-left: 0; margin: 0.3em 0; }
 nav#toc ol ol { padding-left: 1em; margin: 0 0 0.4em; font-size: 12px; }
 nav#toc li { margin: 0.15em 0; } nav#toc a { color: #1f4e8c; text-decoration: none; }
-nav#toc a:hover { text-decoration: underline; } nav#toc .count { color: #555; }
+nav#toc a:hover { text-decoration: underline; } nav#toc .count { font-size: 12px; }
 @media (max-width: 900px) {
   body { display: block; }
   nav#toc { position: static; height: auto; border-right: 0; border-bottom: 1px solid #ddd; }
+  nav#toc ol ol, nav#toc ol ol li { display: inline; margin: 0 0 0 0.6em; padding: 0; }
 }
 h3 { font-size: 16px; margin: 1.2em 0 0.3em; }
 .tag { display: inline-block; font-size: 11px; font-weight: 600; padding: 0 5px;
@@ -137,7 +138,8 @@ def _toc_html(document: dict) -> str:
     items = ['<li><a href="#summary">Summary</a></li>']
     for record in document["sections"]:
         key = escape(record["key"])
-        count = (f' <span class="count">{escape(record["checks_text"])}</span>'
+        count = (f' <span class="count {_outcome_class(record)}">'
+                 f'{escape(record["checks_text"])}</span>'
                  if record["status"] == "ran" and record["checks"] else "")
         parts = [(f"{key}-{part}", label) for part, label, present in (
             ("checks", "checks", record["checks"]), ("figures", "figures", record["figures"]),
@@ -145,8 +147,8 @@ def _toc_html(document: dict) -> str:
             ("tables", "tables", record["tables"])) if present]
         inner = ("<ol>" + "".join(f'<li><a href="#{anchor}">{label}</a></li>'
                                   for anchor, label in parts) + "</ol>") if parts else ""
-        items.append(f'<li><a href="#{key}" class="{_outcome_class(record)}">'
-                     f'{rich_text(record["title"])}</a>{count}{inner}</li>')
+        items.append(f'<li><a href="#{key}">{rich_text(record["title"])}</a>{count}{inner}'
+                     f"</li>")
     return ('<nav id="toc" aria-label="Contents"><strong><a href="#top">Contents</a></strong>'
             "<ol>" + "".join(items) + "</ol></nav>")
 
