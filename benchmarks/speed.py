@@ -1,0 +1,218 @@
+"""Speed against MERLIN2, side by side, and how the solver scales to 100,000-DOF sheets.
+
+Prints three tables in one run:
+
+1. the bending test (350 increments to 5 mm) on the thesis's Table 3 designs, the optimum
+   (n = 10, lam = 0.9, Lc = 15 mm, both states) first: our time beside MERLIN2's under GNU
+   Octave on a 2-core machine of this size (kresling/data/merlin2/timing_octave.csv; MERLIN2
+   has no bending driver of its own to run live);
+2. MERLIN2 v1.1's example problems through ``kresling simulate``'s path (model building
+   included, outputs not written; benchmarks/simulate_speed.py), beside MERLIN2's recorded
+   time, and timed live with ``--octave DIR`` (MERLIN2's source folder) when ``octave-cli``
+   is installed;
+3. a generated Miura-ori sheet (kresling.io.miura_sheet, N5B8 with the sheet calibration,
+   one edge clamped, a small transverse load at the opposite edge) from ~1,000 to ~100,000
+   DOFs: model building, one assembly, time per Newton iteration of force control, the
+   factorisation chosen and its fill, peak memory, and the exponent of the time per
+   iteration fitted from 1,000 DOFs up. Each size runs in a fresh process (its memory is
+   its own).
+
+Times are best of ``--repeat`` runs (the sheets: one run); a shared machine makes absolute
+times noisy: the load average is printed first. Run:
+``python benchmarks/speed.py [--quick] [--octave DIR] [--max-dofs N]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import simulate_speed  # noqa: E402  (the examples' runners and MERLIN2 live under Octave)
+
+from kresling import Design, data  # noqa: E402
+from kresling.analyses import BendingTester  # noqa: E402
+
+OPTIMUM = (10, 15.0, 0.9)     # n, Lc [mm], lam: the thesis's optimum, K_ext / K_con largest
+
+
+def best_time(function, repeat):
+    best, result = float("inf"), None
+    for _ in range(repeat):
+        start = time.perf_counter()
+        result = function()
+        best = min(best, time.perf_counter() - start)
+    return best, result
+
+
+def bending_table(repeat):
+    rows = np.genfromtxt(data.path("merlin2/timing_octave.csv"), delimiter=",", names=True)
+    rows = sorted(rows, key=lambda r: (int(r["n"]), r["Lc_mm"], r["lambda"]) != OPTIMUM)
+    print("\n1. Bending test, 350 increments to 5 mm (MERLIN2: stored run under Octave)")
+    header = (f"{'n':>3} {'Lc':>4} {'lam':>4} {'state':>10} {'K_B ours':>10} {'K_B MERLIN2':>11} "
+              f"{'MERLIN2 s':>9} {'ours s':>8} {'ratio':>6}")
+    print(header)
+    print("-" * len(header))
+    testers, optimum = {}, [0.0, 0.0]
+    for row in rows:
+        n, Lc, lam, state = int(row["n"]), float(row["Lc_mm"]), float(row["lambda"]), int(row["state"])
+        tester = testers.setdefault(n, BendingTester(n, "5mm"))
+        seconds, result = best_time(lambda: tester.run(Design(n, lam, Lc), state), repeat)
+        if (n, Lc, lam) == OPTIMUM:
+            optimum[0] += row["wall_s"]
+            optimum[1] += seconds
+        print(f"{n:>3} {Lc:>4g} {lam:>4g} {'extended' if state else 'contracted':>10} "
+              f"{result.stiffness:>10.6f} {row['Kb_Nm_per_rad']:>11.6f} {row['wall_s']:>9.2f} "
+              f"{seconds:>8.4f} {row['wall_s'] / seconds:>6.0f}")
+    print(f"optimum, both states: MERLIN2 {optimum[0]:.2f} s, ours {optimum[1]:.4f} s: "
+          f"{optimum[0] / optimum[1]:.0f}x (goal: 500x)")
+
+
+def examples_table(repeat, octave):
+    print("\n2. MERLIN2's example problems through kresling simulate")
+    header = (f"{'example':<20} {'nodes':>5} {'DOFs':>5} {'incr':>5} {'MERLIN2 s':>10} "
+              f"{'live s':>8} {'ours s':>8} {'ratio':>7}")
+    print(header)
+    print("-" * len(header))
+    for problem in sorted(simulate_speed.EXAMPLES.glob("*/problem.toml")):
+        case = problem.parent
+        seconds, sim = simulate_speed.ours(problem, repeat)
+        live = simulate_speed.octave_seconds(octave, case) if octave else float("nan")
+        recorded = simulate_speed.recorded_seconds(case)
+        reference = live if live == live else recorded
+        print(f"{case.name:<20} {sim.model.num_nodes:>5} {sim.model.num_dofs:>5} "
+              f"{sim.path.num_steps:>5} {recorded:>10.3f} {live:>8.3f} {seconds:>8.4f} "
+              f"{reference / seconds:>7.0f}")
+    print("ratio: MERLIN2 (live if timed, else recorded) over ours (goal: 200x each)")
+
+
+# One sheet size in a fresh process; prints one JSON line.
+_SHEET_PROBE = """
+import json, resource, sys, time
+import numpy as np, scipy.sparse as sp
+from kresling import _core
+from kresling.assembly import assemble
+from kresling.io import miura_sheet
+from kresling.model.calibration import SheetMaterial
+from kresling.model.pattern_model import build_pattern_model
+from kresling.solvers import solve_force_control
+
+def rss():
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0   # MiB
+nx = int(sys.argv[1]); steps = int(sys.argv[2])
+baseline = rss()
+start = time.perf_counter()
+pattern = miura_sheet(nx, nx)
+pm = build_pattern_model(pattern, material=SheetMaterial(5e3, 0.35, 0.127), centre="mean")
+build = time.perf_counter() - start
+fixed = np.zeros((pm.model.num_nodes, 3), bool)
+fixed[:nx + 1] = True                                   # the sheet's edge j = 0, clamped
+model = pm.model.replace(fixed=fixed)
+forces = np.zeros((model.num_nodes, 3))
+top = np.arange(nx * (nx + 1), (nx + 1) ** 2)           # the opposite edge
+forces[top, 2] = 1e-3 / len(top)                        # small: a few Newton iterations
+try:
+    from kresling.assembly import Workspace
+    workspace = Workspace(model)
+except ImportError:
+    workspace = None
+def assemble_once(with_matrix):
+    kwargs = {} if workspace is None else {"workspace": workspace}
+    t = time.perf_counter(); a = assemble(model, stiffness=with_matrix, **kwargs)
+    return time.perf_counter() - t, a
+assembly = min(assemble_once(True)[0] for _ in range(3))
+force_only = min(assemble_once(False)[0] for _ in range(3))
+K = assemble_once(True)[1].stiffness
+free = np.flatnonzero(~fixed.ravel())
+plan = _core.solvers.factorization_plan(sp.tril(K[free][:, free]).tocsc())
+del K
+start = time.perf_counter()
+path = solve_force_control(model, forces, steps)
+solve = time.perf_counter() - start
+print(json.dumps(dict(
+    dofs=int(model.num_dofs), free=int(len(free)), bars=len(model.bars),
+    hinges=len(model.hinges), build=build, assembly=assembly, force_only=force_only,
+    iterations=int(np.sum(path.iterations)), completed=bool(path.completed), solve=solve,
+    plan=plan, peak_mib=rss() - baseline)))
+"""
+
+
+def sheet_table(sizes, steps):
+    print("\n3. Miura-ori sheet, force control "
+          f"({steps} increments; time per Newton iteration = solve time / iterations)")
+    header = (f"{'panels':>9} {'DOFs':>7} {'elements':>8} {'build s':>8} {'asm ms':>8} "
+              f"{'asm us/el':>9} {'iters':>5} {'s/iter':>7} {'factor':>10} {'ordering':>8} "
+              f"{'nnz(L)':>10} {'fill':>5} {'GFlop':>6} {'peak MiB':>8}")
+    print(header)
+    print("-" * len(header))
+    dofs, per_iteration = [], []
+    for nx in sizes:
+        out = subprocess.run([sys.executable, "-c", _SHEET_PROBE, str(nx), str(steps)],
+                             capture_output=True, text=True)
+        if out.returncode != 0:
+            print(f"{nx}x{nx}: failed: {out.stderr.strip().splitlines()[-1:]}")
+            continue
+        r = json.loads(out.stdout.strip().splitlines()[-1])
+        p = r["plan"]
+        elements = r["bars"] + r["hinges"]
+        seconds = r["solve"] / max(r["iterations"], 1)
+        dofs.append(r["free"])
+        per_iteration.append(seconds)
+        fill = p["factor_nonzeros"] / r["free"]
+        print(f"{f'{nx}x{nx}':>9} {r['free']:>7} {elements:>8} {r['build']:>8.2f} "
+              f"{1e3 * r['assembly']:>8.2f} {1e6 * r['assembly'] / elements:>9.3f} "
+              f"{r['iterations']:>5} {seconds:>7.3f} {p['cholesky']:>10} "
+              f"{'ND' if p['ordering'] == 'nested dissection' else p['ordering']:>8} "
+              f"{p['factor_nonzeros']:>10.3g} {fill:>5.0f} {p['flops'] / 1e9:>6.2f} "
+              f"{r['peak_mib']:>8.0f}" + ("" if r["completed"] else "  (path incomplete)"))
+    print("DOFs: free DOFs; asm: one assembly of force and tangent through a kept pattern "
+          "(Python call included); fill: nnz(L) per DOF; GFlop: one factorisation; peak MiB: "
+          "the process's peak resident memory over its baseline after imports")
+    big = np.array(dofs) >= 1000
+    if big.sum() >= 2:
+        slope = np.polyfit(np.log(np.array(dofs)[big]), np.log(np.array(per_iteration)[big]), 1)[0]
+        print(f"time per iteration grows as DOFs^{slope:.2f} from 1,000 DOFs up (nested "
+              "dissection's bound for a sheet: flops ~ n^1.5, fill ~ n log n)")
+    if dofs and max(dofs) >= 90_000:
+        print(f"largest sheet: {per_iteration[-1]:.2f} s per Newton iteration at {dofs[-1]} DOFs "
+              "(goal: under 1 s at 100,000)")
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true",
+                        help="one repeat, sheets up to ~12,000 DOFs")
+    parser.add_argument("--repeat", type=int, default=None, help="runs per timing (best of)")
+    parser.add_argument("--octave", type=Path, metavar="DIR",
+                        help="MERLIN2 v1.1's source folder, to time its examples live")
+    parser.add_argument("--max-dofs", type=int, default=None,
+                        help="largest sheet (DOFs, ~6 per panel); default 100,000")
+    parser.add_argument("--steps", type=int, default=2, help="force increments per sheet")
+    parser.add_argument("--only", choices=("bending", "examples", "sheets"), action="append",
+                        help="run only these tables (repeatable)")
+    args = parser.parse_args(argv)
+    repeat = args.repeat or (1 if args.quick else 3)
+    max_dofs = args.max_dofs or (12_500 if args.quick else 101_000)
+    sizes = [nx for nx in (13, 20, 30, 45, 65, 90, 129) if 6 * nx * nx <= max_dofs]
+    load = os.getloadavg()
+    print(f"kresling speed benchmark; {os.cpu_count()} cores, load average {load[0]:.2f} "
+          f"{load[1]:.2f} {load[2]:.2f} (other work on the machine slows every row)")
+    tables = set(args.only or ("bending", "examples", "sheets"))
+    if "bending" in tables:
+        bending_table(repeat)
+    if "examples" in tables:
+        examples_table(repeat, args.octave)
+    if "sheets" in tables:
+        sheet_table(sizes, args.steps)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
