@@ -177,3 +177,17 @@ def test_tables_say_which_material_and_model(tmp_path):
     line = next(text for text in changed.stdout.splitlines()
                 if text.startswith("material and model"))
     assert "kf = 0.05 N/rad" in line and "intact" in line and "--topology single" in line
+
+
+def test_explorer_maps_take_the_parameters():
+    # The explorer's snap-force map doubles with kf; its K_B-ratio map does not move.
+    from kresling.view.explorer import explorer_data
+
+    base = explorer_data((4,), (2, 2), workers=1)["maps"]
+    double = explorer_data((4,), (2, 2), workers=1,
+                           parameters=SpecimenParameters(kf=0.094))["maps"]
+    for row_a, row_b in zip(base["snap_force"]["4"], double["snap_force"]["4"]):
+        for a, b in zip(row_a, row_b):
+            assert (a is None and b is None) or b == pytest.approx(2 * a, rel=1e-7)
+    for row_a, row_b in zip(base["kb_ratio"]["4"], double["kb_ratio"]["4"]):
+        assert row_b == pytest.approx(row_a, rel=1e-7)

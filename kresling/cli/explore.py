@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from kresling.cli._specimen import add_specimen_arguments, specimen_parameters_from_args
+
 
 def register(subparsers) -> None:
     parser = subparsers.add_parser(
@@ -29,6 +31,7 @@ def register(subparsers) -> None:
     parser.add_argument("--workers", type=int, default=None,
                         help="parallel workers of the sweep, a count (default: every core)")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_specimen_arguments(parser)
     parser.set_defaults(func=run)
 
 
@@ -44,10 +47,11 @@ def run(args) -> int:
     from kresling.view import check_writable
     from kresling.view.explorer import DEFAULT_SIZE, explorer_data, write_explorer
 
+    parameters = specimen_parameters_from_args(args)
     out = check_writable(Path(args.out))
     data = explorer_data(args.n or THESIS_N, tuple(args.size or DEFAULT_SIZE),
                          workers=args.workers, flat_pattern=_flat_pattern,
-                         progress=not args.quiet)
+                         progress=not args.quiet, parameters=parameters)
     write_explorer(data, out)
     sweep = data["sweep"]
     print(f"explorer: {out} ({sweep['designs']} designs swept in {sweep['seconds']:g} s)")

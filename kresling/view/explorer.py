@@ -82,7 +82,7 @@ def _grid_values(values) -> list:
 
 
 def explorer_data(n=THESIS_N, size=DEFAULT_SIZE, *, Lc=None, lam=THESIS_LAM, R=30.0,
-                  workers=None, flat_pattern=None, progress=False) -> dict:
+                  workers=None, flat_pattern=None, progress=False, parameters=None) -> dict:
     """Everything the explorer page shows, as a JSON-ready dict.
 
     Runs a sweep of the K_B ratio (0.001 rad protocol) and the snap-through test over the
@@ -108,6 +108,8 @@ def explorer_data(n=THESIS_N, size=DEFAULT_SIZE, *, Lc=None, lam=THESIS_LAM, R=3
         ``edge_kinds``). None: the page has no pattern.
     progress : bool, default False
         The sweep's progress bar.
+    parameters : SpecimenParameters, optional
+        The specimens' material and model for the maps (default the thesis's).
 
     Returns
     -------
@@ -117,7 +119,7 @@ def explorer_data(n=THESIS_N, size=DEFAULT_SIZE, *, Lc=None, lam=THESIS_LAM, R=3
         snap force); ``cells[str(n)]`` (triangles, lines, and per state the vertices of
         every design, ``Lc``-major, 1e-3 mm); ``patterns[str(n)]`` (the same for the flat
         pattern, or ``None``); ``height`` (the tallest cell [mm]); ``sweep`` (designs,
-        seconds, workers, metrics).
+        seconds, workers, metrics, and the specimen parameters as a dict).
 
     Raises
     ------
@@ -138,7 +140,7 @@ def explorer_data(n=THESIS_N, size=DEFAULT_SIZE, *, Lc=None, lam=THESIS_LAM, R=3
     grid = design_grid(n, size, Lc=Lc, lam=lam, R=R)
     ns = sorted({int(v) for v in grid.n})
     start = time.perf_counter()
-    table = sweep(grid, list(MAPS), workers=workers, progress=progress)
+    table = sweep(grid, list(MAPS), workers=workers, progress=progress, parameters=parameters)
     seconds = time.perf_counter() - start
     Lc_values = sorted({float(v) for v in grid.Lc})
     lam_values = sorted({float(v) for v in grid.lam})
@@ -147,7 +149,8 @@ def explorer_data(n=THESIS_N, size=DEFAULT_SIZE, *, Lc=None, lam=THESIS_LAM, R=3
             "sweep": {"designs": len(grid), "seconds": round(seconds, 1),
                       "workers": int(table.attrs.get("workers", 0) or 0),
                       "failed": int((table["status"] != "ok").sum()),
-                      "metrics": list(MAPS)}}
+                      "metrics": list(MAPS),
+                      "parameters": table.attrs.get("parameters")}}
     tallest = 0.0
     for k in ns:
         for metric in MAPS:
