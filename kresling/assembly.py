@@ -1,7 +1,10 @@
 """Global internal force, tangent stiffness and energy of a model (C++ core).
 
-The C++ assembler builds the sparsity pattern and slot map once and refills values; this
-module exposes one evaluation at a time, e.g. for checks, linear analyses and plotting.
+A model is immutable; what assembling it needs besides the model - the tangent's sparsity
+pattern and the slot map that says where each element's entries go - is a :class:`Workspace`.
+:func:`assemble` builds one for its call unless it is given one: repeated evaluations (many
+displacements, or many designs of one polygon size and cell count) pass the same workspace
+and build the pattern once. The solvers keep theirs internally.
 """
 
 from __future__ import annotations
@@ -14,7 +17,7 @@ import scipy.sparse as sp
 from kresling import _core
 from kresling._validation import as_bool, as_finite_real, as_float_array
 
-__all__ = ["Assembly", "assemble", "tangent_stiffness"]
+__all__ = ["Assembly", "Workspace", "assemble", "tangent_stiffness"]
 
 
 @dataclass(frozen=True)
@@ -41,6 +44,49 @@ class Assembly:
         return self.energy_bars + self.energy_hinges
 
 
+class Workspace:
+    """The sparsity pattern and slot map of a model's tangent, reusable across evaluations.
+
+    It serves the model it was built from and every model of the same connectivity (the
+    same number of nodes and the same bars, hinges and cables, node for node, in order:
+    e.g. every design of one polygon size and cell count); their geometry, areas,
+    stiffnesses and laws may differ. It keeps no reference to a model. :func:`assemble`
+    refuses it, with a ValueError, for a model of another connectivity. One workspace is
+    not to be used by two threads at once.
+
+    Parameters
+    ----------
+    model : kresling.model.Model
+
+    Examples
+    --------
+    >>> from kresling import Design
+    >>> from kresling.model import kresling_specimen
+    >>> cell = kresling_specimen(Design(n=6, lam=0.8, Lc=20.0), [1]).model
+    >>> other = kresling_specimen(Design(n=6, lam=0.7, Lc=25.0), [1]).model
+    >>> w = Workspace(cell)
+    >>> w.fits(other), assemble(other, workspace=w).energy
+    (True, 0.0)
+    """
+
+    def __init__(self, model):
+        self._core = _core.assembly.Workspace(_model_core(model))
+
+    def fits(self, model) -> bool:
+        """Whether ``model`` has the connectivity this workspace was built for."""
+        return bool(self._core.fits(_model_core(model)))
+
+    def __repr__(self):
+        return f"Workspace({self._core.size} DOFs)"
+
+
+def _model_core(model):
+    core = getattr(model, "_core", None)
+    if not isinstance(core, _core.model.Model):
+        raise ValueError(f"model = {model!r} is invalid: must be a kresling.model.Model")
+    return core
+
+
 def _displacement(model, u):
     if u is None:
         return np.zeros(model.num_dofs)
@@ -52,7 +98,7 @@ def _displacement(model, u):
     return u
 
 
-def assemble(model, u=None, *, stiffness=True, shift=0.0) -> Assembly:
+def assemble(model, u=None, *, stiffness=True, shift=0.0, workspace=None) -> Assembly:
     """Evaluate energy, internal force and (optionally) the tangent at displacement ``u``.
 
     Parameters
@@ -64,16 +110,26 @@ def assemble(model, u=None, *, stiffness=True, shift=0.0) -> Assembly:
         Also assemble the tangent.
     shift : float, default 0
         Added to the tangent's diagonal (MERLIN2's solvers use 1e-8).
+    workspace : Workspace, optional
+        The pattern to assemble through (built for ``model`` or one of the same
+        connectivity); by default one is built for this call. The values are the same
+        either way, to the last bit.
 
     Raises
     ------
     ValueError
         For a ``u`` of the wrong size or with NaN, or one where the energy or force is not
-        finite (a degenerate element, a hinge folded flat, an overflow): never a silent NaN.
+        finite (a degenerate element, a hinge folded flat, an overflow): never a silent NaN;
+        for a ``workspace`` that is not a :class:`Workspace` or was built for a model of
+        another connectivity.
     """
     u = _displacement(model, u)
+    if workspace is not None and not isinstance(workspace, Workspace):
+        raise ValueError(f"workspace = {workspace!r} is invalid: must be a "
+                         "kresling.assembly.Workspace or None")
     eb, eh, force, K = _core.assembly.assemble(model._core, u, as_finite_real("shift", shift),
-                                              as_bool("stiffness", stiffness))
+                                              as_bool("stiffness", stiffness),
+                                              None if workspace is None else workspace._core)
     force = np.asarray(force)
     if not (np.isfinite(eb) and np.isfinite(eh) and np.isfinite(force).all()):
         raise ValueError("u is invalid: the energy or the internal force is not finite there (an "

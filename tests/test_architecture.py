@@ -232,7 +232,13 @@ def _bindings():
     out = {}
     for path in sorted((CPP / "python").glob("bind_*.cpp")):
         source = path.read_text(encoding="utf-8")
-        types = [t.split("::")[-1] for t in re.findall(r"py::(?:class_|enum_)<([\w:]+)", source)]
+        # An alias (`using R = analyses::BendingResult;`) stands for the type it names; a
+        # template's parameter (`py::class_<Result>&` in a helper) is no type of its own.
+        aliases = dict(re.findall(r"using (\w+) = ([\w:]+);", source))
+        parameters = set(re.findall(r"typename (\w+)", source))
+        types = [aliases.get(t, t).split("::")[-1]
+                 for t in re.findall(r"py::(?:class_|enum_)<([\w:]+)", source)
+                 if t not in parameters]
         functions = [f.split("::")[-1]
                      for f in re.findall(r"m\.def\(\s*\"\w+\",\s*&([\w:]+)", source)]
         out[path.stem.removeprefix("bind_")] = (types, functions)

@@ -7,7 +7,10 @@
 // wrongly scattered entry, which is O(1) relative to its column.
 
 #include <cmath>
+#include <memory>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
@@ -228,4 +231,99 @@ TEST(Assembly, RefillAndRebindMatchAFreshAssembler) {
   const model::Model other = small_model();
   EXPECT_FALSE(reused.same_connectivity(other));
   EXPECT_THROW(reused.rebind(other), std::invalid_argument);
+}
+
+// The model/workspace split: a Workspace keeps the pattern and slot map of one connectivity
+// and no reference to a model; assemble(model, workspace, u) serves any model of that
+// connectivity exactly as a workspace built for it would, and refuses any other.
+
+namespace {
+
+// Bitwise: the same arithmetic in the same order (the slots differ only in where they come
+// from), so equality is exact, not to a tolerance.
+void expect_same_as_fresh(const model::Model& m, assembly::Workspace& w, const VectorX& u) {
+  assembly::Workspace fresh(m, w.rows(), w.shift(), w.storage());
+  VectorX f, f_fresh;
+  const assembly::Energies e = assembly::assemble(m, w, u, f, true);
+  const assembly::Energies e_fresh = assembly::assemble(m, fresh, u, f_fresh, true);
+  EXPECT_EQ(e.bars, e_fresh.bars);
+  EXPECT_EQ(e.hinges, e_fresh.hinges);
+  EXPECT_EQ((f - f_fresh).cwiseAbs().maxCoeff(), 0.0);
+  const auto& K = w.matrix();
+  const auto& K_fresh = fresh.matrix();
+  ASSERT_EQ(K.nonZeros(), K_fresh.nonZeros());
+  ASSERT_EQ(K.rows(), K_fresh.rows());
+  for (Index j = 0; j <= K.outerSize(); ++j) {
+    ASSERT_EQ(K.outerIndexPtr()[j], K_fresh.outerIndexPtr()[j]);
+  }
+  for (Index k = 0; k < K.nonZeros(); ++k) {
+    ASSERT_EQ(K.innerIndexPtr()[k], K_fresh.innerIndexPtr()[k]);
+    ASSERT_EQ(K.valuePtr()[k], K_fresh.valuePtr()[k]) << "entry " << k;
+  }
+}
+
+}  // namespace
+
+TEST(Workspace, ServesEveryModelOfItsConnectivityAsAFreshOneBitwise) {
+  const auto s1 = specimen(0.7), s2 = specimen(0.8), s3 = specimen(0.9);
+  for (Storage storage : {Storage::Full, Storage::Lower}) {
+    // Built from a model that is gone before the workspace is used: it keeps no reference
+    // (under make sanitize, any read of the dead model would be reported).
+    std::unique_ptr<assembly::Workspace> w;
+    {
+      const auto gone = specimen(0.75);
+      std::vector<std::uint8_t> mask(gone.model.num_dofs(), 0);
+      for (int k = 0; k < 9; ++k) mask[k] = 1;  // three nodes held: a reduced numbering
+      w = std::make_unique<assembly::Workspace>(gone.model, assembly::unmasked_dofs(mask), 1e-8,
+                                                storage);
+    }
+    for (const model::Model* m : {&s1.model, &s2.model, &s3.model, &s1.model}) {
+      ASSERT_TRUE(w->fits(*m));
+      expect_same_as_fresh(*m, *w, random_displacement(*m, 0.3, 11));
+    }
+    // The shift is a setting of the workspace, not of its pattern.
+    w->set_shift(0.0);
+    expect_same_as_fresh(s2.model, *w, random_displacement(s2.model, 0.3, 12));
+  }
+  // Each model through the shared workspace gives its own values (not the last model's).
+  assembly::Workspace w(s1.model, assembly::all_dofs(s1.model.num_dofs()));
+  const VectorX u = random_displacement(s1.model, 0.3, 13);
+  VectorX f1, f2;
+  assembly::assemble(s1.model, w, u, f1, false);
+  assembly::assemble(s2.model, w, u, f2, false);
+  EXPECT_GT((f1 - f2).norm(), 1e-3 * f1.norm());
+}
+
+TEST(Workspace, RefusesAModelOfAnotherConnectivityNamingIt) {
+  const auto s = specimen(0.7);
+  assembly::Workspace w(s.model, assembly::all_dofs(s.model.num_dofs()));
+  VectorX f;
+  auto expect_refused = [&](const model::Model& other) {
+    EXPECT_FALSE(w.fits(other));
+    try {
+      assembly::assemble(other, w, VectorX::Zero(other.num_dofs()), f, true);
+      ADD_FAILURE() << "a model of another connectivity was assembled";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("workspace: was built for a model of another "
+                                           "connectivity"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(Assembler(other, w), std::invalid_argument);
+  };
+  expect_refused(small_model());  // other sizes
+  // Same counts of nodes, bars and hinges, other elements: the middle cell's chirality
+  // flipped moves its diagonal creases to the other vertices.
+  model::SpecimenParameters p;
+  p.modulus_factor = 1.0;
+  const auto flipped = model::build_kresling_specimen(geometry::Design(4, 30.0, 0.7, 30.0),
+                                                      {1, 0, 1}, {1, 1, 1}, p);
+  ASSERT_EQ(flipped.model.num_nodes(), s.model.num_nodes());
+  ASSERT_EQ(flipped.model.bars().size(), s.model.bars().size());
+  ASSERT_EQ(flipped.model.hinges().size(), s.model.hinges().size());
+  expect_refused(flipped.model);
+  // One bar's two nodes swapped: the same elements in another order are another pattern
+  // (the element matrices' rows would land in the wrong slots).
+  std::vector<model::Bar> bars = s.model.bars();
+  std::swap(bars[3].nodes[0], bars[3].nodes[1]);
+  const model::Model swapped(s.model.nodes(), bars, s.model.hinges(), s.model.fixed());
+  expect_refused(swapped);
 }

@@ -220,3 +220,30 @@ TEST(DisplacementControl, RefusesFreeRigidBodyMotions) {
   prescribed[kTopZ] = -1.0;
   EXPECT_THROW(solvers::solve_displacement_control(loose, prescribed, 5), std::invalid_argument);
 }
+
+TEST(DisplacementControl, KeepsItsWorkspaceAndNoModelBetweenSolves) {
+  // A reusable solver outlives the models it solved (a test run over many designs builds
+  // each specimen inside its run): solving a model that is then destroyed, then another of
+  // the same connectivity, reuses the workspace and refers to nothing of the first (under
+  // make sanitize a read of the dead model would be reported). Each path equals a fresh
+  // solver's bitwise: the reused pattern and factorisation change no arithmetic.
+  solvers::DisplacementControl reused;
+  VectorX prescribed;
+  {
+    const model::Model gone = truss(kRise * 1.1);
+    prescribed = VectorX::Zero(gone.num_dofs());
+    prescribed[11] = -0.5 * kRise;
+    ASSERT_TRUE(reused.solve(gone, prescribed, 10).completed);
+  }
+  for (double rise : {kRise, 0.9 * kRise}) {
+    const model::Model m = truss(rise);
+    const auto r = reused.solve(m, prescribed, 10);
+    const auto fresh = solvers::solve_displacement_control(m, prescribed, 10);
+    ASSERT_TRUE(r.completed) << r.message;
+    ASSERT_EQ(r.steps.size(), fresh.steps.size());
+    for (std::size_t k = 0; k < r.steps.size(); ++k) {
+      EXPECT_EQ((r.steps[k].displacement - fresh.steps[k].displacement).cwiseAbs().maxCoeff(), 0.0);
+      EXPECT_EQ(r.steps[k].constraint_force[0], fresh.steps[k].constraint_force[0]);
+    }
+  }
+}

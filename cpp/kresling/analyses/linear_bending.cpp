@@ -97,16 +97,11 @@ LinearBendingResult LinearBendingTest::run(const geometry::Design& design, int s
   require_finite("angle", angle);
   require_finite("pin_offset", pin_offset);
   check_bending_state(design, state);
-  auto built = std::make_unique<model::KreslingSpecimen>(
-      builder_.build(design, std::vector<int>(static_cast<std::size_t>(cells_), state)));
-  const bool reuse = assembler_ && assembler_->same_connectivity(built->model);
-  specimen_ = std::move(built);
-  const model::KreslingSpecimen& specimen = *specimen_;
+  const model::KreslingSpecimen specimen =
+      builder_.build(design, std::vector<int>(static_cast<std::size_t>(cells_), state));
   const model::Model& m = specimen.model;
-  if (reuse) {
-    assembler_->rebind(m);
-  } else {
-    assembler_ = std::make_unique<assembly::Assembler>(m, assembly::all_dofs(m.num_dofs()),
+  if (!(workspace_ && workspace_->fits(m))) {
+    workspace_ = std::make_unique<assembly::Workspace>(m, assembly::all_dofs(m.num_dofs()),
                                                        /*shift=*/0.0);
   }
   const Index num_nodes = m.num_nodes(), num_dofs = m.num_dofs();
@@ -165,8 +160,8 @@ LinearBendingResult LinearBendingTest::run(const geometry::Design& design, int s
   T.setFromTriplets(t.begin(), t.end());
 
   VectorX force;
-  assembler_->assemble(VectorX::Zero(num_dofs), force, /*with_matrix=*/true);
-  const solvers::SparseMatrix K = T.transpose() * assembler_->matrix() * T;
+  assembly::assemble(m, *workspace_, VectorX::Zero(num_dofs), force, /*with_matrix=*/true);
+  const solvers::SparseMatrix K = T.transpose() * workspace_->matrix() * T;
 
   // Split into the free block, K_fp e and e^T K_pp e.
   std::vector<Index> free_index(static_cast<std::size_t>(count), -1);

@@ -62,10 +62,10 @@ class LinearBendingTest {
  private:
   int n_, cells_;
   model::KreslingSpecimenBuilder builder_;
-  // The last specimen and its assembler: the next design of this n has the same elements,
-  // so the assembler's pattern is rebound instead of rebuilt (most of a run's cost).
-  std::unique_ptr<model::KreslingSpecimen> specimen_;
-  std::unique_ptr<assembly::Assembler> assembler_;
+  // The assembly workspace (pattern, slot map) of the last run: the next design of this n
+  // has the same elements, so it is reused instead of rebuilt (most of a run's cost). It
+  // keeps no reference to the run's specimen, which lives only as long as the run.
+  std::unique_ptr<assembly::Workspace> workspace_;
   std::unique_ptr<solvers::TangentSolver> solver_;
   std::vector<int> pattern_outer_, pattern_inner_;  // of the free block the solver was planned on
 };

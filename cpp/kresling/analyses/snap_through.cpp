@@ -127,14 +127,13 @@ void SnapThroughTest::release(const model::Model& model, const VectorX& start, I
                               SnapThroughResult& r) {
   // Every DOF but the bottom polygon's free; no shift, so a zero-stiffness mode is not
   // hidden from the inertia.
-  if (release_assembler_ && release_assembler_->same_connectivity(model)) {
-    release_assembler_->rebind(model);
-  } else {
-    release_assembler_ = std::make_unique<assembly::Assembler>(
+  if (!(release_workspace_ && release_workspace_->fits(model))) {
+    release_workspace_ = std::make_unique<assembly::Workspace>(
         model, assembly::unmasked_dofs(fixed_), 0.0, assembly::Storage::Lower);
   }
+  assembly::Assembler assembler(model, *release_workspace_);
   VectorX u = start;
-  const solvers::EnergyMinimum rest = solvers::minimize_energy(*release_assembler_, u);
+  const solvers::EnergyMinimum rest = solvers::minimize_energy(assembler, u);
   if (!rest.converged) {
     r.bistability = "released at d = " + mm(-start[top_z]) +
                     ", the cell found no stable equilibrium: " + rest.failure;

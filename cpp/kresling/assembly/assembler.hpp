@@ -1,94 +1,55 @@
 #pragma once
 /// \file assembler.hpp
-/// Global internal force, tangent stiffness and energy of a model.
+/// A model and a workspace taken together for one computation, and per-element states.
 ///
-/// The sparsity pattern and a slot map (for every element entry, its position in the
-/// matrix's value array) are built once per model and row numbering; each call then only
-/// refills values. Rows are chosen by a DOF numbering: `rows[dof]` is the row of that DOF in
-/// the assembled matrix, or -1 to leave it out (a fixed or imposed DOF). The tangent is
-/// symmetrised element by element and shifted by `shift` on the diagonal, as MERLIN2 does.
-/// It is stored either whole or as its lower triangle only (what the factorisations read:
-/// half the scatter work). Hinges of zero stiffness contribute nothing and are skipped.
-/// Cables (if the model has any) are assembled after bars and hinges; a model without
-/// cables runs exactly the bar and hinge loops it always did.
+/// An Assembler is what the solvers' loops call: the model being solved, bound to a
+/// Workspace (workspace.hpp) checked once to fit it. It keeps a pointer to that model, so it
+/// lives on the stack of the computation that made it (a solve), or is emptied when that
+/// computation returns; what outlives a computation - a reusable solver, a test run over many
+/// designs - keeps the Workspace alone, which holds no reference to any model.
 
-#include <cstdint>
+#include <memory>
 #include <vector>
 
-#include <Eigen/SparseCore>
-
+#include "kresling/assembly/workspace.hpp"
 #include "kresling/core/types.hpp"
 #include "kresling/model/model.hpp"
 
 namespace kresling::assembly {
 
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-
-/// Stored energy by element family.
-struct Energies {
-  double bars = 0.0;
-  double hinges = 0.0;
-  double cables = 0.0;
-  double total() const { return bars + hinges + cables; }
-};
-
-/// Where one entry of an element matrix goes: its slot in the matrix's value array and the
-/// positions (column-major) of the entry and its transpose in the element matrix.
-struct ScatterEntry {
-  int slot;
-  std::uint16_t local;
-  std::uint16_t transposed;
-};
-
-/// Which part of the symmetric tangent is stored.
-enum class Storage { Full, Lower };
-
-/// The numbering that assembles every DOF (rows[i] = i).
-std::vector<Index> all_dofs(Index num_dofs);
-
-/// The numbering of the DOFs whose mask entry is 0, consecutively; the others get -1.
-std::vector<Index> unmasked_dofs(const std::vector<std::uint8_t>& mask);
-
 class Assembler {
  public:
-  /// `model` must outlive the assembler.
+  /// Bind `model` to `workspace` (which must fit it; throws std::invalid_argument
+  /// otherwise). Both must outlive the assembler.
+  Assembler(const model::Model& model, Workspace& workspace);
+  /// Bind `model` to a workspace of its own, built here (a one-off computation). `model`
+  /// must outlive the assembler.
   Assembler(const model::Model& model, std::vector<Index> rows, double shift = 1e-8,
             Storage storage = Storage::Full);
 
-  Index size() const { return size_; }
+  Index size() const { return workspace_->size(); }
   const model::Model& model() const { return *model_; }
+  const std::vector<Index>& rows() const { return workspace_->rows(); }
+  Workspace& workspace() { return *workspace_; }
 
-  /// True if `model` has the same nodes count and elements (node for node, in order) as the
-  /// model this assembler was built for: then `rebind` can reuse the pattern and slots.
-  bool same_connectivity(const model::Model& model) const;
+  /// True if `model` has the connectivity of the workspace (see Workspace::fits).
+  bool same_connectivity(const model::Model& model) const { return workspace_->fits(model); }
   /// Evaluate `model` from now on (same connectivity required; throws otherwise). `model`
   /// must outlive the assembler or the next rebind.
   void rebind(const model::Model& model);
-  const std::vector<Index>& rows() const { return rows_; }
 
-  /// Evaluate at displacement u (length num_dofs): `force` gets the internal force of every
-  /// DOF (resized to num_dofs); if `with_matrix`, the tangent's values are refilled.
-  Energies assemble(const VectorX& u, VectorX& force, bool with_matrix);
+  /// assemble(model(), workspace(), u, force, with_matrix), the fit checked at binding.
+  Energies assemble(const VectorX& u, VectorX& force, bool with_matrix) {
+    return assemble_unchecked(*model_, *workspace_, u, force, with_matrix);
+  }
 
-  /// The tangent from the last assemble(..., true) call: size() x size(), symmetric, whole
-  /// or its lower triangle (see Storage).
-  const SparseMatrix& matrix() const { return matrix_; }
+  /// The tangent from the last assemble(..., true) call (see Workspace::matrix).
+  const SparseMatrix& matrix() const { return workspace_->matrix(); }
 
  private:
   const model::Model* model_;
-  std::vector<Index> connectivity_;  // every element's nodes, bars, hinges, then cables
-  std::vector<Index> rows_;
-  Index size_ = 0;
-  double shift_ = 0.0;
-  Storage storage_ = Storage::Full;
-  SparseMatrix matrix_;
-  // The stored entries of each element matrix: element e's are [offsets[e], offsets[e+1]).
-  std::vector<ScatterEntry> bar_entries_, hinge_entries_;
-  std::vector<int> bar_offsets_, hinge_offsets_;
-  std::vector<ScatterEntry> cable_entries_;
-  std::vector<int> cable_offsets_;
-  std::vector<std::vector<Index>> cable_dofs_;
-  std::vector<int> diagonal_slots_;
+  std::unique_ptr<Workspace> owned_;  // the workspace of the one-off form, else empty
+  Workspace* workspace_;
 };
 
 /// Per-element state at displacement u: bar strains and hinge angles (for post-processing).

@@ -84,14 +84,18 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
   require_rigid_body_constrained(model, held);
 
   // Reuse the pattern and the symbolic factorisation when only the geometry changed.
-  if (assembler_ && held == held_ && assembler_->same_connectivity(model)) {
-    assembler_->rebind(model);
-  } else {
-    assembler_ = std::make_unique<assembly::Assembler>(model, assembly::unmasked_dofs(held),
+  if (!(workspace_ && held == held_ && workspace_->fits(model))) {
+    workspace_ = std::make_unique<assembly::Workspace>(model, assembly::unmasked_dofs(held),
                                                        options_.shift, assembly::Storage::Lower);
     solver_ = std::make_unique<TangentSolver>();
     held_ = held;
   }
+  // `model` is bound for this solve only: nothing here refers to it once solve returns.
+  assembler_.emplace(model, *workspace_);
+  struct Unbind {
+    std::optional<assembly::Assembler>& assembler;
+    ~Unbind() { assembler.reset(); }
+  } unbind{assembler_};
   const VectorX no_load = VectorX::Zero(n);
   VectorX u = initial.size() ? initial : VectorX::Zero(n);
   if (options_.merlin2_steps) return solve_merlin2_steps(prescribed, steps, imposed, u);

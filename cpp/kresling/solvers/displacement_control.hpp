@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "kresling/assembly/assembler.hpp"
@@ -60,9 +61,13 @@ class DisplacementControl {
                                  const std::vector<Index>& imposed, VectorX u);
 
   DisplacementControlOptions options_;
-  std::unique_ptr<assembly::Assembler> assembler_;
+  // Kept from one solve to the next, with no reference to any model: the workspace
+  // (pattern, slot map) and the symbolic factorisation.
+  std::unique_ptr<assembly::Workspace> workspace_;
   std::unique_ptr<TangentSolver> solver_;
   std::vector<std::uint8_t> held_;  // constraints the cached pattern was built for
+  // The model of the solve under way bound to workspace_; emptied when solve returns.
+  std::optional<assembly::Assembler> assembler_;
 };
 
 /// One-off solve (see DisplacementControl::solve).
