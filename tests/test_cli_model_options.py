@@ -191,3 +191,19 @@ def test_explorer_maps_take_the_parameters():
             assert (a is None and b is None) or b == pytest.approx(2 * a, rel=1e-7)
     for row_a, row_b in zip(base["kb_ratio"]["4"], double["kb_ratio"]["4"]):
         assert row_b == pytest.approx(row_a, rel=1e-7)
+
+
+def test_table3_helpers_take_the_parameters():
+    # The topology's effect is a ratio of stiffnesses: independent of kf (and of the
+    # topology passed in, which it sets itself); the model curves' moments scale with kf.
+    from kresling.analyses.table3 import model_curves, topology_effect
+
+    base = topology_effect([(8, 15.0, 0.8)])[0]
+    other = topology_effect([(8, 15.0, 0.8)],
+                            parameters=SpecimenParameters(kf=0.1, duplicate_shared_edges=False))[0]
+    assert other["contracted"] == pytest.approx(base["contracted"], rel=1e-7)
+    key = (8, 30.0, 0.8)
+    one = model_curves([key], "0.001rad")[key]["extended"]
+    two = model_curves([key], "0.001rad", SpecimenParameters(kf=0.094))[key]["extended"]
+    assert two[0] == pytest.approx(one[0], rel=1e-9)   # the same angles
+    assert two[1][1:] == pytest.approx(2 * one[1][1:], rel=1e-7)

@@ -11,7 +11,7 @@ recomputed from the printed means: for n = 8, Lc = 30 the printed 4.91 is not
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from kresling.analyses.bending import BendingComparison, bending_stiffness
 from kresling.data.tables import TABLE3_DESIGNS, merlin2_table3_reference, thesis_table3
@@ -105,7 +105,7 @@ def table3_comparison(protocol: str = "5mm", parameters=None, designs=TABLE3_DES
     return out
 
 
-def topology_effect(designs=TABLE3_DESIGNS, protocol: str = "5mm") -> list:
+def topology_effect(designs=TABLE3_DESIGNS, protocol: str = "5mm", parameters=None) -> list:
     """How much one bar and one hinge per edge (instead of MERLIN2's one per pair of
     triangles sharing it) moves K_B.
 
@@ -117,6 +117,13 @@ def topology_effect(designs=TABLE3_DESIGNS, protocol: str = "5mm") -> list:
     de-duplicated specimen is softer, and the n = 10 contracted one loses stability near
     4.9 mm, where an extrapolated start would carry the path on along an unstable branch.
 
+    Parameters
+    ----------
+    designs : sequence of (n, Lc, lambda), default the Table 3 designs
+    protocol : {"5mm", "0.001rad"}
+    parameters : SpecimenParameters, optional
+        The material and model of both runs but for the topology (default the thesis's).
+
     Returns
     -------
     list of dict
@@ -126,11 +133,12 @@ def topology_effect(designs=TABLE3_DESIGNS, protocol: str = "5mm") -> list:
         the specimen lost stability; K_B is then fitted to the part before) and
         ``stable_extended``/``stable_contracted``.
     """
-    deduplicated = SpecimenParameters(duplicate_shared_edges=False)
+    duplicated = replace(parameters or SpecimenParameters(), duplicate_shared_edges=True)
+    deduplicated = replace(duplicated, duplicate_shared_edges=False)
     out = []
     for n, Lc, lam in designs:
         design = Design(n, lam, Lc)
-        base = bending_stiffness(design, protocol, extrapolation=0)
+        base = bending_stiffness(design, protocol, parameters=duplicated, extrapolation=0)
         other = bending_stiffness(design, protocol, parameters=deduplicated, extrapolation=0)
         out.append({"n": n, "Lc_mm": Lc, "lambda": lam,
                     "extended": other.extended.stiffness / base.extended.stiffness - 1,
@@ -143,8 +151,15 @@ def topology_effect(designs=TABLE3_DESIGNS, protocol: str = "5mm") -> list:
     return out
 
 
-def model_curves(designs=TABLE3_DESIGNS, protocol: str = "5mm") -> dict:
+def model_curves(designs=TABLE3_DESIGNS, protocol: str = "5mm", parameters=None) -> dict:
     """Our bending test's moment-angle curves of the Table 3 designs, both states.
+
+    Parameters
+    ----------
+    designs : sequence of (n, Lc, lambda), default the Table 3 designs
+    protocol : {"5mm", "0.001rad"}
+    parameters : SpecimenParameters, optional
+        The specimens' material and model (default the thesis's).
 
     Returns
     -------
@@ -155,7 +170,7 @@ def model_curves(designs=TABLE3_DESIGNS, protocol: str = "5mm") -> dict:
     """
     curves = {}
     for n, Lc, lam in designs:
-        result = bending_stiffness(Design(n, lam, Lc), protocol)
+        result = bending_stiffness(Design(n, lam, Lc), protocol, parameters=parameters)
         curves[(n, float(Lc), lam)] = {r.state_name: (r.angle, r.moment)
                                        for r in (result.extended, result.contracted)}
     return curves
