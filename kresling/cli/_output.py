@@ -1,5 +1,7 @@
 """Output helpers shared by the subcommands: JSON that never contains NaN, aligned text
-tables, and a library logger shown on stderr while a command runs."""
+tables with degrees beside radians, a library logger shown on stderr while a command runs,
+library errors reworded with the command's option names, and checks that output files and
+folders can be written before any work starts."""
 
 from __future__ import annotations
 
