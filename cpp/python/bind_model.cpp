@@ -252,30 +252,33 @@ void bind_model(py::module_& m) {
         return out;
       });
 
+  using model::Topology;
+  py::class_<Topology>(m, "Topology", "The elements a set of panels produces (read-only)")
+      .def_property_readonly("nodes", [](const Topology& t) { return t.nodes; },
+                             "the input nodes, then N5B8 centre nodes (N, 3) [mm]")
+      .def_property_readonly("triangles", [](const Topology& t) { return index_rows(t.triangles); },
+                             "triangles in canonical order (T, 3)")
+      .def_property_readonly("triangle_panel",
+                             [](const Topology& t) { return vector_array(t.triangle_panel); },
+                             "the panel each triangle came from (T,)")
+      .def_property_readonly("bars", [](const Topology& t) { return index_rows(t.bars); },
+                             "end nodes, ascending (B, 2)")
+      .def_property_readonly("hinges", [](const Topology& t) { return index_rows(t.hinges); },
+                             "(a, b, c, d): axis a < b, wings c, d (H, 4)")
+      .def_property_readonly(
+          "hinge_is_bend",
+          [](const Topology& t) {
+            return py::array_t<bool>(static_cast<py::ssize_t>(t.hinge_is_bend.size()),
+                                     reinterpret_cast<const bool*>(t.hinge_is_bend.data()));
+          },
+          "True for an edge added inside a panel (H,)");
   m.def(
       "build_topology",
       [](const Eigen::Ref<const NodeMatrix>& nodes, const std::vector<std::vector<Index>>& panels,
          int split, bool duplicate) {
         if (split != 0 && split != 1) throw std::invalid_argument("split: unknown code");
-        const model::Topology t = model::build_topology(
-            NodeMatrix(nodes), panels, static_cast<model::PanelSplit>(split), duplicate);
-        auto rows = [](const auto& v, py::ssize_t width) {
-          py::array_t<Index> a({static_cast<py::ssize_t>(v.size()), width});
-          auto w = a.template mutable_unchecked<2>();
-          for (std::size_t i = 0; i < v.size(); ++i) {
-            for (py::ssize_t k = 0; k < width; ++k) w(i, k) = v[i][k];
-          }
-          return a;
-        };
-        py::dict out;
-        out["nodes"] = t.nodes;
-        out["triangles"] = rows(t.triangles, 3);
-        out["triangle_panel"] = py::array_t<Index>(t.triangle_panel.size(), t.triangle_panel.data());
-        out["bars"] = rows(t.bars, 2);
-        out["hinges"] = rows(t.hinges, 4);
-        out["hinge_is_bend"] = py::array_t<bool>(
-            t.hinge_is_bend.size(), reinterpret_cast<const bool*>(t.hinge_is_bend.data()));
-        return out;
+        return model::build_topology(NodeMatrix(nodes), panels,
+                                     static_cast<model::PanelSplit>(split), duplicate);
       },
       py::arg("nodes"), py::arg("panels"), py::arg("split"), py::arg("duplicate_shared_edges"));
   py::class_<model::PanelElements>(m, "PanelElements",

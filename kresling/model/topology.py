@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -39,6 +39,12 @@ class Topology:
     hinges: np.ndarray
     hinge_is_bend: np.ndarray
 
+    @classmethod
+    def _from_core(cls, core) -> "Topology":
+        """Read the C++ core's topology (``kresling._core.model.Topology``): every field of
+        this class is one of its properties."""
+        return cls(**{f.name: np.asarray(getattr(core, f.name)) for f in fields(cls)})
+
 
 def panel_topology(nodes, panels, *, split="N4B5", duplicate_shared_edges=True) -> Topology:
     """Split panels into triangles and put a bar and a hinge on every shared edge.
@@ -67,11 +73,4 @@ def panel_topology(nodes, panels, *, split="N4B5", duplicate_shared_edges=True) 
     panels = as_index_lists("panels", panels)
     t = _core.model.build_topology(nodes, panels, _SPLITS[split],
                                    as_bool("duplicate_shared_edges", duplicate_shared_edges))
-    return Topology(
-        nodes=np.asarray(t["nodes"]),
-        triangles=np.asarray(t["triangles"]),
-        triangle_panel=np.asarray(t["triangle_panel"]),
-        bars=np.asarray(t["bars"]).reshape(-1, 2),
-        hinges=np.asarray(t["hinges"]).reshape(-1, 4),
-        hinge_is_bend=np.asarray(t["hinge_is_bend"], dtype=bool),
-    )
+    return Topology._from_core(t)
