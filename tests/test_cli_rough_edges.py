@@ -289,3 +289,23 @@ def test_default_steps_resolve_the_thesis_s_designs():
                 r = tester.run(Design(n, lam, Lc))
                 assert r.resolution == "", (n, lam, Lc, r.resolution)
                 assert not r.has_peak or r.increments_to_peak > 15
+
+
+def test_figures_of_partial_runs_say_so():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from kresling.analyses.plots import plot_moment_angle, plot_snap_through
+
+    whole = bending_stiffness(Design(4, 0.7, 30), "0.001rad")
+    stopped = dataclasses.replace(whole, contracted=_stopped_at(whole.contracted, 0.3))
+    labels = [t.get_text() for t in plot_moment_angle(stopped).get_legend().get_texts()]
+    assert sum("PARTIAL: stopped at 30%" in label for label in labels) == 1
+    labels = [t.get_text() for t in plot_moment_angle(whole).get_legend().get_texts()]
+    assert not any("PARTIAL" in label for label in labels)
+    s = snap_through(Design(8, 0.8, 30), tolerance=1e-14, max_iterations=3)
+    assert "PARTIAL" in plot_snap_through(s).get_title()
+    assert "PARTIAL" not in plot_snap_through(snap_through(Design(8, 0.8, 30))).get_title()
+    plt.close("all")

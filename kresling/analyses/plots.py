@@ -56,8 +56,12 @@ def plot_moment_angle(comparison, ax=None, *, reference=None, experiment=None, t
     ax = _axes(ax)
     for name, result in (("extended", comparison.extended), ("contracted", comparison.contracted)):
         color = _COLORS[name]
+        # A run that stopped early is marked in its label: its K_B is fitted to part of the
+        # travel.
+        partial = (f" (PARTIAL: stopped at {result.travel_fraction:.0%} of the travel)"
+                   if result.partial else "")
         ax.plot(result.angle, result.moment, color=color, lw=1.8,
-                label=f"{_LABELS[name]}: model, {_KB} = {result.stiffness:.3f} N·m/rad")
+                label=f"{_LABELS[name]}: model, {_KB} = {result.stiffness:.3f} N·m/rad{partial}")
         if reference and name in reference:
             angle, moment = reference[name]
             ax.plot(angle, moment, color="k", ls=(0, (2, 3)), lw=1.0,
@@ -148,8 +152,11 @@ def plot_snap_through(result, ax=None, *, title=""):
     ax.set_ylabel("force F [N]")
     ax.legend(fontsize=7)
     d = result.design
-    ax.set_title(title or f"n = {d.n}, Lc = {d.Lc:g} mm, λ = {d.lam:g}: "
-                          f"{'bistable' if result.bistable else 'not bistable'}", fontsize=9)
+    title = title or (f"n = {d.n}, Lc = {d.Lc:g} mm, λ = {d.lam:g}: "
+                      f"{'bistable' if result.bistable else 'not bistable'}")
+    if result.partial:  # the features come from part of the path: say so on the figure
+        title += f" (PARTIAL: stopped at {result.travel_fraction:.0%} of the travel)"
+    ax.set_title(title, fontsize=9)
     return ax
 
 
