@@ -143,8 +143,9 @@ def _notes(bending, partial) -> list:
         stable = bending.extended.stable and bending.contracted.stable
         notes.append(
             f"K_con > K_ext (ratio {bending.ratio:.3g} < 1): this design is stiffer contracted "
-            f"than extended, unlike every design of the thesis's study (n = 4 to 10), where "
-            f"the contracted state is the compliant one. Both runs completed"
+            f"than extended, unlike every design of the thesis's study (n = 4 to 10, lambda "
+            f"0.7 to 0.9, Lc = R/2 to 2R: ratios 1.5 to 22), where the contracted state is "
+            f"the compliant one. Both runs completed"
             + (" on stable equilibria" if stable else ", but not every increment ended on a "
                "stable equilibrium") + ": this is what the model predicts, but look at the "
             "moment-angle curves (--plot) before relying on it")
