@@ -17,8 +17,6 @@ rigid). ``theta = 0`` is the flat pattern.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from kresling._validation import as_finite_real, as_integer
@@ -84,11 +82,11 @@ def miura_sheet(nx, ny, *, a=10.0, b=10.0, sector_angle=60.0, fold_angle=30.0) -
     if not 0 <= theta_deg < 90:
         raise ValueError(f"fold_angle = {theta_deg!r} is invalid: must be in [0, 90) "
                          "[degrees]")
-    gamma, theta = math.radians(gamma_deg), math.radians(theta_deg)
-    root = math.sqrt(1.0 + (math.cos(theta) * math.tan(gamma)) ** 2)
-    H = a * math.sin(theta) * math.sin(gamma)
-    S = b * math.cos(theta) * math.tan(gamma) / root
-    L = a * math.sqrt(1.0 - (math.sin(theta) * math.sin(gamma)) ** 2)
+    gamma, theta = float(np.radians(gamma_deg)), float(np.radians(theta_deg))
+    root = np.sqrt(1.0 + (np.cos(theta) * np.tan(gamma)) ** 2)
+    H = a * np.sin(theta) * np.sin(gamma)
+    S = b * np.cos(theta) * np.tan(gamma) / root
+    L = a * np.sqrt(1.0 - (np.sin(theta) * np.sin(gamma)) ** 2)
     V = b / root
 
     i, j = np.meshgrid(np.arange(nx + 1), np.arange(ny + 1))   # (ny + 1, nx + 1)
