@@ -141,7 +141,7 @@ TEST(TangentSolver, SingularMatrixIsReported) {
 
 // The cost model's decisions at the sizes it was calibrated on (benchmarks/cpp/
 // factorisation_cost.cpp): the n = 10 Kresling bending specimen (136 DOFs, a 57 % full
-// factor) is dense; MERLIN2's 234-DOF Miura sheet is sparse (simplicial 102 us against
+// factor) is dense; a 234-DOF Miura sheet (6 x 6 panels) is sparse (simplicial 102 us against
 // dense 256 us measured); a 25,545-DOF sheet (264 flops per factor entry) is supernodal.
 TEST(TangentSolver, CostModelChoosesByMeasuredCost) {
   EXPECT_EQ(solvers::choose_cholesky(136, 5087, 2.26e5), CholeskyChoice::Dense);
