@@ -63,7 +63,8 @@ def bending_table(repeat):
     print("-" * len(header))
     testers, optimum = {}, [0.0, 0.0]
     for row in rows:
-        n, Lc, lam, state = int(row["n"]), float(row["Lc_mm"]), float(row["lambda"]), int(row["state"])
+        n, Lc, lam = int(row["n"]), float(row["Lc_mm"]), float(row["lambda"])
+        state = int(row["state"])
         tester = testers.setdefault(n, BendingTester(n, "5mm"))
         seconds, result = best_time(lambda: tester.run(Design(n, lam, Lc), state), repeat)
         if (n, Lc, lam) == OPTIMUM:
@@ -183,9 +184,10 @@ def sheet_table(sizes, steps):
               f"{'ND' if p['ordering'] == 'nested dissection' else p['ordering']:>8} "
               f"{p['factor_nonzeros']:>10.3g} {fill:>5.0f} {p['flops'] / 1e9:>6.2f} "
               f"{r['peak_mib']:>8.0f}" + ("" if r["completed"] else "  (path incomplete)"))
-    print("Newton tolerance: 1e-7 of the sheet's span. DOFs: free DOFs; asm: one assembly of force and tangent through a kept pattern "
-          "(Python call included); fill: nnz(L) per DOF; GFlop: one factorisation; peak MiB: "
-          "the process's peak resident memory over its baseline after imports")
+    print("Newton tolerance: 1e-7 of the sheet's span. DOFs: free DOFs; asm: one assembly of "
+          "force and tangent through a kept pattern (Python call included); fill: nnz(L) per "
+          "DOF; GFlop: one factorisation; peak MiB: the process's peak resident memory over "
+          "its baseline after imports")
     big = np.array(dofs) >= 1000
     if big.sum() >= 2:
         slope = np.polyfit(np.log(np.array(dofs)[big]), np.log(np.array(per_iteration)[big]), 1)[0]

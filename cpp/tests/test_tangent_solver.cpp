@@ -63,7 +63,9 @@ SparseMatrix sparse_banded(int n, int bandwidth, unsigned seed) {
   std::vector<Eigen::Triplet<double, int>> t;
   for (int j = 0; j < n; ++j) {
     t.emplace_back(j, j, 1.0 + 0.3 * 2 * bandwidth);  // diagonally dominant
-    for (int i = j + 1; i <= std::min(n - 1, j + bandwidth); ++i) t.emplace_back(i, j, 0.3 * u(rng));
+    for (int i = j + 1; i <= std::min(n - 1, j + bandwidth); ++i) {
+      t.emplace_back(i, j, 0.3 * u(rng));
+    }
   }
   SparseMatrix S(n, n);
   S.setFromTriplets(t.begin(), t.end());

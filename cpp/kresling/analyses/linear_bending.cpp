@@ -129,7 +129,8 @@ LinearBendingResult LinearBendingTest::run(const geometry::Design& design, int s
   std::vector<std::vector<std::pair<Index, double>>> columns(static_cast<std::size_t>(num_dofs));
   std::vector<Index> imposed;
   Index count = 0;
-  const Index middle_first = specimen.node(cells_ / 2, 0), middle_last = specimen.node(cells_ / 2, n_);
+  const Index middle_first = specimen.node(cells_ / 2, 0);
+  const Index middle_last = specimen.node(cells_ / 2, n_);
   const double c = std::cos(angle), s = std::sin(angle);
   for (Index node = 0; node < num_nodes; ++node) {
     if (held.count(node) || slaves.count(node)) continue;
