@@ -164,6 +164,19 @@ void bind_kinematics(py::module_& m) {
       },
       py::arg("model"), py::arg("configuration"), py::arg("lower"), py::arg("upper"),
       py::arg("grid_points"));
+  using kk::InverseKinematicsTable;
+  py::class_<InverseKinematicsTable>(
+      m, "InverseKinematicsTable", "The outcomes of many inverse-kinematics solves (read-only)")
+      .def_readonly("tendon_lengths", &InverseKinematicsTable::tendon_lengths,
+                    "(n, 3): l1, l2, l3 [mm]")
+      .def_readonly("position", &InverseKinematicsTable::position,
+                    "(n, 3): the tip at those lengths [mm]")
+      .def_readonly("distance", &InverseKinematicsTable::distance,
+                    "(n,): distance from the target [mm]")
+      .def_readonly("iterations", &InverseKinematicsTable::iterations,
+                    "(n,): iterations over all starts")
+      .def_readonly("converged", &InverseKinematicsTable::converged,
+                    "(n,): the distance is below the tolerance");
   m.def(
       "solve_inverse_kinematics",
       [](const kk::ChainModel& model, const kk::Configuration& c,
@@ -179,30 +192,13 @@ void bind_kinematics(py::module_& m) {
           results = kk::solve_inverse_kinematics_batch(model, c, t, kk::TendonBounds{lower, upper},
                                                        options);
         }
-        const auto n = static_cast<Eigen::Index>(results.size());
-        Rows3 lengths(n, 3), positions(n, 3);
-        Eigen::VectorXd distance(n);
-        Eigen::VectorXi iterations(n);
-        Eigen::Matrix<bool, Eigen::Dynamic, 1> converged(n);
-        for (Eigen::Index i = 0; i < n; ++i) {
-          lengths.row(i) = results[i].tendon_lengths.transpose();
-          positions.row(i) = results[i].position.transpose();
-          distance[i] = results[i].distance;
-          iterations[i] = results[i].iterations;
-          converged[i] = results[i].converged;
-        }
-        py::dict out;
-        out["tendon_lengths"] = lengths;
-        out["position"] = positions;
-        out["distance"] = distance;
-        out["iterations"] = iterations;
-        out["converged"] = converged;
-        return out;
+        return kk::as_table(results);
       },
       py::arg("model"), py::arg("configuration"), py::arg("targets"), py::arg("lower"),
       py::arg("upper"), py::arg("tolerance"), py::arg("max_iterations"),
       py::arg("initial_damping"), py::arg("grid_points"), py::arg("starts"),
-      "Damped-least-squares inverse kinematics for (n, 3) targets [mm]; a dict of arrays.");
+      "Damped-least-squares inverse kinematics for (n, 3) targets [mm]; an "
+      "InverseKinematicsTable (row i: target i).");
 }
 
 }  // namespace kresling::python

@@ -167,6 +167,29 @@ TEST(InverseKinematics, ReachesTargetsSampledFromForwardKinematics) {
   }
 }
 
+TEST(InverseKinematics, TheTableStacksEachSolveInItsRow) {
+  // What the Python binding returns: row t of each column is exactly results[t]'s field.
+  const ChainModel model = thesis_model();
+  const TendonBounds bounds{10.0, 40.0};
+  const Configuration c{1, 0, 1};
+  Eigen::MatrixX3d targets(3, 3);
+  targets.row(0) = tip_position(model, c, Eigen::Vector3d(20, 30, 35)).transpose();
+  targets.row(1) = Eigen::RowVector3d(0, 0, 1000);  // out of reach: not converged
+  targets.row(2) = tip_position(model, c, Eigen::Vector3d(12, 39, 25)).transpose();
+  const auto results = solve_inverse_kinematics_batch(model, c, targets, bounds);
+  const InverseKinematicsTable table = as_table(results);
+  ASSERT_EQ(table.distance.size(), 3);
+  for (int t = 0; t < 3; ++t) {
+    EXPECT_EQ(table.tendon_lengths.row(t), results[t].tendon_lengths.transpose());
+    EXPECT_EQ(table.position.row(t), results[t].position.transpose());
+    EXPECT_EQ(table.distance[t], results[t].distance);
+    EXPECT_EQ(table.iterations[t], results[t].iterations);
+    EXPECT_EQ(table.converged[t], results[t].converged);
+  }
+  EXPECT_TRUE(table.converged[0] && !table.converged[1] && table.converged[2]);
+  EXPECT_EQ(as_table({}).position.rows(), 0);
+}
+
 TEST(InverseKinematics, FarTargetIsAResultNotAnException) {
   const ChainModel model = thesis_model();
   const TendonBounds bounds{10.0, 40.0};

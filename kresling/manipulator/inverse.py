@@ -89,10 +89,13 @@ def solve_configuration(model: Manipulator, configuration, targets, *, tolerance
         raise ValueError(f"targets = {show(targets.tolist())} is invalid: must be finite points "
                          "of shape (3,) or (n, 3) [mm]")
     lower, upper = model.tendon_bounds
-    return _core.kinematics.solve_inverse_kinematics(
+    table = _core.kinematics.solve_inverse_kinematics(
         model._chain, configuration, targets, lower, upper, as_real("tolerance", tolerance),
         as_integer("max_iterations", max_iterations), 1.0,
         as_integer("grid_points", grid_points), as_integer("starts", starts))
+    # Every field of the core's InverseKinematicsTable, in its order, as an array of its own.
+    return {name: np.ascontiguousarray(getattr(table, name))
+            for name, value in type(table).__dict__.items() if isinstance(value, property)}
 
 
 def inverse_kinematics(model: Manipulator, target, *, configurations=None,

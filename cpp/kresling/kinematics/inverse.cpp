@@ -195,4 +195,19 @@ std::vector<InverseKinematicsResult> solve_inverse_kinematics_batch(
   return results;
 }
 
+InverseKinematicsTable as_table(const std::vector<InverseKinematicsResult>& results) {
+  const auto n = static_cast<Eigen::Index>(results.size());
+  InverseKinematicsTable t{Eigen::MatrixX3d(n, 3), Eigen::MatrixX3d(n, 3), Eigen::VectorXd(n),
+                           Eigen::VectorXi(n), Eigen::Matrix<bool, Eigen::Dynamic, 1>(n)};
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const InverseKinematicsResult& r = results[static_cast<std::size_t>(i)];
+    t.tendon_lengths.row(i) = r.tendon_lengths.transpose();
+    t.position.row(i) = r.position.transpose();
+    t.distance[i] = r.distance;
+    t.iterations[i] = r.iterations;
+    t.converged[i] = r.converged;
+  }
+  return t;
+}
+
 }  // namespace kresling::kinematics

@@ -62,6 +62,17 @@ std::vector<InverseKinematicsResult> solve_inverse_kinematics_batch(
     const ChainModel& model, const Configuration& configuration, const Eigen::MatrixX3d& targets,
     const TendonBounds& bounds, const InverseKinematicsOptions& options = {});
 
+/// The outcomes of many solves as columns: row i of each is target i's (the fields of
+/// InverseKinematicsResult, stacked).
+struct InverseKinematicsTable {
+  Eigen::MatrixX3d tendon_lengths;                    ///< (n, 3): l1, l2, l3 [mm]
+  Eigen::MatrixX3d position;                          ///< (n, 3): tip at those lengths [mm]
+  Eigen::VectorXd distance;                           ///< (n,): |position - target| [mm]
+  Eigen::VectorXi iterations;                         ///< (n,): over all starts
+  Eigen::Matrix<bool, Eigen::Dynamic, 1> converged;  ///< (n,): distance < tolerance
+};
+InverseKinematicsTable as_table(const std::vector<InverseKinematicsResult>& results);
+
 /// Solve one damped-least-squares run from `start` (clamped into the box).
 InverseKinematicsResult solve_from(const ChainModel& model, const Configuration& configuration,
                                    const Eigen::Vector3d& target, const TendonBounds& bounds,
