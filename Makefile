@@ -24,7 +24,7 @@ CORE_SOURCES := CMakeLists.txt pyproject.toml $(shell find cmake cpp -type f 2>/
 help:
 	@echo "make demo   - the optimal design's geometry, then reproduce the thesis: $(REPORT_DIR)/report.html"
 	@echo "make test   - C++ unit tests (ctest) and the Python test suite (pytest)"
-	@echo "make benchmark - solver speed and memory against MERLIN2 (prints tables)"
+	@echo "make benchmark - solver speed and memory against MERLIN2, Miura sheets to 100,000 DOFs (prints tables)"
 	@echo "make docs   - the documentation site: $(DOCS_BUILD)/index.html"
 	@echo "make fuzz   - the fuzz suite at $(FUZZ_SCALE)x its test-suite examples, from random seeds"
 	@echo "make sanitize - the C++ tests and a pytest subset under ASan and UBSan"
@@ -108,6 +108,7 @@ sanitize: install
 
 benchmark: install
 	$(PY) benchmarks/solver_speed.py
+	$(PY) benchmarks/speed.py
 
 # The documentation site, warnings as errors. Every page is rebuilt and the notebooks and
 # the gallery's scripts run each time (under a minute), so no page shows stale output.
