@@ -94,6 +94,34 @@ def test_where_takes_values_comparisons_ranges_and_lists():
     assert table.where(status="ok")["index"].tolist() == [i for i in range(12) if i != 3]
 
 
+def test_where_on_a_text_column_takes_equality_and_inequality():
+    # Before, a comparison string on a text column was compared as a plain value: "!=ok"
+    # matched no row, silently. Each result against numpy's own selection.
+    table = made_up()
+    status, index = table["status"], table["index"]
+    failed = index[status != "ok"].tolist()
+    assert failed == [3]
+    for condition in ("!=ok", "!= ok", " != ok ", "==failed"):
+        assert table.where(status=condition)["index"].tolist() == failed, condition
+    for condition in ("ok", "==ok", "== ok"):
+        assert table.where(status=condition)["index"].tolist() == \
+            index[status == "ok"].tolist(), condition
+    # the other text column, and an empty text after the operator
+    assert table.where(reason="!=")["index"].tolist() == failed
+    assert table.where(reason="==")["index"].tolist() == index[status == "ok"].tolist()
+    # a value starting with an operator is written after "=="
+    odd = SweepTable({"n": [4, 6], "status": ["!=x", "ok"]})
+    assert odd.where(status="==!=x")["n"].tolist() == [4]
+    assert odd.where(status="!=x")["n"].tolist() == [4, 6]
+
+
+@pytest.mark.parametrize("condition", ["<ok", ">=ok", " <= failed", ">a"])
+def test_where_refuses_an_ordering_of_text(condition):
+    with pytest.raises(ValueError, match=r"where: status = .* is not a condition on the text "
+                                         r"column status: only equality applies to text"):
+        made_up().where(status=condition)
+
+
 @pytest.mark.parametrize("conditions, message", [
     ({"nope": 1}, "where: no column 'nope'; the columns are n, Lc"),
     ({"Lc": "about 30"}, "where: Lc = 'about 30' is not a condition: a comparison is one of"),

@@ -127,18 +127,26 @@ class SweepTable:
               bound, e.g. ``Lc=(15, 30)`` for 15 <= Lc <= 30;
             - a list or set: equal to one of its values, e.g. ``n=[8, 10]``.
 
-            A NaN value meets no condition but ``"!=x"``.
+            A NaN value meets no condition but ``"!=x"``. On a text column (``status``,
+            ``reason``) only equality applies: a string is the value itself
+            (``status="ok"``), or ``"==text"`` / ``"!=text"`` (spaces around the text are
+            ignored), e.g. ``status="!=ok"`` for the failed designs; a value that itself
+            starts with ``==`` or ``!=`` is written after ``==``.
 
         Raises
         ------
         ValueError
-            For a column the table does not have, or a condition of none of these forms.
+            For a column the table does not have, a condition of none of these forms, or
+            ``<``, ``<=``, ``>``, ``>=`` on a text column.
 
         Examples
         --------
         >>> t = SweepTable({"n": [8, 8, 10], "Lc": [15.0, 30.0, 15.0]})
         >>> len(t.where(n=8)), len(t.where(Lc=">20")), len(t.where(n=8, Lc=(None, 20)))
         (2, 1, 1)
+        >>> s = SweepTable({"n": [8, 8, 10], "status": ["ok", "failed", "ok"]})
+        >>> s.where(status="!=ok")["n"].tolist(), s.where(status="== ok")["n"].tolist()
+        ([8], [8, 10])
         """
         mask = np.ones(len(self), bool)
         for name, condition in conditions.items():
@@ -152,6 +160,8 @@ class SweepTable:
                              f"{', '.join(self.columns)}")
         column = self._columns[name]
         numeric = column.dtype != object
+        if isinstance(condition, str) and not numeric:
+            return self._meets_text(name, column, condition)
         if isinstance(condition, str) and numeric:
             match = _COMPARISON.fullmatch(condition)
             if match is None:
@@ -177,6 +187,25 @@ class SweepTable:
         if isinstance(condition, (list, set, frozenset, np.ndarray)):
             return np.isin(column, list(condition))
         return column == condition
+
+    @staticmethod
+    def _meets_text(name: str, column: np.ndarray, condition: str) -> np.ndarray:
+        """Mask of the rows of the text column ``name`` that meet the string ``condition``:
+        ``"==text"``, ``"!=text"`` or the text itself (see :meth:`where`)."""
+        stripped = condition.lstrip()
+        operator_ = next((op for op in ("==", "!=") if stripped.startswith(op)), None)
+        if operator_ is not None:
+            value = stripped[2:].strip()
+            return _OPERATORS[operator_](column, value).astype(bool)
+        # An ordering of text is almost never what was meant (and "<ok" is no status):
+        # say so instead of matching nothing.
+        ordering = next((op for op in ("<=", ">=", "<", ">") if stripped.startswith(op)),
+                        None)
+        if ordering is not None:
+            raise ValueError(f"where: {name} = {condition!r} is not a condition on the text "
+                             f"column {name}: only equality applies to text, written "
+                             f"{name}='ok', {name}='==ok' or {name}='!=ok' (no {ordering})")
+        return (column == condition).astype(bool)
 
     def row(self, i: int) -> dict:
         """Row ``i`` as a dict of plain Python values."""
