@@ -41,6 +41,11 @@ void check_options(const DisplacementControlOptions& o) {
   if (o.extrapolation < 0 || o.extrapolation > 2) {
     throw_invalid("extrapolation", o.extrapolation, "0, 1 or 2");
   }
+  require_finite("adaptive_tolerance", o.adaptive_tolerance);
+  if (!(o.adaptive_tolerance > 0.0 && o.adaptive_tolerance <= 1e-4)) {
+    throw_invalid("adaptive_tolerance", o.adaptive_tolerance,
+                  "in (0, 1e-4]: the samples' force error relative to the path's largest force");
+  }
 }
 
 const char* const kNotFinite =
@@ -94,11 +99,24 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
   assembler_.emplace(model, *workspace_);
   struct Unbind {
     std::optional<assembly::Assembler>& assembler;
-    ~Unbind() { assembler.reset(); }
-  } unbind{assembler_};
+    std::optional<assembly::Assembler>& full;
+    ~Unbind() {
+      assembler.reset();
+      full.reset();
+    }
+  } unbind{assembler_, full_assembler_};
   const VectorX no_load = VectorX::Zero(n);
   VectorX u = initial.size() ? initial : VectorX::Zero(n);
   if (options_.merlin2_steps) return solve_merlin2_steps(prescribed, steps, imposed, u);
+  // Cables are tension-only: their slack kink is not located, so they keep fixed steps.
+  if (options_.adaptive && model.cables().empty()) {
+    if (!(full_workspace_ && full_workspace_->fits(model))) {
+      full_workspace_ = std::make_unique<assembly::Workspace>(model, assembly::all_dofs(n), 0.0,
+                                                              assembly::Storage::Full);
+    }
+    full_assembler_.emplace(model, *full_workspace_);
+    return solve_adaptive(prescribed, steps, imposed, u);
+  }
   const VectorX start = u;
 
   PathResult result;

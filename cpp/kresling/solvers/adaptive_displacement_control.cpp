@@ -1,0 +1,355 @@
+/// \file adaptive_displacement_control.cpp
+/// Displacement control with adaptive increments and dense output
+/// (DisplacementControlOptions::adaptive; docs/model.md, 'Displacement control').
+///
+/// The path u(t), t in [0, 1] the fraction of the prescribed motion, is followed in
+/// increments whose size comes from an error estimate; the protocol's samples t_k = k/steps
+/// are taken between converged points. Each converged point carries its exact path
+/// derivatives (du/dt, the constraint forces' dF/dt, the energies' rates), so between two
+/// of them the displacements, forces and energies are cubic Hermite curves: the predictor
+/// of the next increment (extrapolated) and the samples inside (interpolated, no
+/// iteration). The force curve's error is estimated from how far the previous increment's
+/// curve, extrapolated, misses the new converged forces; an increment whose estimate is
+/// above the tolerance is retried shorter, but never shorter than to the next sample (which
+/// it then ends on, converged by Newton as in the fixed-step mode).
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "kresling/core/check.hpp"
+#include "kresling/core/interrupt.hpp"
+#include "kresling/elements/dihedral.hpp"
+#include "kresling/solvers/displacement_control.hpp"
+#include "kresling/solvers/newton.hpp"
+
+namespace kresling::solvers {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// An increment's displacement predictor may miss its converged point by this much [mm]
+// (max-norm): Newton then converges in one or two iterations.
+constexpr double kPredictorError = 1e-4;
+// Stability changes and law kinks are located to this fraction of a sample spacing.
+constexpr double kEventWidth = 1e-3;
+
+// A converged equilibrium of the path with its derivatives along the path.
+struct PathPoint {
+  double t = 0.0;
+  VectorX u;           // all DOFs
+  VectorX velocity;    // du/dt, all DOFs (at the imposed ones, the prescribed motion)
+  VectorX force;       // constraint forces (-f_int at the imposed DOFs)
+  VectorX force_rate;  // their derivative d/dt
+  Eigen::Vector2d energy = Eigen::Vector2d::Zero();       // bars, hinges
+  Eigen::Vector2d energy_rate = Eigen::Vector2d::Zero();  // d/dt
+  int negative = -1;  // negative eigenvalues of the tangent there
+  // Per hinge, which piece of its law applies: -1 below the enhanced linear law's lower
+  // limit, 1 above its upper one, 0 in between (and for the other laws, which have no kink).
+  std::vector<signed char> pieces;
+  NewtonOutcome outcome;
+};
+
+std::vector<signed char> law_pieces(const model::Model& model, const VectorX& u) {
+  const auto& hinges = model.hinges();
+  std::vector<signed char> pieces(hinges.size(), 0);
+  const NodeMatrix& X = model.nodes();
+  auto at = [&](Index node) -> Vector3 {
+    return X.row(node).transpose() + u.segment<3>(3 * node);
+  };
+  for (std::size_t h = 0; h < hinges.size(); ++h) {
+    const model::Hinge& hinge = hinges[h];
+    if (hinge.law.kind != elements::SpringLawKind::EnhancedLinear || hinge.stiffness == 0.0) {
+      continue;
+    }
+    const auto& n = hinge.nodes;
+    const double theta = elements::dihedral_angle(at(n[0]), at(n[1]), at(n[2]), at(n[3]));
+    pieces[h] = theta < hinge.law.theta1 ? -1 : theta > hinge.law.theta2 ? 1 : 0;
+  }
+  return pieces;
+}
+
+// The cubic Hermite curve through (ta, ya, da) and (tb, yb, db) (values and derivatives)
+// at t: interpolation for t in [ta, tb], extrapolation beyond.
+template <typename V>
+V hermite(double ta, const V& ya, const V& da, double tb, const V& yb, const V& db, double t) {
+  const double h = tb - ta;
+  const double s = (t - ta) / h, s2 = s * s, s3 = s2 * s;
+  return (2 * s3 - 3 * s2 + 1) * ya + ((s3 - 2 * s2 + s) * h) * da + (3 * s2 - 2 * s3) * yb +
+         ((s3 - s2) * h) * db;
+}
+
+VectorX hermite_u(const PathPoint& a, const PathPoint& b, double t) {
+  return hermite<VectorX>(a.t, a.u, a.velocity, b.t, b.u, b.velocity, t);
+}
+
+// The path's derivatives at the converged state p.u, exactly (no finite differences of
+// forces: where bars are 1e5 times stiffer than hinges, those lose ~6 digits): with K the
+// unshifted tangent of every DOF (`full`), K_ff v_f = -K_fi p is solved with the free
+// tangent factorised last (at p.u or within the Newton tolerance of it: a relative error of
+// up to ~1e-6) and refined with K's products until the constraint forces' rate
+// dF/dt = -(K v)_imposed changes by less than 1e-12 of itself. The energy's rate is f_int . v;
+// its bars' part is a central difference (the energies are smooth; only the sum matters to
+// the analyses).
+bool path_derivatives(assembly::Assembler& assembler, assembly::Assembler& full,
+                      const TangentSolver& solver, const VectorX& prescribed,
+                      const std::vector<Index>& imposed, PathPoint& p) {
+  VectorX force;
+  full.assemble(p.u, force, /*with_matrix=*/true);
+  const assembly::SparseMatrix& K = full.matrix();
+  VectorX direction = VectorX::Zero(p.u.size());
+  for (Index i : imposed) direction[i] = prescribed[i];
+  VectorX force_rate(static_cast<Index>(imposed.size()));
+  for (int round = 0; round < 6; ++round) {
+    const VectorX product = K * direction;
+    for (std::size_t k = 0; k < imposed.size(); ++k) {
+      force_rate[static_cast<Index>(k)] = -product[imposed[k]];
+    }
+    if (round > 1 && (force_rate - p.force_rate).lpNorm<Eigen::Infinity>() <=
+                         1e-12 * force_rate.lpNorm<Eigen::Infinity>()) {
+      break;
+    }
+    p.force_rate = force_rate;
+    const VectorX correction = solver.solve(VectorX(-gather_rows(assembler, product)));
+    if (!correction.allFinite()) return false;
+    scatter_add_rows(assembler, correction, direction);
+  }
+  p.force_rate = force_rate;
+  p.velocity = direction;
+  double largest = 0.0;
+  for (Index i : imposed) largest = std::max(largest, std::abs(prescribed[i]));
+  const double dt = 1e-4 / largest;
+  VectorX scratch;
+  const double bars_plus = full.assemble(p.u + dt * direction, scratch, false).bars;
+  const double bars_minus = full.assemble(p.u - dt * direction, scratch, false).bars;
+  const double total = force.dot(direction);
+  const double bars = (bars_plus - bars_minus) / (2.0 * dt);
+  p.energy_rate = Eigen::Vector2d(bars, total - bars);
+  return true;
+}
+
+}  // namespace
+
+PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int steps,
+                                               const std::vector<Index>& imposed,
+                                               const VectorX& start) {
+  PathResult result;
+  result.constraint_dofs = imposed;
+  const model::Model& model = assembler_->model();
+  const VectorX no_load = VectorX::Zero(start.size());
+  const double spacing = 1.0 / steps;
+  const double smallest = std::ldexp(spacing, -options_.max_bisections);
+  const double event_width = kEventWidth * spacing;
+  auto sample_at = [&](int k) { return k == steps ? 1.0 : k * spacing; };
+  auto newton = [&](VectorX& w, double t) {
+    for (Index i : imposed) w[i] = start[i] + t * prescribed[i];
+    return newton_equilibrium(*assembler_, *solver_, w, no_load, options_.newton,
+                              options_.reject_iterations);
+  };
+  auto accepted = [&](const NewtonOutcome& o) {
+    return o.converged && o.iterations < options_.reject_iterations;
+  };
+  auto why = [&](const NewtonOutcome& o) {
+    return o.failure.empty() ? "Newton needed " + std::to_string(o.iterations) + " iterations"
+                             : o.failure;
+  };
+  // A converged point's forces, energies, stability, law pieces and path derivatives.
+  auto complete = [&](PathPoint& p) {
+    const PathStep step = record_step(*assembler_, p.u, p.t, p.outcome, imposed, -1.0);
+    if (!finite_step(step)) {
+      p.outcome.failure =
+          "the converged state's internal force or energy is not finite (an element's law is "
+          "singular there, e.g. a hinge folded flat)";
+      return false;
+    }
+    p.force = step.constraint_force;
+    p.energy = Eigen::Vector2d(step.energy_bars, step.energy_hinges);
+    p.negative = p.outcome.negative_eigenvalues;
+    p.pieces = law_pieces(model, p.u);
+    if (!path_derivatives(*assembler_, *full_assembler_, *solver_, prescribed, imposed, p) ||
+        !p.force_rate.allFinite() || !p.energy_rate.allFinite()) {
+      p.outcome.failure = "the path tangent is not finite";
+      return false;
+    }
+    return true;
+  };
+  double force_scale = 0.0;  // largest |constraint force| of the path so far [N]
+
+  // The start, brought to equilibrium (it usually is one: one iteration).
+  PathPoint a;
+  a.t = 0.0;
+  a.u = start;
+  a.outcome = newton(a.u, 0.0);
+  ++result.attempted_increments;
+  if (!accepted(a.outcome) || !complete(a)) {
+    result.failed_increment = 1;
+    result.message = "the starting state has no equilibrium nearby: " + why(a.outcome);
+    return result;
+  }
+  PathPoint previous;  // the point before a (t = -1: none yet)
+  previous.t = -1.0;
+  // The force scale starts at the initial tangent's forces at the full motion (the path's
+  // largest force on a nearly linear path; a larger one only where the path softens), so
+  // that the first increments are not held to the converged forces' own rounding.
+  force_scale = (a.force + a.force_rate).lpNorm<Eigen::Infinity>();
+
+  double h = spacing;            // the next increment by the error estimate
+  double event_end = kInfinity;  // an event (stability change, law kink) lies in (a.t, this]
+  int next = 1;                  // the next sample to record
+  std::string first_failure;     // why the increment from a failed at full size
+  while (next <= steps) {
+    check_interrupt();
+    // The increment's end: a bisection towards a known event, else the error estimate's
+    // size, snapped to a sample within a millionth of the spacing (so that a sample is not
+    // left a sliver away from a converged point). The first increment, which has no error
+    // estimate, ends at the first sample at the latest.
+    double t1;
+    const bool locating = event_end < kInfinity;
+    if (locating) {
+      t1 = (event_end - a.t <= event_width) ? event_end : a.t + 0.5 * (event_end - a.t);
+    } else {
+      t1 = std::min(1.0, a.t + (previous.t < 0.0 ? std::min(h, spacing) : h));
+      const double k = std::round(t1 * steps);
+      if (std::abs(t1 - k * spacing) < 1e-6 * spacing) t1 = sample_at(static_cast<int>(k));
+    }
+    ++result.attempted_increments;
+    PathPoint b;
+    b.t = t1;
+    const VectorX predicted = previous.t >= 0.0 ? hermite_u(previous, a, t1)
+                                                : VectorX(a.u + (t1 - a.t) * a.velocity);
+    b.u = predicted;
+    b.outcome = newton(b.u, t1);
+    // Past a bifurcation a predicted start may land on a less stable branch than the one
+    // the last equilibrium leads on to (the branch the fixed-step path follows): retry from
+    // there and keep the more stable.
+    if (accepted(b.outcome) && a.negative >= 0 && b.outcome.negative_eigenvalues > a.negative) {
+      VectorX plain = a.u;
+      const NewtonOutcome retry = newton(plain, t1);
+      if (accepted(retry) && retry.negative_eigenvalues >= 0 &&
+          retry.negative_eigenvalues < b.outcome.negative_eigenvalues) {
+        b.u = plain;
+        b.outcome = retry;
+      }
+    }
+    bool ok = accepted(b.outcome) && complete(b);
+    const double length = t1 - a.t;
+    double error_factor = 4.0;  // how far the increment may grow by the force error
+    if (ok) {
+      const bool event = b.negative != a.negative || b.pieces != a.pieces;
+      if (event && length > event_width) {
+        event_end = t1;  // locate it before stepping on
+        continue;
+      }
+      // The dense output's error: the Hermite curve of the forces through the previous
+      // increment, extrapolated to b, misses b's forces by D/24 (b-p)^2 (b-a)^2 (D: their
+      // fourth derivative); the interpolant on (a, b) errs by at most D/24 ((b-a)/2)^4,
+      // that times (b-a)^2 / (16 (b-p)^2).
+      const bool inside = next <= steps && sample_at(next) < b.t;
+      force_scale = std::max({force_scale, b.force.lpNorm<Eigen::Infinity>(),
+                              a.force.lpNorm<Eigen::Infinity>()});
+      const double allowed = options_.adaptive_tolerance * force_scale;
+      if (previous.t >= 0.0) {
+        const VectorX extrapolated = hermite<VectorX>(previous.t, previous.force,
+                                                      previous.force_rate, a.t, a.force,
+                                                      a.force_rate, b.t);
+        const double span = b.t - previous.t;
+        const double estimate = (b.force - extrapolated).lpNorm<Eigen::Infinity>() * length *
+                                length / (16.0 * span * span);
+        error_factor = estimate > 0.0 ? 0.9 * std::pow(allowed / estimate, 0.25) : 4.0;
+        if (inside && estimate > allowed && length > event_width) {
+          // Never shorter than to the next sample: an increment with no sample inside has
+          // no dense output error, so the path moves on at least as the fixed steps do.
+          h = std::max(length * std::clamp(error_factor, 0.2, 0.9), sample_at(next) - a.t);
+          event_end = kInfinity;
+          continue;
+        }
+      } else if (inside) {
+        ok = false;  // no estimate yet (only after a failed first increment): shorter
+        b.outcome.failure = "no error estimate for the first increment";
+      }
+    }
+    if (ok) {
+      // The samples in (a.t, b.t]: b itself, or the Hermite curves (displacements, forces,
+      // energies) between a and b; across a located event, Newton at the sample.
+      const bool same_stability = a.negative == b.negative;
+      while (next <= steps && sample_at(next) <= b.t) {
+        const double ts = sample_at(next);
+        PathStep step;
+        if (ts == b.t) {
+          step = record_step(*assembler_, b.u, ts, b.outcome, imposed, -1.0);
+        } else if (same_stability) {
+          step.load_factor = ts;
+          step.displacement = hermite_u(a, b, ts);
+          for (Index i : imposed) step.displacement[i] = start[i] + ts * prescribed[i];
+          step.constraint_force =
+              hermite<VectorX>(a.t, a.force, a.force_rate, b.t, b.force, b.force_rate, ts);
+          const Eigen::Vector2d e = hermite<Eigen::Vector2d>(a.t, a.energy, a.energy_rate, b.t,
+                                                              b.energy, b.energy_rate, ts);
+          step.energy_bars = e[0];
+          step.energy_hinges = e[1];
+          step.iterations = 0;
+          step.negative_eigenvalues = b.negative;
+        } else {
+          ++result.attempted_increments;
+          VectorX w = hermite_u(a, b, ts);
+          const NewtonOutcome o = newton(w, ts);
+          if (!accepted(o)) {
+            ok = false;
+            b.outcome.failure = "a sample inside the increment: " + why(o);
+            break;
+          }
+          step = record_step(*assembler_, w, ts, o, imposed, -1.0);
+          if (!finite_step(step)) {
+            ok = false;
+            b.outcome.failure = "a sample inside the increment: its force is not finite";
+            break;
+          }
+        }
+        result.steps.push_back(std::move(step));
+        ++next;
+        if (options_.stop && options_.stop(result.steps.back())) {
+          result.completed = true;
+          return result;
+        }
+      }
+    }
+    if (!ok) {
+      if (first_failure.empty()) first_failure = why(b.outcome);
+      h = 0.5 * length;
+      event_end = kInfinity;
+      if (h < smallest) {
+        result.failed_increment = result.attempted_increments;
+        result.message = "increment " + std::to_string(next) + " (of " + std::to_string(steps) +
+                         ", at " + format_number(a.t) + " of the prescribed motion) failed: " +
+                         "the adaptive increment fell below 1/2^" +
+                         std::to_string(options_.max_bisections) +
+                         " of a sample spacing; at full size: " + first_failure;
+        return result;
+      }
+      continue;
+    }
+    first_failure.clear();
+    // The next increment: by the force error, and so that the displacement predictor stays
+    // within kPredictorError (Newton then converges in one or two iterations); its error
+    // grows like the length to the power 4 (cubic Hermite; 2 for the first, linear one).
+    // Increments cut short (by an event or the path's end) do not set it.
+    const double u_error = (b.u - predicted).lpNorm<Eigen::Infinity>();
+    const double order = previous.t >= 0.0 ? 4.0 : 2.0;
+    double factor = u_error > 0.0 ? 0.9 * std::pow(kPredictorError / u_error, 1.0 / order) : 4.0;
+    factor = std::clamp(std::min(factor, error_factor), 0.2, 4.0);
+    if (b.outcome.iterations > 4) factor = std::min(factor, 0.5);
+    const bool cut_short = locating || t1 < std::min(1.0, a.t + h) - 1e-6 * spacing;
+    h = cut_short ? (factor < 1.0 ? std::min(h, length * factor) : h) : length * factor;
+    if (next <= steps) h = std::max(h, sample_at(next) - b.t);  // to the next sample at least
+    h = std::max(h, smallest);
+    if (event_end <= b.t) event_end = kInfinity;
+    previous = std::move(a);
+    a = std::move(b);
+  }
+  result.completed = true;
+  return result;
+}
+
+}  // namespace kresling::solvers
