@@ -3,9 +3,12 @@
 // relative (docs/thesis_equations.md); 1e-5 is asserted, far below the designs' spread.
 
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <tuple>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -65,4 +68,24 @@ TEST(LinearBending, BadInputNamesTheParameter) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("Lc"), std::string::npos) << e.what();
   }
+}
+
+TEST(LinearBending, TestersInTwoThreadsGiveTheSerialNumbers) {
+  // No state is shared between testers (each has its own specimen, assembler and CHOLMOD
+  // workspace): the sweeps run one per thread without the GIL.
+  auto sweep = [](std::vector<double>& out) {
+    LinearBendingTest test(8);
+    for (int i = 0; i < 20; ++i) {
+      const Design design(8, 30.0, 0.6 + 0.015 * i, 5.0 + 1.5 * i);
+      out.push_back(test.run(design, 0).stiffness);
+      out.push_back(test.run(design, 1, 0.2).stiffness);
+    }
+  };
+  std::vector<double> serial, a, b;
+  sweep(serial);
+  std::thread first(sweep, std::ref(a)), second(sweep, std::ref(b));
+  first.join();
+  second.join();
+  EXPECT_EQ(a, serial);
+  EXPECT_EQ(b, serial);
 }
