@@ -48,3 +48,7 @@ def test_mechanics_are_computed_live():
     snap = SnapThroughTester(4).run(design).snap_force
     assert w.mechanics_of(design) == pytest.approx((ratio, snap), rel=1e-12)
     assert f"{ratio:.3f}" in w.summary.value and f"{snap:.3f} N" in w.summary.value
+    # The symbols with subscripts (an ipywidgets.HTML), none in plain text.
+    assert "<td>K<sub>B</sub> ratio (0.001 rad)</td>" in w.summary.value
+    assert "<td>Ψ<sub>ext</sub> / Ψ<sub>con</sub></td>" in w.summary.value
+    assert not any(s in w.summary.value for s in ("K_B", "Psi_", "Psi ext"))

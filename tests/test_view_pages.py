@@ -140,6 +140,51 @@ def test_the_bending_view_of_the_page_holds_the_paths_to_1e_9_mm(bending, tmp_pa
             <= 1e-9
 
 
+# The symbols the views must set with subscripts, as plain text (any occurrence).
+PLAIN_SYMBOLS = ("K_B", "K_ext", "K_con", "Psi_ext", "Psi_con")
+
+
+def figure_texts(fig):
+    """Every string of a figure (data, layout and frames): titles, names, hover templates,
+    annotations, colour-bar titles."""
+    found = []
+
+    def walk(node):
+        if isinstance(node, str):
+            found.append(node)
+        elif isinstance(node, dict):
+            for value in node.values():
+                walk(value)
+        elif isinstance(node, (list, tuple)):
+            for value in node:
+                walk(value)
+
+    walk(fig.to_dict())
+    return found
+
+
+def plain_symbols(texts):
+    return [text for text in texts if any(symbol in text for symbol in PLAIN_SYMBOLS)]
+
+
+def test_the_bending_view_sets_its_symbols_with_subscripts(bending):
+    _, fig = bending
+    texts = figure_texts(fig)
+    assert plain_symbols(texts) == []
+    assert "K<sub>B</sub> ratio 16.80" in fig.layout.title.text
+    curves = [t for t in fig.data if t.type == "scatter" and t.mode == "lines"]
+    assert [c.name.split(":")[0] for c in curves] == ["extended", "contracted"]
+    assert all(": K<sub>B</sub> = " in c.name and c.name in c.hovertemplate for c in curves)
+
+
+def test_the_snap_through_and_path_views_have_no_plain_symbols():
+    design = Design(8, 0.8, 30)
+    fig = view_snap_through(design, path=snap_through_path(design, steps=20), max_frames=5,
+                            field="energy", title="K_B and Psi_ext / Psi_con")
+    assert plain_symbols(figure_texts(fig)) == []
+    assert fig.layout.title.text == "K<sub>B</sub> and Ψ<sub>ext</sub> / Ψ<sub>con</sub>"
+
+
 # -- the snap-through test ------------------------------------------------------------------
 
 def test_the_snap_through_view_follows_the_force_travel_curve():
@@ -273,7 +318,8 @@ def test_kresling_bend_view(tmp_path):
     assert [f["name"] for f in frames] == [str(k) for k in range(11)]
     assert sum(t["type"] == "mesh3d" for t in data) == 2
     assert page.count(get_plotlyjs()[:200]) == 1 and not external_urls(page)
-    assert f"both stable states, K_B ratio {ratio:.2f} (10 increments)" in layout["title"]["text"]
+    assert f"both stable states, K<sub>B</sub> ratio {ratio:.2f} (10 increments)" in \
+        layout["title"]["text"]
 
 
 def test_kresling_snap_view(tmp_path):
@@ -400,6 +446,23 @@ def test_the_explorer_page_is_self_contained_and_opens_at_its_design(explorer):
     embedded = json.JSONDecoder().raw_decode(page, page.index("var D = ") + len("var D = "))[0]
     assert embedded == json.loads(json.dumps(data))
     assert "hashchange" in page and "lam=" in page
+
+
+def test_the_explorer_sets_its_symbols_with_subscripts(explorer):
+    from kresling.view.explorer import explorer_figure
+
+    data, page = explorer
+    fig = explorer_figure(data, 8, 0.8, 30)
+    assert plain_symbols(figure_texts(fig)) == []
+    heat = next(t for t in fig.data if t.name == "kb_ratio")
+    label = "K<sub>B</sub> ratio K<sub>ext</sub> / K<sub>con</sub> (0.001 rad)"
+    assert heat.colorbar.title.text == label and heat.hovertemplate.count(label) == 1
+    assert f"<b>{label}</b>" in [a.text for a in fig.layout.annotations]
+    # The page's own text: the note under the sliders and the line the script writes.
+    note = page[page.index('<p class="note">'):]
+    note = note[:note.index("</p>")]
+    assert plain_symbols([note]) == [] and "K<sub>B</sub> ratio: the thesis" in note
+    assert "' mm;  K<sub>B</sub> ratio ' + fmt(values[0], 2)" in page
 
 
 # -- the report's interactive views ---------------------------------------------------------

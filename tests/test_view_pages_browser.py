@@ -145,7 +145,7 @@ window.addEventListener("load", function () {
     var seen = {n: document.getElementById("n-value").textContent,
                 lam: document.getElementById("lam-value").textContent,
                 Lc: document.getElementById("Lc-value").textContent,
-                values: document.getElementById("explorer-values").textContent};
+                values: document.getElementById("explorer-values").innerHTML};
     window.kreslingExplorerShow(4, 0.9, 60).then(function () {
       var gd = document.getElementById("kresling-explorer");
       var marker = gd.data.filter(function (t) { return t.name === "kb_ratio design"; })[0];
@@ -173,7 +173,7 @@ def test_the_explorer_opens_at_the_nearest_grid_point_and_writes_its_address(pag
     seen = json.loads(html.unescape(result.stdout[start:].split(">", 1)[1].split("</pre>")[0]))
     # The grid: n 4, 8; Lc 15, 30, 45, 60; lambda 0.7, 0.8, 0.9.
     assert (seen["n"], seen["lam"], seen["Lc"]) == ("8", "0.800", "30.00 mm")
-    assert "K_B ratio" in seen["values"] and "snap force" in seen["values"]
+    assert "K<sub>B</sub> ratio" in seen["values"] and "snap force" in seen["values"]
     assert seen["moved"] == {"hash": "#n=4&lam=0.9&Lc=60", "n": "4", "marker": [60, 0.9]}
 
 

@@ -31,6 +31,7 @@ import plotly.graph_objects as go
 from kresling.geometry import Design
 from kresling.sweeps.designs import THESIS_LAM, THESIS_N, design_grid
 from kresling.view.surface import polyline_order
+from kresling.view.symbols import subscripted
 
 __all__ = ["explorer_data", "explorer_figure", "write_explorer", "DEFAULT_SIZE", "MAPS",
            "DIV_ID"]
@@ -39,7 +40,8 @@ __all__ = ["explorer_data", "explorer_figure", "write_explorer", "DEFAULT_SIZE",
 #: 0.7-0.9 (so the thesis's designs, e.g. n = 8, lambda = 0.8, Lc = 30, are grid points).
 DEFAULT_SIZE = (19, 21)
 
-#: The maps the page shows: sweep metric -> (title, colour scale).
+#: The maps the page shows: sweep metric -> (title in plain text, colour scale). The page
+#: sets the title's symbols with subscripts (:func:`kresling.view.symbols.subscripted`).
 MAPS = {"kb_ratio": ("K_B ratio K_ext / K_con (0.001 rad)", "Viridis"),
         "snap_force": ("snap-through force [N]", "Plasma")}
 
@@ -251,6 +253,7 @@ def explorer_figure(data, n=None, lam=None, Lc=None) -> go.Figure:
                                  line=dict(color=colour, width=width / 2 + 0.5, dash=dash),
                                  hoverinfo="name", showlegend=False))
     for k, (metric, (label, scale)) in enumerate(MAPS.items()):
+        label = subscripted(label)
         axes = dict(xaxis=f"x{k + 2}", yaxis=f"y{k + 2}")
         fig.add_trace(go.Heatmap(
             x=data["Lc"], y=data["lam"], z=data["maps"][metric][str(n)], colorscale=scale,
@@ -294,8 +297,9 @@ def _layout(fig, data) -> None:
             dict(text="<b>contracted (0)</b>", x=0.46, y=1.0, **_TITLE),
             dict(text="<b>flat crease pattern</b>" if any(data["patterns"].values())
                  else "<b>flat crease pattern</b> (not computed)", x=0.835, y=1.0, **_TITLE),
-            dict(text=f"<b>{MAPS['kb_ratio'][0]}</b>", x=0.2, y=0.43, **_TITLE),
-            dict(text=f"<b>{MAPS['snap_force'][0]}</b>", x=0.75, y=0.43, **_TITLE)])
+            dict(text=f"<b>{subscripted(MAPS['kb_ratio'][0])}</b>", x=0.2, y=0.43, **_TITLE),
+            dict(text=f"<b>{subscripted(MAPS['snap_force'][0])}</b>", x=0.75, y=0.43,
+                 **_TITLE)])
 
 
 _TITLE = dict(xref="paper", yref="paper", xanchor="center", yanchor="bottom", showarrow=False,
@@ -381,8 +385,9 @@ _SCRIPT = """
     var heights = [cell.states['1'][index], cell.states['0'][index]].map(function (f) {
       return f[f.length - 1];
     });
-    info.textContent = 'Le = ' + fmt(heights[0], 2) + ' mm, Lc = ' + fmt(heights[1], 2) +
-      ' mm;  K_B ratio ' + fmt(values[0], 2) + ';  snap force ' +
+    // innerHTML for the subscript (K<sub>B</sub>): every value in it is a number formatted here.
+    info.innerHTML = 'Le = ' + fmt(heights[0], 2) + ' mm, Lc = ' + fmt(heights[1], 2) +
+      ' mm;  K<sub>B</sub> ratio ' + fmt(values[0], 2) + ';  snap force ' +
       (values[1] === null ? 'none (monostable)' : fmt(values[1], 2) + ' N');
     if (writeHash) {
       var hash = '#n=' + n + '&lam=' + D.lam[s.lam].toFixed(3).replace(/0+$/, '').replace(/\\.$/, '') +
@@ -493,7 +498,7 @@ def write_explorer(data, path, *, n=None, lam=None, Lc=None) -> Path:
         f'<label>Lc <input type="range" id="Lc-slider" min="0" step="1" value="{start["Lc"]}">'
         '<output id="Lc-value"></output></label>'
         '<span id="explorer-values"></span></div>'
-        f'<p class="note">{_html.escape(resolution)}</p>')
+        f'<p class="note">{subscripted(_html.escape(resolution))}</p>')
     page = page.replace("<body>", "<body>\n" + controls, 1)
     page = page.replace("<head>", "<head>\n    <title>kresling: design explorer</title>", 1)
     path.parent.mkdir(parents=True, exist_ok=True)

@@ -132,11 +132,12 @@ class ExplorerWidget:
     def _summary(self, design: Design) -> str:
         rows = [("Le (extended height)", f"{design.Le:.3f} mm"),
                 ("Lc (contracted height)", f"{design.Lc:.3f} mm"),
-                ("Psi ext / con", f"{np.degrees(design.psi_ext):.2f} / "
+                ("Ψ<sub>ext</sub> / Ψ<sub>con</sub>", f"{np.degrees(design.psi_ext):.2f} / "
                                   f"{np.degrees(design.psi_con):.2f} deg")]
         if self.mechanics:
             ratio, snap = self.mechanics_of(design)
-            rows += [("K_B ratio (0.001 rad)", f"{ratio:.3f}"), ("snap force", f"{snap:.3f} N")]
+            rows += [("K<sub>B</sub> ratio (0.001 rad)", f"{ratio:.3f}"),
+                     ("snap force", f"{snap:.3f} N")]
         cells = "".join(f"<tr><td>{k}</td><td style='text-align:right'>{v}</td></tr>"
                         for k, v in rows)
         return f"<table>{cells}</table>"

@@ -17,6 +17,7 @@ from kresling.view.fields import FIELDS, check_field, edge_values, field_edges, 
 from kresling.view.inputs import view_inputs
 from kresling.view.surface import (crease_groups, family_style, line_trace, mesh_trace,
                                    polyline_order, rounded, segments_xyz)
+from kresling.view.symbols import subscripted
 
 __all__ = ["view_model", "view_path", "PathPanel", "PathCurve", "animated_figure"]
 
@@ -53,8 +54,8 @@ class _Scene:
             self.crange = (-largest, largest) if spec.signed else \
                 (min(0.0, float(values.min()) if values.size else 0.0), largest)
             self.show_scale = show_scale
-            self.colorbar = dict(title=dict(text=spec.label, side="right"), len=0.75,
-                                 thickness=14)
+            self.colorbar = dict(title=dict(text=subscripted(spec.label), side="right"),
+                                 len=0.75, thickness=14)
             if colorbar_x is not None:
                 self.colorbar.update(x=colorbar_x, xanchor="left")
         others = []
@@ -91,7 +92,7 @@ class _Scene:
                     cmin=self.crange[0], cmax=self.crange[1], width=_FIELD_WIDTH,
                     showscale=self.show_scale, colorbar=self.colorbar)
         return go.Scatter3d(x=x, y=y, z=z, mode="lines", line=line,
-                            name=FIELDS[self.field].label, hoverinfo="name",
+                            name=subscripted(FIELDS[self.field].label), hoverinfo="name",
                             scene=self.scene, connectgaps=False,
                             legendgroup="field", showlegend=self.show_legend)
 
@@ -200,7 +201,7 @@ def view_model(model, u=None, *, triangles=None, hinge_family=None, field=None,
     default = f"Bar-and-hinge model: {_describe(model)}" + \
         (", displaced" if np.any(u) else ", reference state")
     fig.update_layout(
-        title=dict(text=title or default, x=0.5, xanchor="center"),
+        title=dict(text=subscripted(title or default), x=0.5, xanchor="center"),
         scene=_scene_layout([points]), template="plotly_white", height=650,
         margin=dict(l=10, r=10, t=90, b=10), uirevision="view",
         legend=dict(orientation="h", x=0.0, y=1.0, yanchor="bottom"))
@@ -335,7 +336,9 @@ def animated_figure(panels, rows, names, *, curves=(), x_label="", y_label="", f
     follow the frame.
 
     :func:`view_path` is one scene and one curve; a bending test in both states is two
-    scenes and two curves, a FOLD file's frames one scene and no curve.
+    scenes and two curves, a FOLD file's frames one scene and no curve. The title, the axis
+    titles, the curves' and panels' names may name symbols in plain text (``K_B``,
+    ``Psi_ext``): the figure sets them with subscripts (:mod:`kresling.view.symbols`).
 
     Parameters
     ----------
@@ -370,6 +373,9 @@ def animated_figure(panels, rows, names, *, curves=(), x_label="", y_label="", f
     check_field(field)
     rows = [int(r) for r in rows]
     names = [str(name) for name in names]
+    # Every text the figure shows, with its symbols subscripted (K_B as K<sub>B</sub>).
+    title, x_label, y_label = subscripted(title), subscripted(x_label), subscripted(y_label)
+    curves = [PathCurve(c.x, c.y, subscripted(c.name), c.colour) for c in curves]
     if not panels or len(panels) > 2:
         raise ValueError(f"panels has {len(panels)} entries: must have one or two")
     if len(rows) != len(names) or not rows:
@@ -462,9 +468,9 @@ def animated_figure(panels, rows, names, *, curves=(), x_label="", y_label="", f
         fig.layout["scene" if k == 0 else f"scene{k + 1}"].domain.x = domain
         if panel.title and len(panels) > 1:   # below the legend, above the scene
             fig.layout["scene" if k == 0 else f"scene{k + 1}"].domain.y = [0.0, 0.93]
-            fig.add_annotation(text=f"<b>{panel.title}</b>", x=sum(domain) / 2, y=0.94,
-                               xref="paper", yref="paper", xanchor="center", yanchor="bottom",
-                               showarrow=False, font=dict(size=14))
+            fig.add_annotation(text=f"<b>{subscripted(panel.title)}</b>", x=sum(domain) / 2,
+                               y=0.94, xref="paper", yref="paper", xanchor="center",
+                               yanchor="bottom", showarrow=False, font=dict(size=14))
     if with_curve:
         fig.layout.xaxis.domain = [round(scenes_end + 0.14, 4), 1.0]
         fig.update_xaxes(title_text=x_label, row=1, col=len(panels) + 1)
