@@ -218,3 +218,32 @@ TEST(TangentSolver, SheetsGetNestedDissectionChainsAmd) {
   EXPECT_TRUE(small.factorize(grid_laplacian(30)).ok);
   EXPECT_EQ(small.plan().ordering, Ordering::AMD);
 }
+
+TEST(TangentSolver, LargeIndefiniteUsesCholmodLdltWithTheInertia) {
+  // 3,000 DOFs, strictly diagonally dominant (off-diagonal row sums <= 3 against |10| on the
+  // diagonal): by Gershgorin the negative eigenvalues are exactly as many as the negative
+  // diagonal entries, an independent count of the inertia.
+  const int n = 3000;
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Eigen::Triplet<double, int>> t;
+  int negative = 0;
+  for (int j = 0; j < n; ++j) {
+    const bool flip = j % 97 == 5;
+    negative += flip;
+    t.emplace_back(j, j, flip ? -10.0 : 10.0);
+    for (int i = j + 1; i <= std::min(n - 1, j + 5); ++i) t.emplace_back(i, j, 0.3 * u(rng));
+  }
+  SparseMatrix S(n, n);
+  S.setFromTriplets(t.begin(), t.end());
+  for (const auto choice : {CholeskyChoice::Auto, CholeskyChoice::Supernodal}) {
+    TangentSolver solver(choice);
+    for (int repeat = 0; repeat < 2; ++repeat) {
+      const auto info = solver.factorize(S);
+      EXPECT_TRUE(info.ok);
+      EXPECT_EQ(info.method, Factorization::LDLT);
+      EXPECT_EQ(info.negative_eigenvalues, negative);
+      expect_solves_sparse(S, solver);
+    }
+  }
+}

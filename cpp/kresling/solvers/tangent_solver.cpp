@@ -62,6 +62,62 @@ void set_orderings(cholmod_common& c, Index n) {
   c.postorder = 1;
 }
 
+// LDL^T by CHOLMOD (simplicial, no pivoting: D's signs are the inertia by Sylvester's law),
+// with the ordering the Cholesky chose: for large indefinite tangents (sheets past a limit
+// point), where Eigen's LDL^T with AMD would need up to twice the flops.
+class CholmodLdlt {
+ public:
+  CholmodLdlt() {
+    cholmod_start(&common_);
+    common_.print = 0;
+    common_.supernodal = CHOLMOD_SIMPLICIAL;
+    common_.final_ll = 0;  // keep L D L^T
+    common_.final_asis = 1;
+  }
+  ~CholmodLdlt() {
+    if (factor_) cholmod_free_factor(&factor_, &common_);
+    cholmod_finish(&common_);
+  }
+  CholmodLdlt(const CholmodLdlt&) = delete;
+  CholmodLdlt& operator=(const CholmodLdlt&) = delete;
+
+  /// Factorise (analysing on the first call); false if a pivot is zero or not finite.
+  bool factorize(const SparseMatrix& K, int ordering) {
+    cholmod_sparse A = Eigen::viewAsCholmod(K.selfadjointView<Eigen::Lower>());
+    if (!factor_) {
+      common_.nmethods = 1;
+      common_.method[0].ordering = ordering;
+      common_.postorder = 1;
+      factor_ = cholmod_analyze(&A, &common_);
+      if (!factor_) return false;
+    }
+    cholmod_factorize(&A, factor_, &common_);
+    return common_.status == CHOLMOD_OK && factor_->minor == factor_->n;
+  }
+
+  /// The diagonal D (simplicial LDL^T: the first entry of each column of L).
+  VectorX diagonal() const {
+    const auto* p = static_cast<const int*>(factor_->p);
+    const auto* x = static_cast<const double*>(factor_->x);
+    VectorX d(static_cast<Index>(factor_->n));
+    for (Index j = 0; j < d.size(); ++j) d[j] = x[p[j]];
+    return d;
+  }
+
+  VectorX solve(const VectorX& b) const {
+    VectorX rhs = b;
+    cholmod_dense B = Eigen::viewAsCholmod(rhs);
+    cholmod_dense* X = cholmod_solve(CHOLMOD_A, factor_, &B, &common_);
+    VectorX x = Eigen::Map<const VectorX>(static_cast<const double*>(X->x), b.size());
+    cholmod_free_dense(&X, &common_);
+    return x;
+  }
+
+ private:
+  mutable cholmod_common common_;
+  cholmod_factor* factor_ = nullptr;
+};
+
 }  // namespace
 
 CholeskyChoice choose_cholesky(Index n, double factor_nonzeros, double flops) {
@@ -85,6 +141,9 @@ struct TangentSolver::Impl {
   Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> cholesky;
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> supernodal;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
+  // From kTryNestedDissection DOFs up the LDL^T is CHOLMOD's, with the Cholesky's ordering.
+  std::unique_ptr<CholmodLdlt> large_ldlt;
+  int cholmod_ordering = CHOLMOD_AMD;
   Eigen::UmfPackLU<SparseMatrix> lu;
   bool ldlt_analysed = false, lu_analysed = false;
   Factorization current = Factorization::None;
@@ -108,6 +167,7 @@ void TangentSolver::Impl::make_plan(const SparseMatrix& K) {
     plan.factor_nonzeros = c.lnz;
     plan.flops = c.fl;
     const int selected = c.method[c.selected].ordering;
+    cholmod_ordering = selected;
     plan.ordering = ordering_of(selected);
     plan.cholesky = requested == CholeskyChoice::Auto ? choose_cholesky(n, c.lnz, c.fl)
                                                        : requested;
@@ -177,21 +237,24 @@ FactorizeInfo TangentSolver::factorize(const SparseMatrix& K) {
         return {true, Factorization::Cholesky, 0};
       }
   }
-  // Indefinite (or singular): LDL^T for the inertia.
-  if (!s.ldlt_analysed) {
-    s.ldlt.analyzePattern(K);
-    s.ldlt_analysed = true;
-  }
-  s.ldlt.factorize(K);
-  if (s.ldlt.info() == Eigen::Success) {
-    const VectorX d = s.ldlt.vectorD();
-    const double largest = d.cwiseAbs().maxCoeff();
-    const bool usable = d.allFinite() && d.cwiseAbs().minCoeff() > 1e-13 * largest;
-    if (usable) {
-      s.current = Factorization::LDLT;
-      info = {true, Factorization::LDLT, static_cast<int>((d.array() < 0.0).count())};
-      return info;
+  // Indefinite (or singular): LDL^T for the inertia, if its pivots are usable (none zero
+  // or tiny against the largest: an exactly singular or badly conditioned leading block).
+  VectorX d;
+  if (K.rows() >= kTryNestedDissection) {
+    if (!s.large_ldlt) s.large_ldlt = std::make_unique<CholmodLdlt>();
+    if (s.large_ldlt->factorize(K, s.cholmod_ordering)) d = s.large_ldlt->diagonal();
+  } else {
+    if (!s.ldlt_analysed) {
+      s.ldlt.analyzePattern(K);
+      s.ldlt_analysed = true;
     }
+    s.ldlt.factorize(K);
+    if (s.ldlt.info() == Eigen::Success) d = s.ldlt.vectorD();
+  }
+  if (d.size() > 0 && d.allFinite() &&
+      d.cwiseAbs().minCoeff() > 1e-13 * d.cwiseAbs().maxCoeff()) {
+    s.current = Factorization::LDLT;
+    return {true, Factorization::LDLT, static_cast<int>((d.array() < 0.0).count())};
   }
   // LU needs the whole matrix: mirror the lower triangle (rare path).
   s.whole = K.selfadjointView<Eigen::Lower>();
@@ -216,7 +279,7 @@ VectorX TangentSolver::solve(const VectorX& b) const {
     case Factorization::DenseCholesky:
       return impl_->dense.solve(b);
     case Factorization::LDLT:
-      return impl_->ldlt.solve(b);
+      return impl_->large_ldlt ? impl_->large_ldlt->solve(b) : VectorX(impl_->ldlt.solve(b));
     case Factorization::LU:
       return impl_->lu.solve(b);
     default:

@@ -10,9 +10,10 @@
 /// (large sheets). The fill-reducing ordering is CHOLMOD's: AMD for small tangents (its
 /// analysis is cheapest), and from kTryNestedDissection DOFs up whichever of AMD and
 /// nested dissection (METIS) gives the fewer flops: nested dissection for sheets, AMD for
-/// towers. When the Cholesky fails the tangent is indefinite: a sparse LDL^T (Eigen's
-/// simplicial factorisation with AMD ordering) gives the count of negative eigenvalues by
-/// Sylvester's law of inertia; if its pivots are unusable (an exactly singular or badly
+/// towers. When the Cholesky fails the tangent is indefinite: a sparse LDL^T without
+/// pivoting (Eigen's simplicial factorisation with AMD ordering; from kTryNestedDissection
+/// DOFs up CHOLMOD's, with the Cholesky's ordering) gives the count of negative eigenvalues
+/// by Sylvester's law of inertia; if its pivots are unusable (an exactly singular or badly
 /// conditioned leading block) UMFPACK's LU solves instead and the inertia is reported
 /// unknown (-1). Symbolic analyses are done once per pattern.
 
