@@ -1,9 +1,10 @@
 """Fixed steps against adaptive increments with dense output, side by side in one run.
 
-The bending test (both protocols) on the four Table 3 designs, both states: wall time (best of
-``--repeat``), Newton iterations summed over the samples (the adaptive mode's interpolated
-samples count 0; its increments' iterations are not all on samples) and the largest difference
-of the sampled force, relative to the fixed path's largest |force|.
+The bending test (both protocols) on the four Table 3 designs, both states, and their
+snap-through test (100 increments): wall time (best of ``--repeat``), Newton iterations summed
+over the samples (the adaptive mode's interpolated samples count 0; its increments' iterations
+are not all on samples) and the largest difference of the sampled force, relative to the fixed
+path's largest |force|.
 Run: ``python benchmarks/adaptive_speed.py [--repeat 3]``.
 """
 
@@ -16,6 +17,7 @@ import numpy as np
 
 from kresling import Design, _core
 from kresling.analyses import BendingTester
+from kresling.analyses.snap_through import SnapThroughTester
 from kresling.solvers.displacement_control import displacement_control_options
 
 TABLE3 = [(10, 0.9, 15.0), (8, 0.8, 30.0), (8, 0.8, 15.0), (4, 0.7, 30.0)]
@@ -28,6 +30,14 @@ def make_tester(n, protocol, adaptive):
     s = t.settings
     t._core = _core.analyses.BendingTest(n, s["deflection"], s["deflection_angle"], s["steps"],
                                          s["cells"], t.parameters.to_core(), options)
+    return t
+
+
+def make_snap_tester(n, adaptive):
+    t = SnapThroughTester(n)
+    options = displacement_control_options(extrapolation=2)
+    options.adaptive = adaptive
+    t._core = _core.analyses.SnapThroughTest(n, 100, t.parameters.to_core(), options)
     return t
 
 
@@ -61,6 +71,21 @@ def main():
                       f"{'extended' if state else 'contracted':>10} {t_f * 1e3:>9.1f} "
                       f"{fixed.iterations.sum():>6d} {t_a * 1e3:>11.1f} "
                       f"{adaptive.iterations.sum():>6d} {t_f / t_a:>8.2f} {error:>11.1e}")
+
+    print("\nSnap-through (100 increments)")
+    header = (f"{'n':>3} {'lam':>4} {'Lc':>4} {'fixed ms':>9} {'adaptive ms':>11} {'speed-up':>8} "
+              f"{'max dF/Fmax':>11} {'snap force fixed':>16} {'adaptive':>12}")
+    print(header)
+    print("-" * len(header))
+    for n, lam, Lc in TABLE3:
+        design = Design(n, lam, Lc)
+        fixed_tester, adaptive_tester = make_snap_tester(n, False), make_snap_tester(n, True)
+        t_f, fixed = best(lambda: fixed_tester.run(design), args.repeat)
+        t_a, adaptive = best(lambda: adaptive_tester.run(design), args.repeat)
+        f, a = np.asarray(fixed.force), np.asarray(adaptive.force)
+        error = np.abs(a - f).max() / np.abs(f).max() if len(a) == len(f) else float("nan")
+        print(f"{n:>3} {lam:>4g} {Lc:>4g} {t_f * 1e3:>9.1f} {t_a * 1e3:>11.1f} {t_f / t_a:>8.2f} "
+              f"{error:>11.1e} {fixed.snap_force:>16.9f} {adaptive.snap_force:>12.9f}")
 
 
 if __name__ == "__main__":
