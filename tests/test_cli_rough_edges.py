@@ -309,3 +309,87 @@ def test_figures_of_partial_runs_say_so():
     assert "PARTIAL" in plot_snap_through(s).get_title()
     assert "PARTIAL" not in plot_snap_through(snap_through(Design(8, 0.8, 30))).get_title()
     plt.close("all")
+
+
+# -- the interactive pages of a run that stopped early --------------------------------------
+
+def test_partial_paths_know_how_far_they_went():
+    # A tolerance below round-off stops both paths early; completed paths reach 1. The
+    # fractions against the travel computed from the design.
+    from kresling.analyses.paths import snap_through_path
+
+    d = Design(8, 0.8, 30)
+    snap = snap_through_path(d, steps=100, tolerance=1e-14, max_iterations=3)
+    assert snap.partial and not snap.path.completed and len(snap.travel) > 0
+    assert snap.travel_fraction == pytest.approx(snap.travel[-1] / (d.Le - d.Lc), rel=1e-12)
+    assert 0 < snap.travel_fraction < 1
+    whole = snap_through_path(d, steps=20)
+    assert not whole.partial and whole.travel_fraction == 1.0
+    assert whole.travel[-1] == pytest.approx(d.Le - d.Lc, rel=1e-9)
+    # no increment at all: an empty path, not an error
+    bent = bending_path(d, 0, "0.001rad", tolerance=1e-14, max_iterations=3)
+    assert bent.partial and bent.travel_fraction == 0.0 and len(bent.force) == 0
+    bent = bending_path(d, 0, "0.001rad")
+    assert not bent.partial and bent.travel_fraction == 1.0
+    assert bent.target_deflection == pytest.approx(2 * d.Lc * math.tan(0.001), rel=1e-12)
+
+
+def test_python_views_of_runs_that_stopped_say_so():
+    from kresling.analyses.paths import snap_through_path
+    from kresling.view import view_bending, view_path, view_snap_through
+
+    d = Design(8, 0.8, 30)
+    solver = {"tolerance": 1e-14, "max_iterations": 3}
+    path = snap_through_path(d, steps=100, **solver)
+    title = view_snap_through(d, steps=100, **solver).layout.title.text
+    assert f"PARTIAL: stopped at {path.travel_fraction:.0%} of the travel" in title
+    assert "PARTIAL" in view_snap_through(d, path=path, title="mine").layout.title.text
+    title = view_path(path.specimen, path.path).layout.title.text
+    assert f"PARTIAL: the solver stopped after {len(path.travel)} increments" in title
+    assert path.path.message.split(" (")[0] in title
+    # A bending run that converged no increment: both states at 0 %, the page still drawn.
+    fig = view_bending(d, "0.001rad", **solver)
+    assert ("PARTIAL: the extended run stopped at 0% of its travel; the contracted run "
+            "stopped at 0% of its travel") in fig.layout.title.text and len(fig.frames) == 1
+    # A contracted run stopped at 30 % (scripted, as above): its curve and the title only.
+    whole = bending_stiffness(Design(4, 0.7, 30), "0.001rad")
+    stopped = dataclasses.replace(whole, contracted=_stopped_at(whole.contracted, 0.3))
+    paths = [bending_path(Design(4, 0.7, 30), state, "0.001rad") for state in (1, 0)]
+    fig = view_bending(Design(4, 0.7, 30), paths=paths, results=stopped)
+    title = fig.layout.title.text
+    assert "PARTIAL: the contracted run stopped at 30% of its travel" in title
+    assert "extended run" not in title
+    names = [t.name for t in fig.data if t.type == "scatter" and t.mode == "lines"]
+    assert [("PARTIAL" in name) for name in names] == [False, True]
+    for fig in (view_bending(Design(4, 0.7, 30), paths=paths, results=whole),
+                view_snap_through(d, steps=20), view_path(path.specimen, snap_through_path(
+                    d, steps=20).path)):
+        assert "PARTIAL" not in fig.layout.title.text
+
+
+def test_cli_view_pages_of_runs_that_stopped_say_so(monkeypatch, tmp_path, capsys):
+    # The page says what the table says: a contracted run stopped at 30 % (scripted), and a
+    # snap-through run stopped by a tolerance below round-off (a real stop).
+    from view_cases import page_figure
+
+    real_bending, real_snap = bending_stiffness, snap_through
+
+    def stopping(design, protocol, **options):
+        result = real_bending(design, protocol, **options)
+        return dataclasses.replace(result, contracted=_stopped_at(result.contracted, 0.3))
+
+    def failing(design, **options):
+        return real_snap(design, **options, tolerance=1e-14, max_iterations=3)
+
+    monkeypatch.setattr(kresling.analyses, "bending_stiffness", stopping)
+    assert main([*BEND, "--view", str(tmp_path / "bend.html")]) == 1
+    _, layout, _ = page_figure((tmp_path / "bend.html").read_text(encoding="utf-8"))
+    assert "PARTIAL: the contracted run stopped at 30% of its travel" in layout["title"]["text"]
+    monkeypatch.setattr(kresling.analyses, "snap_through", failing)
+    fraction = failing(Design(8, 0.8, 30), steps=40).travel_fraction
+    assert fraction < 1
+    assert main(["snap", "--n", "8", "--lam", "0.8", "--Lc", "30", "--steps", "40", "--view",
+                 str(tmp_path / "snap.html")]) == 1
+    _, layout, _ = page_figure((tmp_path / "snap.html").read_text(encoding="utf-8"))
+    assert f"PARTIAL: stopped at {fraction:.0%} of the travel" in layout["title"]["text"]
+    capsys.readouterr()

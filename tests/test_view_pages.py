@@ -320,6 +320,7 @@ def test_kresling_bend_view(tmp_path):
     assert page.count(get_plotlyjs()[:200]) == 1 and not external_urls(page)
     assert f"both stable states, K<sub>B</sub> ratio {ratio:.2f} (10 increments)" in \
         layout["title"]["text"]
+    assert "PARTIAL" not in layout["title"]["text"]         # both runs completed
 
 
 def test_kresling_snap_view(tmp_path):
@@ -331,6 +332,7 @@ def test_kresling_snap_view(tmp_path):
     assert len(frames) == 31 and layout["xaxis"]["title"]["text"] == "travel d [mm]"
     assert page.count(get_plotlyjs()[:200]) == 1 and not external_urls(page)
     assert layout["sliders"][0]["currentvalue"]["suffix"] == " / 30"
+    assert "PARTIAL" not in layout["title"]["text"]
 
 
 def test_kresling_view_of_a_fold_file(folding, tmp_path):

@@ -50,6 +50,13 @@ class BendingPath:
         Per increment, as :class:`~kresling.analyses.BendingResult` has them: the middle
         polygon's centre deflection [mm], the summed reaction [N], delta = atan(y / L)
         [rad] and M = F L [N*m].
+    target_deflection : float
+        The drive's full travel [mm] (NaN: not known).
+
+    Notes
+    -----
+    A path that stopped early (``path.completed`` False) is *partial*, as the bending
+    test's result would be: ``travel_fraction`` says how far it went.
     """
 
     specimen: object
@@ -60,10 +67,28 @@ class BendingPath:
     force: np.ndarray
     angle: np.ndarray
     moment: np.ndarray
+    target_deflection: float = float("nan")
 
     @property
     def state_name(self) -> str:
         return "extended" if self.state == 1 else "contracted"
+
+    @property
+    def partial(self) -> bool:
+        """True if the path stopped before the end of its travel."""
+        return not self.path.completed
+
+    @property
+    def travel_fraction(self) -> float:
+        """Fraction of the drive's travel reached (1 for a completed path; 0 if no increment
+        converged or the travel is not known), as
+        :attr:`kresling.analyses.BendingResult.travel_fraction`."""
+        if not self.partial:
+            return 1.0
+        if not (len(self.deflection) and np.isfinite(self.target_deflection)
+                and self.target_deflection > 0):
+            return 0.0
+        return float(min(1.0, abs(self.deflection[-1]) / self.target_deflection))
 
 
 @dataclass(frozen=True)
@@ -80,12 +105,34 @@ class SnapThroughPath:
         The drive's travel [mm] and the summed reaction at the driven nodes [N] (positive:
         the cell resists compression), as :class:`~kresling.analyses.SnapThroughResult`
         has them after its first entry (the built state).
+
+    Notes
+    -----
+    A path that stopped before ``Lc`` (``path.completed`` False) is *partial*:
+    ``travel_fraction`` says how far it went.
     """
 
     specimen: object
     path: object
     travel: np.ndarray
     force: np.ndarray
+
+    @property
+    def partial(self) -> bool:
+        """True if the drive stopped before ``Lc``."""
+        return not self.path.completed
+
+    @property
+    def travel_fraction(self) -> float:
+        """Fraction of the travel ``Le - Lc`` reached (1 when completed, 0 if no increment
+        converged), as :attr:`kresling.analyses.SnapThroughResult.travel_fraction`."""
+        design = self.specimen.design
+        travel = design.height(1) - design.height(0)
+        if not self.partial:
+            return 1.0
+        if not (len(self.travel) and travel > 0):
+            return 0.0
+        return float(min(1.0, self.travel[-1] / travel))
 
 
 def bending_path(design: Design, state, protocol="5mm", *, deflection=None,
@@ -163,12 +210,13 @@ def bending_path(design: Design, state, protocol="5mm", *, deflection=None,
     centre_y = 3 * specimen.centre(cells // 2) + 1
     deflection_mm = -np.asarray(path.displacement, dtype=float).reshape(
         -1, specimen.model.num_dofs)[:, centre_y]
-    force = np.asarray(path.constraint_force, dtype=float).reshape(len(deflection_mm), -1) \
-        .sum(axis=1)
+    # One row per increment: a path that stopped at its first increment has none.
+    force = np.asarray(path.constraint_force, dtype=float).reshape(
+        len(deflection_mm), len(path.constraint_dofs)).sum(axis=1)
     return BendingPath(specimen=specimen, path=path, state=state, module_length=module_length,
                        deflection=deflection_mm, force=force,
                        angle=np.arctan(deflection_mm / module_length),
-                       moment=force * module_length / 1000.0)
+                       moment=force * module_length / 1000.0, target_deflection=abs(drive))
 
 
 def snap_through_path(design: Design, *, steps=DEFAULT_STEPS, parameters=None,
@@ -205,5 +253,6 @@ def snap_through_path(design: Design, *, steps=DEFAULT_STEPS, parameters=None,
                                       extrapolation=extrapolation, **solver)
     displacement = np.asarray(path.displacement, dtype=float).reshape(-1, specimen.model.num_dofs)
     travel = -displacement[:, 3 * specimen.centre(1) + 2]
-    force = np.asarray(path.constraint_force, dtype=float).reshape(len(travel), -1).sum(axis=1)
+    force = np.asarray(path.constraint_force, dtype=float).reshape(
+        len(travel), len(path.constraint_dofs)).sum(axis=1)
     return SnapThroughPath(specimen=specimen, path=path, travel=travel, force=force)

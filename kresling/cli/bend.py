@@ -118,8 +118,10 @@ def run(args) -> int:
         from kresling.view import view_bending, write_html
 
         with cli_names(BEND_OPTIONS):
+            # The results mark a run that stopped early on the page as in the table.
             page = view_bending(design, protocol if args.deflection_rad is None else "0.001rad",
-                                max_frames=args.view_frames, parameters=parameters, **options)
+                                results=bending, max_frames=args.view_frames,
+                                parameters=parameters, **options)
         write_html(page, args.view)
         print(f"wrote {args.view} (interactive page)", file=sys.stderr if args.json
               else sys.stdout)

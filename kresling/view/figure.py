@@ -4,6 +4,7 @@ its load-displacement curve (:func:`view_path`)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from html import escape
 
 import numpy as np
 import plotly.graph_objects as go
@@ -22,6 +23,9 @@ from kresling.view.symbols import subscripted
 __all__ = ["view_model", "view_path", "PathPanel", "PathCurve", "animated_figure"]
 
 _FIELD_WIDTH = 7  # px
+
+#: Colour of a title's line that says a run stopped before the end of its travel.
+PARTIAL_COLOUR = "#c00000"
 
 
 class _Scene:
@@ -238,6 +242,9 @@ def view_path(model, path, *, triangles=None, hinge_family=None, field=None, cur
     max_frames : int, default 200
         Upper bound on the number of frames.
     title : str, optional
+        Default: the model and the increments. A path that stopped early (``completed``
+        False) adds a red line below it (also below a given title): "PARTIAL: the solver
+        stopped after S increments" and its ``message``.
 
     Returns
     -------
@@ -272,10 +279,15 @@ def view_path(model, path, *, triangles=None, hinge_family=None, field=None, cur
               f"{num_steps} increments"
     if field is not None:
         default += f": {FIELDS[field].label}"
+    shown = title or default
+    if getattr(path, "completed", True) is False:
+        # A solver that stopped early: the page says so below any title, with the reason.
+        reason = getattr(path, "message", "") or "no reason given"
+        shown += (f'<br><span style="color:{PARTIAL_COLOUR}"><b>PARTIAL: the solver stopped '
+                  f'after {num_steps} increments</b> ({escape(reason)})</span>')
     return animated_figure([PathPanel(inputs, displacement)], rows,
                            [frame_name(r) for r in rows], curves=curves, x_label=x_label,
-                           y_label=y_label, field=field, title=title or default,
-                           total=num_steps)
+                           y_label=y_label, field=field, title=shown, total=num_steps)
 
 
 def _check_path(model, path) -> np.ndarray:
@@ -452,14 +464,21 @@ def animated_figure(panels, rows, names, *, curves=(), x_label="", y_label="", f
         frames.append(go.Frame(name=name, data=data, traces=traces + marker_indices))
     fig.frames = frames
     total = max(int(name) for name in names) if total is None else int(total)
+    # Room for two title lines above the legend; each further line (a run that stopped
+    # early adds one) pushes the legend and the plots down, the title then set from the top.
+    extra = max(0, title.count("<br>") - 1)
+    top = 100 + 30 * extra
+    title_layout = dict(text=title, x=0.5, xanchor="center")
+    if extra:
+        title_layout.update(y=1.0 - 15.0 / height, yref="container", yanchor="top")
     layout = {}
     for k in range(len(panels)):
         # A narrow scene (one of two) needs the camera further back to hold a squat model.
         layout["scene" if k == 0 else f"scene{k + 1}"] = _scene_layout(
             points[k], 2.2 if len(panels) == 1 else 2.7)
     fig.update_layout(
-        title=dict(text=title, x=0.5, xanchor="center"), template="plotly_white",
-        height=height, margin=dict(l=10, r=20, t=100, b=130), uirevision="view",
+        title=title_layout, template="plotly_white",
+        height=height, margin=dict(l=10, r=20, t=top, b=130), uirevision="view",
         legend=dict(orientation="h", x=0.0, y=1.0, yanchor="bottom"),
         sliders=[slider(names, total, prefix=prefix)], updatemenus=[play_buttons()], **layout)
     step = scenes_end / len(panels)
