@@ -1,9 +1,10 @@
 """The adaptive displacement control (dense output between adaptive increments) against the
-fixed steps: the four Table 3 designs, both states, both bending protocols.
+fixed steps: the four Table 3 designs, both states, both bending protocols, and their
+snap-through test.
 
 Reference: the fixed-step path (quadratic starting guess), itself MERLIN2's path to the Newton
 tolerance. Tolerance: every sample's summed force within 1e-8 of the fixed path's largest
-|force| (the stated accuracy of the adaptive mode; its own target is 1e-10, the fixed path's
+|force| (the stated accuracy of the adaptive mode; its own target is 1e-9, the fixed path's
 forces are converged to about 4e-12 of it).
 """
 
@@ -12,6 +13,7 @@ import pytest
 
 from kresling import Design, _core
 from kresling.analyses import BendingTester
+from kresling.analyses.snap_through import SnapThroughTester
 from kresling.solvers.displacement_control import displacement_control_options
 
 TABLE3 = [(10, 0.9, 15.0), (8, 0.8, 30.0), (8, 0.8, 15.0), (4, 0.7, 30.0)]
@@ -49,3 +51,30 @@ def test_adaptive_tolerance_is_checked():
     with pytest.raises(ValueError, match="adaptive_tolerance"):
         _core.analyses.BendingTest(4, 5.0, 0.0, 350, 4, BendingTester(4).parameters.to_core(),
                                    options)
+
+
+def make_snap_tester(n, adaptive):
+    t = SnapThroughTester(n)
+    options = displacement_control_options(extrapolation=2)
+    options.adaptive = adaptive
+    t._core = _core.analyses.SnapThroughTest(n, 100, t.parameters.to_core(), options)
+    return t
+
+
+@pytest.mark.parametrize("n, lam, Lc", TABLE3)
+def test_adaptive_snap_through_matches_fixed_steps(n, lam, Lc):
+    # The snap-through path (100 increments from Le to Lc, through the unstable branch):
+    # forces within 1e-8 of the largest, and the features read off them (the snap force, the
+    # energy barrier) to the same relative accuracy (measured: 3e-10 and 1e-15).
+    design = Design(n, lam, Lc)
+    fixed = make_snap_tester(n, False).run(design)
+    adaptive = make_snap_tester(n, True).run(design)
+    assert adaptive.completed, adaptive.message
+    f, a = np.asarray(fixed.force), np.asarray(adaptive.force)
+    assert len(a) == len(f)
+    scale = np.abs(f).max()
+    assert np.abs(a - f).max() <= 1e-8 * scale
+    assert adaptive.snap_force == pytest.approx(fixed.snap_force, rel=1e-8)
+    assert adaptive.bistable == fixed.bistable
+    if np.isfinite(fixed.energy_barrier):
+        assert adaptive.energy_barrier == pytest.approx(fixed.energy_barrier, rel=1e-8)

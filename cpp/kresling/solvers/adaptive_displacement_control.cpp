@@ -190,10 +190,6 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
   }
   PathPoint previous;  // the point before a (t = -1: none yet)
   previous.t = -1.0;
-  // The force scale starts at the initial tangent's forces at the full motion (the path's
-  // largest force on a nearly linear path; a larger one only where the path softens), so
-  // that the first increments are not held to the converged forces' own rounding.
-  force_scale = (a.force + a.force_rate).lpNorm<Eigen::Infinity>();
 
   double h = spacing;            // the next increment by the error estimate
   double event_end = kInfinity;  // an event (stability change, law kink) lies in (a.t, this]

@@ -48,14 +48,14 @@ struct DisplacementControlOptions {
   /// equal samples inside an increment are read off those curves (displacements, constraint
   /// forces, energies; 0 iterations), a sample at an increment's end is the converged
   /// point. Increments whose force curve's estimated error exceeds `adaptive_tolerance`
-  /// times the path's force scale (the largest constraint force so far, at least the
-  /// initial tangent's at the full motion) are retried shorter, down to the next sample.
+  /// times the largest constraint force of the path so far are retried shorter, down to
+  /// the next sample (which they then end on).
   /// Measured against the fixed steps on the Table 3 designs (bending, both protocols and
-  /// states): the sampled forces agree to 2.1e-9 of the path's largest force. Models with cables (tension-only: a kink at slack)
+  /// states; snap-through): the sampled forces agree to 2.1e-9 of the path's largest force. Models with cables (tension-only: a kink at slack)
   /// run with fixed steps. Ignores extrapolation; merlin2_steps takes precedence.
   bool adaptive = false;
-  /// Estimated error of an adaptive sample's constraint forces, relative to the path's
-  /// force scale (in (0, 1e-4]). 1e-9: ten times below the stated 1e-8; a tighter one
+  /// Estimated error of an adaptive sample's constraint forces, relative to the largest
+  /// constraint force of the path so far (in (0, 1e-4]). 1e-9: ten times below the stated 1e-8; a tighter one
   /// meets the converged forces' own rounding (~4e-12 of the largest) and shortens the
   /// increments to single samples.
   double adaptive_tolerance = 1e-9;
