@@ -85,20 +85,26 @@ VectorX hermite_u(const PathPoint& a, const PathPoint& b, double t) {
   return hermite<VectorX>(a.t, a.u, a.velocity, b.t, b.u, b.velocity, t);
 }
 
-// The path's derivatives at the converged state p.u, exactly (no finite differences of
-// forces: where bars are 1e5 times stiffer than hinges, those lose ~6 digits): with K the
-// unshifted tangent of every DOF (`full`), K_ff v_f = -K_fi p is solved with the free
-// tangent factorised last (at p.u or within the Newton tolerance of it: a relative error of
-// up to ~1e-6) and refined with K's products until the constraint forces' rate
-// dF/dt = -(K v)_imposed changes by less than 1e-12 of itself. The energy's rate is f_int . v;
-// its bars' part is a central difference (the energies are smooth; only the sum matters to
-// the analyses).
+// The state and path derivatives at the converged p.u, exactly (no finite differences of
+// forces: where bars are 1e5 times stiffer than hinges, those lose ~6 digits). One assembly
+// of every DOF (`full`, unshifted, lower triangle) gives the constraint forces, the
+// energies and K. K_ff v_f = -K_fi p is solved with the free tangent factorised last (at
+// p.u or within the Newton tolerance of it: a relative error of up to ~1e-6) and refined
+// with K's products until the constraint forces' rate dF/dt = -(K v)_imposed changes by
+// less than 1e-10 of itself (its rounding: ~3e-12). The energy's rate is f_int . v, the
+// hinges' part sum L0 M(theta) dtheta/dt. Returns false when a value is not finite.
 bool path_derivatives(assembly::Assembler& assembler, assembly::Assembler& full,
                       const TangentSolver& solver, const VectorX& prescribed,
                       const std::vector<Index>& imposed, PathPoint& p) {
   VectorX force;
-  full.assemble(p.u, force, /*with_matrix=*/true);
-  const assembly::SparseMatrix& K = full.matrix();
+  const assembly::Energies energies = full.assemble(p.u, force, /*with_matrix=*/true);
+  p.force.resize(static_cast<Index>(imposed.size()));
+  for (std::size_t k = 0; k < imposed.size(); ++k) {
+    p.force[static_cast<Index>(k)] = -force[imposed[k]];
+  }
+  p.energy = Eigen::Vector2d(energies.bars, energies.hinges);
+  if (!p.force.allFinite() || !p.energy.allFinite()) return false;
+  const auto K = full.matrix().selfadjointView<Eigen::Lower>();
   VectorX direction = VectorX::Zero(p.u.size());
   for (Index i : imposed) direction[i] = prescribed[i];
   VectorX force_rate(static_cast<Index>(imposed.size()));
@@ -108,7 +114,7 @@ bool path_derivatives(assembly::Assembler& assembler, assembly::Assembler& full,
       force_rate[static_cast<Index>(k)] = -product[imposed[k]];
     }
     if (round > 1 && (force_rate - p.force_rate).lpNorm<Eigen::Infinity>() <=
-                         1e-12 * force_rate.lpNorm<Eigen::Infinity>()) {
+                         1e-10 * force_rate.lpNorm<Eigen::Infinity>()) {
       break;
     }
     p.force_rate = force_rate;
@@ -118,16 +124,24 @@ bool path_derivatives(assembly::Assembler& assembler, assembly::Assembler& full,
   }
   p.force_rate = force_rate;
   p.velocity = direction;
-  double largest = 0.0;
-  for (Index i : imposed) largest = std::max(largest, std::abs(prescribed[i]));
-  const double dt = 1e-4 / largest;
-  VectorX scratch;
-  const double bars_plus = full.assemble(p.u + dt * direction, scratch, false).bars;
-  const double bars_minus = full.assemble(p.u - dt * direction, scratch, false).bars;
-  const double total = force.dot(direction);
-  const double bars = (bars_plus - bars_minus) / (2.0 * dt);
-  p.energy_rate = Eigen::Vector2d(bars, total - bars);
-  return true;
+  const model::Model& model = full.model();
+  const NodeMatrix& X = model.nodes();
+  auto at = [&](Index node) -> Vector3 {
+    return X.row(node).transpose() + p.u.segment<3>(3 * node);
+  };
+  double hinges = 0.0;
+  for (const model::Hinge& hinge : model.hinges()) {
+    if (hinge.stiffness == 0.0) continue;
+    const auto& n = hinge.nodes;
+    const elements::DihedralDerivatives d = elements::dihedral_angle_derivatives(
+        at(n[0]), at(n[1]), at(n[2]), at(n[3]), /*with_hessian=*/false);
+    double rate = 0.0;
+    for (int j = 0; j < 4; ++j) rate += d.gradient.segment<3>(3 * j).dot(direction.segment<3>(3 * n[j]));
+    hinges += hinge.length * hinge.law.evaluate(d.angle, hinge.rest_angle, hinge.stiffness).moment *
+              rate;
+  }
+  p.energy_rate = Eigen::Vector2d(force.dot(direction) - hinges, hinges);
+  return p.force_rate.allFinite() && p.energy_rate.allFinite();
 }
 
 }  // namespace
@@ -157,23 +171,27 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
   };
   // A converged point's forces, energies, stability, law pieces and path derivatives.
   auto complete = [&](PathPoint& p) {
-    const PathStep step = record_step(*assembler_, p.u, p.t, p.outcome, imposed, -1.0);
-    if (!finite_step(step)) {
+    if (!path_derivatives(*assembler_, *full_assembler_, *solver_, prescribed, imposed, p)) {
       p.outcome.failure =
-          "the converged state's internal force or energy is not finite (an element's law is "
-          "singular there, e.g. a hinge folded flat)";
+          "the converged state's internal force, energy or path tangent is not finite (an "
+          "element's law is singular there, e.g. a hinge folded flat)";
       return false;
     }
-    p.force = step.constraint_force;
-    p.energy = Eigen::Vector2d(step.energy_bars, step.energy_hinges);
     p.negative = p.outcome.negative_eigenvalues;
     p.pieces = law_pieces(model, p.u);
-    if (!path_derivatives(*assembler_, *full_assembler_, *solver_, prescribed, imposed, p) ||
-        !p.force_rate.allFinite() || !p.energy_rate.allFinite()) {
-      p.outcome.failure = "the path tangent is not finite";
-      return false;
-    }
     return true;
+  };
+  // A converged point as a sample.
+  auto as_step = [&](const PathPoint& p) {
+    PathStep step;
+    step.load_factor = p.t;
+    step.displacement = p.u;
+    step.constraint_force = p.force;
+    step.energy_bars = p.energy[0];
+    step.energy_hinges = p.energy[1];
+    step.iterations = p.outcome.iterations;
+    step.negative_eigenvalues = p.outcome.negative_eigenvalues;
+    return step;
   };
   double force_scale = 0.0;  // largest |constraint force| of the path so far [N]
 
@@ -274,7 +292,7 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
         const double ts = sample_at(next);
         PathStep step;
         if (ts == b.t) {
-          step = record_step(*assembler_, b.u, ts, b.outcome, imposed, -1.0);
+          step = as_step(b);
         } else if (same_stability) {
           step.load_factor = ts;
           step.displacement = hermite_u(a, b, ts);

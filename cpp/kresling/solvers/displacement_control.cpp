@@ -112,7 +112,7 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
   if (options_.adaptive && model.cables().empty()) {
     if (!(full_workspace_ && full_workspace_->fits(model))) {
       full_workspace_ = std::make_unique<assembly::Workspace>(model, assembly::all_dofs(n), 0.0,
-                                                              assembly::Storage::Full);
+                                                              assembly::Storage::Lower);
     }
     full_assembler_.emplace(model, *full_workspace_);
     return solve_adaptive(prescribed, steps, imposed, u);

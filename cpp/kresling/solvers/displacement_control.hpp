@@ -86,7 +86,7 @@ class DisplacementControl {
   // (pattern, slot map) and the symbolic factorisation.
   std::unique_ptr<assembly::Workspace> workspace_;
   std::unique_ptr<TangentSolver> solver_;
-  // Every DOF, unshifted: the path derivatives of the adaptive mode.
+  // Every DOF, unshifted, lower triangle: the path derivatives of the adaptive mode.
   // The workspace is kept between solves (no model reference); the binding to the model
   // is made by solve and emptied when it returns.
   std::unique_ptr<assembly::Workspace> full_workspace_;
