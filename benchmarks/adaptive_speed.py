@@ -15,30 +15,19 @@ import time
 
 import numpy as np
 
-from kresling import Design, _core
+from kresling import Design
 from kresling.analyses import BendingTester
 from kresling.analyses.snap_through import SnapThroughTester
-from kresling.solvers.displacement_control import displacement_control_options
 
 TABLE3 = [(10, 0.9, 15.0), (8, 0.8, 30.0), (8, 0.8, 15.0), (4, 0.7, 30.0)]
 
 
 def make_tester(n, protocol, adaptive):
-    t = BendingTester(n, protocol, extrapolation=2)
-    options = displacement_control_options(extrapolation=2)
-    options.adaptive = adaptive
-    s = t.settings
-    t._core = _core.analyses.BendingTest(n, s["deflection"], s["deflection_angle"], s["steps"],
-                                         s["cells"], t.parameters.to_core(), options)
-    return t
+    return BendingTester(n, protocol, adaptive=adaptive)
 
 
 def make_snap_tester(n, adaptive):
-    t = SnapThroughTester(n)
-    options = displacement_control_options(extrapolation=2)
-    options.adaptive = adaptive
-    t._core = _core.analyses.SnapThroughTest(n, 100, t.parameters.to_core(), options)
-    return t
+    return SnapThroughTester(n, adaptive=adaptive)
 
 
 def best(function, repeat):
