@@ -193,7 +193,17 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
     step.negative_eigenvalues = p.outcome.negative_eigenvalues;
     return step;
   };
-  double force_scale = 0.0;  // largest |constraint force| of the path so far [N]
+  double force_scale = 0.0;  // largest |drive force| of the path so far [N]
+  // The drive's force G = sum_k F_k U_k / max|U| of constraint forces F.
+  double largest_motion = 0.0;
+  for (Index i : imposed) largest_motion = std::max(largest_motion, std::abs(prescribed[i]));
+  auto drive_force = [&](const VectorX& F) {
+    double g = 0.0;
+    for (std::size_t k = 0; k < imposed.size(); ++k) {
+      g += F[static_cast<Index>(k)] * prescribed[imposed[k]];
+    }
+    return g / largest_motion;
+  };
 
   // The start, brought to equilibrium (it usually is one: one iteration).
   PathPoint a;
@@ -256,20 +266,23 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
         event_end = t1;  // locate it before stepping on
         continue;
       }
-      // The dense output's error: the Hermite curve of the forces through the previous
-      // increment, extrapolated to b, misses b's forces by D/24 (b-p)^2 (b-a)^2 (D: their
-      // fourth derivative); the interpolant on (a, b) errs by at most D/24 ((b-a)/2)^4,
-      // that times (b-a)^2 / (16 (b-p)^2).
+      // The dense output's error, on the drive's force G = sum_k F_k U_k / max|U| (the
+      // force conjugate to the prescribed motion; the summed reaction of a uniform drive):
+      // its Hermite curve through the previous increment, extrapolated to b, misses b's by
+      // D/24 (b-p)^2 (b-a)^2 (D: its fourth derivative); the interpolant on (a, b) errs by at
+      // most D/24 ((b-a)/2)^4, that times (b-a)^2 / (16 (b-p)^2). How the drive's force is
+      // shared among the driven DOFs is determined only to the Newton tolerance (stiff bars
+      // redistribute it), in the fixed steps as here, so the estimate is not held to it.
       const bool inside = next <= steps && sample_at(next) < b.t;
-      force_scale = std::max({force_scale, b.force.lpNorm<Eigen::Infinity>(),
-                              a.force.lpNorm<Eigen::Infinity>()});
+      force_scale = std::max({force_scale, std::abs(drive_force(b.force)),
+                              std::abs(drive_force(a.force))});
       const double allowed = options_.adaptive_tolerance * force_scale;
       if (previous.t >= 0.0) {
         const VectorX extrapolated = hermite<VectorX>(previous.t, previous.force,
                                                       previous.force_rate, a.t, a.force,
                                                       a.force_rate, b.t);
         const double span = b.t - previous.t;
-        const double estimate = (b.force - extrapolated).lpNorm<Eigen::Infinity>() * length *
+        const double estimate = std::abs(drive_force(b.force - extrapolated)) * length *
                                 length / (16.0 * span * span);
         error_factor = estimate > 0.0 ? 0.9 * std::pow(allowed / estimate, 0.25) : 4.0;
         if (inside && estimate > allowed && length > event_width) {
