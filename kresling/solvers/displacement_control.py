@@ -54,13 +54,15 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
         chosen by an error estimate, the samples inside an increment read off cubic Hermite
         curves through its converged ends (displacements, forces and energies with their
         exact path derivatives; 0 iterations); stability changes and hinges crossing a limit
-        of the enhanced linear law are located before the path steps on. The sampled forces
-        agree with the fixed steps' to about ``adaptive_tolerance`` of the largest force.
-        Faster where the path is smooth over many samples; models with cables keep fixed
-        steps; ignores ``extrapolation`` (docs/model.md, 'Displacement control').
+        of the enhanced linear law are located before the path steps on. The drive's force
+        (``sum_k F_k U_k / max|U|``, the summed reaction of a uniform drive) agrees with the
+        fixed steps' to about ``adaptive_tolerance`` of its largest value; its shares among
+        the driven DOFs only to the Newton tolerance, as between fixed-step runs. Faster
+        where the path is smooth over many samples; models with cables keep fixed steps;
+        ignores ``extrapolation`` (docs/model.md, 'Displacement control').
     adaptive_tolerance : float, default 1e-9
-        The adaptive samples' estimated force error relative to the largest constraint force
-        of the path so far, in (0, 1e-4].
+        The adaptive samples' estimated error of the drive's force relative to its largest
+        value on the path so far, in (0, 1e-4].
     stop : callable, optional
         ``stop(load_factor, displacement) -> bool``, asked after every accepted increment
         (``displacement`` of shape (3N,)); True ends the path there (completed).
