@@ -11,13 +11,13 @@ Run: ``python benchmarks/adaptive_speed.py [--repeat 3]``.
 from __future__ import annotations
 
 import argparse
-import time
 
 import numpy as np
 
 from kresling import Design
 from kresling.analyses import BendingTester
 from kresling.analyses.snap_through import SnapThroughTester
+from solver_speed import best_time  # the same timing as the other benchmarks
 
 TABLE3 = [(10, 0.9, 15.0), (8, 0.8, 30.0), (8, 0.8, 15.0), (4, 0.7, 30.0)]
 
@@ -28,15 +28,6 @@ def make_tester(n, protocol, adaptive):
 
 def make_snap_tester(n, adaptive):
     return SnapThroughTester(n, adaptive=adaptive)
-
-
-def best(function, repeat):
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        result = function()
-        times.append(time.perf_counter() - start)
-    return min(times), result
 
 
 def main():
@@ -53,8 +44,8 @@ def main():
             fixed_tester = make_tester(n, protocol, False)
             adaptive_tester = make_tester(n, protocol, True)
             for state in (1, 0):
-                t_f, fixed = best(lambda: fixed_tester.run(design, state), args.repeat)
-                t_a, adaptive = best(lambda: adaptive_tester.run(design, state), args.repeat)
+                t_f, fixed = best_time(lambda: fixed_tester.run(design, state), args.repeat)
+                t_a, adaptive = best_time(lambda: adaptive_tester.run(design, state), args.repeat)
                 error = np.abs(adaptive.force - fixed.force).max() / np.abs(fixed.force).max()
                 print(f"{n:>3} {lam:>4g} {Lc:>4g} {protocol:>9} "
                       f"{'extended' if state else 'contracted':>10} {t_f * 1e3:>9.1f} "
@@ -69,8 +60,8 @@ def main():
     for n, lam, Lc in TABLE3:
         design = Design(n, lam, Lc)
         fixed_tester, adaptive_tester = make_snap_tester(n, False), make_snap_tester(n, True)
-        t_f, fixed = best(lambda: fixed_tester.run(design), args.repeat)
-        t_a, adaptive = best(lambda: adaptive_tester.run(design), args.repeat)
+        t_f, fixed = best_time(lambda: fixed_tester.run(design), args.repeat)
+        t_a, adaptive = best_time(lambda: adaptive_tester.run(design), args.repeat)
         f, a = np.asarray(fixed.force), np.asarray(adaptive.force)
         error = np.abs(a - f).max() / np.abs(f).max() if len(a) == len(f) else float("nan")
         print(f"{n:>3} {lam:>4g} {Lc:>4g} {t_f * 1e3:>9.1f} {t_a * 1e3:>11.1f} {t_f / t_a:>8.2f} "

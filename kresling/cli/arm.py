@@ -10,7 +10,9 @@ from __future__ import annotations
 
 import sys
 
+from kresling.arm.structure import THESIS_DESIGN
 from kresling.cli._output import check_output_file, print_json, print_table
+from kresling.cli.design import add_design_arguments
 
 
 def register(subparsers) -> None:
@@ -24,13 +26,7 @@ def register(subparsers) -> None:
                     "forces in N.",
     )
     design = parser.add_argument_group("the cell (default: the thesis's optimum)")
-    design.add_argument("--n", type=int, default=10,
-                        help="sides of the polygon, a count (default 10)")
-    design.add_argument("--lam", type=float, default=0.9,
-                        help="angle ratio, dimensionless (default 0.9)")
-    design.add_argument("--Lc", type=float, default=15.0,
-                        help="contracted height [mm] (default 15)")
-    design.add_argument("--R", type=float, default=30.0, help="circumradius [mm] (default 30)")
+    add_design_arguments(design, defaults=THESIS_DESIGN, chirality=False)
     arm = parser.add_argument_group("the arm")
     arm.add_argument("--modules", type=int, help="number of modules (default: the "
                      "configuration's length, or 3)")

@@ -29,16 +29,25 @@ _ROWS = (
 )
 
 
-def add_design_arguments(parser) -> None:
-    """The design variables every design-based subcommand takes."""
-    parser.add_argument("--n", type=int, required=True,
-                        help="sides of the base polygon, a count (>= 3)")
-    parser.add_argument("--lam", type=float, required=True,
-                        help="angle ratio lambda, dimensionless: 0.5 < lam < 1")
-    parser.add_argument("--Lc", type=float, required=True, help="contracted height [mm], >= 0")
+def add_design_arguments(parser, defaults=None, chirality=True) -> None:
+    """The design variables every design-based subcommand takes.
+
+    ``defaults``, ``(n, lam, Lc, ...)``, makes them optional with those values (the arm's
+    subcommands default to the thesis's optimum); without it they are required. The
+    handedness is left out with ``chirality=False`` (the arm alternates it cell by cell)."""
+    variables = (("--n", int, "sides of the base polygon, a count (>= 3)"),
+                 ("--lam", float, "angle ratio lambda, dimensionless: 0.5 < lam < 1"),
+                 ("--Lc", float, "contracted height [mm], >= 0"))
+    for k, (name, kind, text) in enumerate(variables):
+        if defaults is None:
+            parser.add_argument(name, type=kind, required=True, help=text)
+        else:
+            parser.add_argument(name, type=kind, default=defaults[k],
+                                help=f"{text} (default {defaults[k]:g})")
     parser.add_argument("--R", type=float, default=30.0, help="circumradius [mm] (default 30)")
-    parser.add_argument("--chirality", type=int, default=1, choices=(1, -1),
-                        help="handedness, +1 or -1 (default +1)")
+    if chirality:
+        parser.add_argument("--chirality", type=int, default=1, choices=(1, -1),
+                            help="handedness, +1 or -1 (default +1)")
 
 
 def design_from_args(args) -> Design:

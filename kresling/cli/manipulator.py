@@ -7,9 +7,11 @@ import math
 import sys
 
 from kresling.cli._output import degrees, print_json, print_table
+from kresling.cli.design import add_design_arguments
 from kresling.geometry import Design
 from kresling.manipulator import (FRAMES, Manipulator, TendonDrive, configuration_name,
                                   forward_kinematics, inverse_kinematics, protocol_tendon_lengths)
+from kresling.manipulator.model import THESIS_CELL
 
 
 def register(subparsers) -> None:
@@ -36,13 +38,7 @@ def register(subparsers) -> None:
     parser.add_argument("--modules", type=int, default=None,
                         help="number of modules, each two cells (default: the length of "
                              "--config)")
-    parser.add_argument("--n", type=int, default=10,
-                        help="cell polygon sides, a count (default 10)")
-    parser.add_argument("--lam", type=float, default=0.9,
-                        help="cell angle ratio, dimensionless (default 0.9)")
-    parser.add_argument("--Lc", type=float, default=15.0,
-                        help="cell contracted height [mm] (default 15)")
-    parser.add_argument("--R", type=float, default=30.0, help="cell circumradius [mm] (default 30)")
+    add_design_arguments(parser, defaults=THESIS_CELL, chirality=False)
     parser.add_argument("--d", type=float, default=32.0, help="tendon radius [mm] (default 32)")
     parser.add_argument("--N", type=int, default=1,
                         help="tendon segments per module, a count (default 1)")

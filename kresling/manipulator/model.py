@@ -25,12 +25,12 @@ __all__ = ["Manipulator", "parse_configuration", "configuration_name", "all_conf
 #: Frame conventions of a flexible module's end frame (see :class:`Manipulator`).
 FRAMES = ("twist_free", "jones")
 
-# The thesis's optimal cell (section 3.5): n = 10, lambda = 0.9, Lc = 15 mm, R = 30 mm.
-_THESIS_CELL = (10, 0.9, 15.0, 30.0)
+#: The thesis's optimal cell (section 3.5), (n, lam, Lc, R): the default module cell.
+THESIS_CELL = (10, 0.9, 15.0, 30.0)
 
 
 def _thesis_design() -> Design:
-    n, lam, Lc, R = _THESIS_CELL
+    n, lam, Lc, R = THESIS_CELL
     return Design(n, lam, Lc, R)
 
 
