@@ -227,14 +227,14 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
     check_interrupt();
     // The increment's end: a bisection towards a known event, else the error estimate's
     // size, snapped to a sample within a millionth of the spacing (so that a sample is not
-    // left a sliver away from a converged point). The first increment, which has no error
-    // estimate, ends at the first sample at the latest.
+    // left a sliver away from a converged point). An increment with no error estimate (the
+    // first, the first past an event) ends at the next sample at the latest.
     double t1;
     const bool locating = event_end < kInfinity;
     if (locating) {
       t1 = (event_end - a.t <= event_width) ? event_end : a.t + 0.5 * (event_end - a.t);
     } else {
-      t1 = std::min(1.0, a.t + (previous.t < 0.0 ? std::min(h, spacing) : h));
+      t1 = previous.t < 0.0 ? std::min(a.t + h, sample_at(next)) : std::min(1.0, a.t + h);
       const double k = std::round(t1 * steps);
       if (std::abs(t1 - k * spacing) < 1e-6 * spacing) t1 = sample_at(static_cast<int>(k));
     }
@@ -372,7 +372,17 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
     if (next <= steps) h = std::max(h, sample_at(next) - b.t);  // to the next sample at least
     h = std::max(h, smallest);
     if (event_end <= b.t) event_end = kInfinity;
+    // Across an event (a law kink, a stability change) the path's derivatives jump: a cubic
+    // through points on either side, extrapolated, misses by the jump times the length (it
+    // sent Newton to 25 iterations and halvings after every kink). The path goes on from b
+    // alone (linear predictor, its one-sided tangent), as from the start. So it does after
+    // an increment much shorter than the next (the end of a location): a cubic through two
+    // close points, extrapolated far, magnifies their tangents' errors (the Newton
+    // tolerance's) by the ratio of the lengths squared.
+    const bool crossed = b.negative != a.negative || b.pieces != a.pieces;
+    const bool too_close = 8.0 * (b.t - a.t) < h;
     previous = std::move(a);
+    if (crossed || too_close) previous.t = -1.0;
     a = std::move(b);
   }
   result.completed = true;
