@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,55 @@ std::vector<signed char> law_pieces(const model::Model& model, const VectorX& u)
     pieces[h] = theta < hinge.law.theta1 ? -1 : theta > hinge.law.theta2 ? 1 : 0;
   }
   return pieces;
+}
+
+// Where along the path, between a converged point `a` and a converged `e` past an event,
+// the first hinge whose law piece differs between them reaches the limit in between: for
+// each such hinge a Newton step on theta(t) = limit from each end (exact dtheta/dt there:
+// its gradient times the path tangent; the law's M and dM/dtheta are continuous at its
+// limits, so theta(t) is smooth to second order across), the one from the nearer end.
+// NaN when the event is a stability change or no estimate lies in (a.t, e.t).
+double predicted_kink(const model::Model& model, const PathPoint& a, const PathPoint& e) {
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  if (a.negative != e.negative || a.pieces.size() != e.pieces.size()) return none;
+  const NodeMatrix& X = model.nodes();
+  // theta - limit and its rate at p for hinge h.
+  auto offset = [&](const PathPoint& p, const model::Hinge& hinge, double limit) {
+    auto at = [&](Index node) -> Vector3 {
+      return X.row(node).transpose() + p.u.segment<3>(3 * node);
+    };
+    const auto& n = hinge.nodes;
+    const elements::DihedralDerivatives d = elements::dihedral_angle_derivatives(
+        at(n[0]), at(n[1]), at(n[2]), at(n[3]), /*with_hessian=*/false);
+    double rate = 0.0;
+    for (int j = 0; j < 4; ++j) {
+      rate += d.gradient.segment<3>(3 * j).dot(p.velocity.segment<3>(3 * n[j]));
+    }
+    return std::make_pair(d.angle - limit, rate);
+  };
+  double first = none;
+  for (std::size_t h = 0; h < a.pieces.size(); ++h) {
+    const int from = a.pieces[h], to = e.pieces[h];
+    if (from == to) continue;
+    const model::Hinge& hinge = model.hinges()[h];
+    // The limit next to a's piece on e's side.
+    const double limit = to > from ? (from < 0 ? hinge.law.theta1 : hinge.law.theta2)
+                                   : (from > 0 ? hinge.law.theta2 : hinge.law.theta1);
+    const auto [ga, ra] = offset(a, hinge, limit);
+    const auto [ge, re] = offset(e, hinge, limit);
+    const double from_a = a.t - ga / ra, from_e = e.t - ge / re;
+    const bool a_ok = from_a > a.t && from_a < e.t, e_ok = from_e > a.t && from_e < e.t;
+    double t = none;
+    if (a_ok && e_ok) {
+      t = (from_a - a.t <= e.t - from_e) ? from_a : from_e;
+    } else if (a_ok) {
+      t = from_a;
+    } else if (e_ok) {
+      t = from_e;
+    }
+    if (std::isfinite(t) && !(t >= first)) first = t;  // the smallest (first is NaN at first)
+  }
+  return first;
 }
 
 // The cubic Hermite curve through (ta, ya, da) and (tb, yb, db) (values and derivatives)
@@ -221,6 +271,8 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
 
   double h = spacing;            // the next increment by the error estimate
   double event_end = kInfinity;  // an event (stability change, law kink) lies in (a.t, this]
+  PathPoint event_point;         // the converged point there
+  int predictions = 0;           // aimed location steps towards the present event
   int next = 1;                  // the next sample to record
   std::string first_failure;     // why the increment from a failed at full size
   while (next <= steps) {
@@ -231,24 +283,49 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
     // first, the first past an event) ends at the next sample at the latest.
     double t1;
     const bool locating = event_end < kInfinity;
-    if (locating) {
-      t1 = (event_end - a.t <= event_width) ? event_end : a.t + 0.5 * (event_end - a.t);
+    // Located: the event's converged point is within the width, and is the increment's end.
+    const bool located = locating && event_end - a.t <= event_width;
+    if (located) {
+      t1 = event_end;
+    } else if (locating) {
+      // A law kink: aimed at just past (or before) the predicted crossing, on the side away
+      // from the nearer end of the bracket, so that the next step closes it to the width
+      // (two solves per kink where bisection from a few spacings takes ~12). Bisection for
+      // a stability change, or when four aimed steps have not closed it.
+      t1 = a.t + 0.5 * (event_end - a.t);
+      const double kink = predictions < 4 ? predicted_kink(model, a, event_point)
+                                          : std::numeric_limits<double>::quiet_NaN();
+      if (std::isfinite(kink)) {
+        const double aim = kink - a.t <= event_end - kink ? kink + 0.4 * event_width
+                                                          : kink - 0.4 * event_width;
+        if (aim > a.t + 0.01 * event_width && aim < event_end - 0.01 * event_width) {
+          t1 = aim;
+          ++predictions;
+        }
+      }
     } else {
       t1 = previous.t < 0.0 ? std::min(a.t + h, sample_at(next)) : std::min(1.0, a.t + h);
       const double k = std::round(t1 * steps);
       if (std::abs(t1 - k * spacing) < 1e-6 * spacing) t1 = sample_at(static_cast<int>(k));
     }
-    ++result.attempted_increments;
     PathPoint b;
-    b.t = t1;
-    const VectorX predicted = previous.t >= 0.0 ? hermite_u(previous, a, t1)
-                                                : VectorX(a.u + (t1 - a.t) * a.velocity);
-    b.u = predicted;
-    b.outcome = newton(b.u, t1);
+    VectorX predicted;
+    if (located) {
+      b = std::move(event_point);  // converged and completed when the event was found
+      predicted = b.u;
+    } else {
+      ++result.attempted_increments;
+      b.t = t1;
+      predicted = previous.t >= 0.0 ? hermite_u(previous, a, t1)
+                                    : VectorX(a.u + (t1 - a.t) * a.velocity);
+      b.u = predicted;
+      b.outcome = newton(b.u, t1);
+    }
     // Past a bifurcation a predicted start may land on a less stable branch than the one
     // the last equilibrium leads on to (the branch the fixed-step path follows): retry from
     // there and keep the more stable.
-    if (accepted(b.outcome) && a.negative >= 0 && b.outcome.negative_eigenvalues > a.negative) {
+    if (!located && accepted(b.outcome) && a.negative >= 0 &&
+        b.outcome.negative_eigenvalues > a.negative) {
       VectorX plain = a.u;
       const NewtonOutcome retry = newton(plain, t1);
       if (accepted(retry) && retry.negative_eigenvalues >= 0 &&
@@ -257,13 +334,15 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
         b.outcome = retry;
       }
     }
-    bool ok = accepted(b.outcome) && complete(b);
+    bool ok = located || (accepted(b.outcome) && complete(b));
     const double length = t1 - a.t;
     double error_factor = 4.0;  // how far the increment may grow by the force error
     if (ok) {
       const bool event = b.negative != a.negative || b.pieces != a.pieces;
       if (event && length > event_width) {
+        if (!locating) predictions = 0;
         event_end = t1;  // locate it before stepping on
+        event_point = std::move(b);
         continue;
       }
       // The dense output's error, on the drive's force G = sum_k F_k U_k / max|U| (the
@@ -371,7 +450,12 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
     h = cut_short ? (factor < 1.0 ? std::min(h, length * factor) : h) : length * factor;
     if (next <= steps) h = std::max(h, sample_at(next) - b.t);  // to the next sample at least
     h = std::max(h, smallest);
-    if (event_end <= b.t) event_end = kInfinity;
+    // The bracket is closed at its end, or by a short step across the event (nothing left
+    // to locate between b and the event's point when their pieces and stability agree).
+    if (event_end <= b.t ||
+        (locating && b.negative == event_point.negative && b.pieces == event_point.pieces)) {
+      event_end = kInfinity;
+    }
     // Across an event (a law kink, a stability change) the path's derivatives jump: a cubic
     // through points on either side, extrapolated, misses by the jump times the length (it
     // sent Newton to 25 iterations and halvings after every kink). The path goes on from b
