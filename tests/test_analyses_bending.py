@@ -90,3 +90,17 @@ def test_bad_input(kwargs, message):
     args.update(kwargs)
     with pytest.raises(ValueError, match=message):
         bending_test(**args)
+
+
+def test_run_both_states_equals_run_in_each_state_bit_for_bit():
+    # The sweeps' one call per chunk: K_B and the iterations exactly as run() gives them;
+    # None for a design the core refuses (lam outside (0.5, 1)).
+    tester = BendingTester(6, "0.001rad")
+    designs = [(0.8, 20.0, 30.0), (0.4, 20.0, 30.0), (0.9, 15.0, 30.0)]
+    pairs = tester.run_both_states(designs)
+    assert pairs[1] is None
+    for (lam, Lc, R), pair in zip(designs[::2], pairs[::2]):
+        design = Design(6, lam, Lc, R)
+        extended, contracted = tester.run(design, 1), tester.run(design, 0)
+        assert pair == (extended.stiffness, contracted.stiffness,
+                        int(extended.iterations.sum() + contracted.iterations.sum()), [])

@@ -3,6 +3,7 @@ are rows, not crashes; bad input is refused."""
 
 import math
 from concurrent.futures import ThreadPoolExecutor
+from functools import partial
 
 import numpy as np
 import pytest
@@ -11,6 +12,9 @@ import sweep_fakes
 from kresling import Design
 from kresling.analyses import bending_stiffness, linear_bending_stiffness, snap_through
 from kresling.sweeps import METRICS, Analysis, Metric, design_grid, sweep
+from kresling.sweeps import metrics
+from kresling.sweeps.metrics import resolve_metrics
+from kresling.sweeps.worker import evaluate_design, make_plan, run_chunk
 
 GRID = design_grid(size=5)  # 5 x 5 x 4: the grid of the exactness checks
 VALUE_COLUMNS = ("kb_ratio", "kb_ext", "kb_con", "psi_ratio", "psi_ext", "psi_con")
@@ -153,3 +157,38 @@ def test_the_registry_pins_the_analyses_defaults():
 
     assert SNAP_STEPS == DEFAULT_STEPS
     assert METRICS["kb_ratio"].analysis.settings == {"protocol": "0.001rad", "cells": 4}
+
+
+def _same_row(got, expected):
+    """Rows equal except the seconds (NaN equal to NaN)."""
+    return [repr(v) for v in got[:-1]] == [repr(v) for v in expected[:-1]]
+
+
+def test_chunks_evaluate_exactly_as_single_designs_failures_included():
+    # run_chunk hands consecutive designs of one n to the bending analysis at once; each row
+    # must be evaluate_design's, bit for bit: a design the core refuses (lam outside (0.5,
+    # 1), Lc nearly flat) is rerun alone for its reason; psi_ratio runs design by design.
+    plan = make_plan(resolve_metrics(["kb_ratio", "psi_ratio"]))
+    chunk = [(0, 6, 20.0, 0.8, 30.0), (1, 6, 20.0, 0.4, 30.0), (2, 6, 1e-9, 0.8, 30.0),
+             (3, 6, 15.0, 0.9, 30.0), (4, 8, 30.0, 0.8, 30.0), (5, 6, 25.0, 0.75, 30.0)]
+    rows = run_chunk(plan, chunk)
+    assert [row[0] for row in rows] == [0, 1, 2, 3, 4, 5]
+    for row, (_index, n, Lc, lam, R) in zip(rows, chunk):
+        assert _same_row(row[1:], evaluate_design(plan, n, Lc, lam, R)), row
+    assert [row[-4] for row in rows] == ["ok", "failed", "failed", "ok", "ok", "ok"]
+    assert rows[1][-3].startswith("design: ValueError: lam = 0.4")
+
+
+def test_chunks_report_runs_that_stop_early_as_single_designs_do():
+    # Every increment rejected (reject_iterations=1): both runs stop at the first, partial.
+    analysis = Analysis("bending_one_iteration", METRICS["kb_ratio"].analysis.columns,
+                        partial(metrics._bending, ""),
+                        partial(metrics.make_tester, "BendingTester", protocol="0.001rad",
+                                reject_iterations=1, max_bisections=1),
+                        even_n=True, evaluate_chunk=partial(metrics._bending_chunk, ""))
+    plan = make_plan([Metric("kb_ratio", analysis, analysis.columns)])
+    chunk = [(0, 6, 20.0, 0.8, 30.0), (1, 6, 15.0, 0.9, 30.0)]
+    rows = run_chunk(plan, chunk)
+    for row, (_index, n, Lc, lam, R) in zip(rows, chunk):
+        assert row[-4] == "failed" and "extended: increment 1" in row[-3]
+        assert _same_row(row[1:], evaluate_design(plan, n, Lc, lam, R)), row

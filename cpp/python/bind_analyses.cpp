@@ -3,7 +3,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 #include "bindings.hpp"
 #include "kresling/analyses/arm_analysis.hpp"
@@ -276,7 +279,60 @@ void bind_analyses(py::module_& m) {
             }
             return r;
           },
-          py::arg("design"), py::arg("state"));
+          py::arg("design"), py::arg("state"))
+      .def(
+          "run_both_states",
+          [](analyses::BendingTest& test, const std::vector<std::array<double, 3>>& designs) {
+            // A sweep's chunk in one call, the GIL released throughout: per design (lam, Lc,
+            // R) the extended then the contracted run, exactly as two run() calls, keeping
+            // only what the K_B-ratio metric reads. A design whose construction or run throws
+            // (bad input) gets ok = false and is left to the caller to rerun alone, so that
+            // its error reads as it would there; an interrupt is not caught.
+            struct Pair {
+              bool ok = false;
+              double extended = 0.0, contracted = 0.0;
+              long long iterations = 0;
+              bool extended_completed = false, contracted_completed = false;
+              std::string extended_message, contracted_message;
+            };
+            std::vector<Pair> pairs(designs.size());
+            {
+              py::gil_scoped_release release;
+              for (std::size_t i = 0; i < designs.size(); ++i) {
+                Pair& p = pairs[i];
+                try {
+                  const Design design(test.n(), designs[i][2], designs[i][0], designs[i][1], 1);
+                  const analyses::BendingResult e = test.run(design, 1);
+                  const analyses::BendingResult c = test.run(design, 0);
+                  for (int k : e.iterations) p.iterations += k;
+                  for (int k : c.iterations) p.iterations += k;
+                  p.extended = e.stiffness, p.contracted = c.stiffness;
+                  p.extended_completed = e.completed, p.contracted_completed = c.completed;
+                  p.extended_message = e.message, p.contracted_message = c.message;
+                  p.ok = true;
+                } catch (const py::error_already_set&) {
+                  throw;  // Ctrl-C (the interrupt check): stop the chunk
+                } catch (const std::exception&) {
+                  p.ok = false;
+                }
+              }
+            }
+            py::list out;
+            for (const Pair& p : pairs) {
+              if (!p.ok) {
+                out.append(py::none());
+              } else {
+                out.append(py::make_tuple(p.extended, p.contracted, p.iterations,
+                                          p.extended_completed, p.extended_message,
+                                          p.contracted_completed, p.contracted_message));
+              }
+            }
+            return out;
+          },
+          py::arg("designs"),
+          "Per design (lam, Lc, R): (K_ext, K_con, iterations summed over both runs, "
+          "extended completed, its message, contracted completed, its message), or None "
+          "where the design or a run raised (rerun it alone for the error).");
 
   m.def(
       "bending_drive",

@@ -250,6 +250,41 @@ class BendingTester:
         return BendingResult._from_core(core, design=design, state=state,
                                         target_deflection=float(target))
 
+    def run_both_states(self, designs) -> list:
+        """K_B of many designs (this tester's n) in both states, in one call to the core.
+
+        What a sweep's K_B-ratio metric reads, without the full :class:`BendingResult` of
+        each run: the values are those of ``run(design, 1)`` and ``run(design, 0)``, bit for
+        bit, the per-design overhead of two calls and their results is saved, and the GIL
+        is released for the whole list.
+
+        Parameters
+        ----------
+        designs : sequence of (lam, Lc, R)
+            Angle ratio, contracted height [mm] and radius [mm] of each design.
+
+        Returns
+        -------
+        list
+            Per design ``(K_ext, K_con, iterations, failures)``: K_B of each state
+            [N*m/rad] (fitted to the converged increments if a run stopped early), Newton
+            iterations summed over both runs, and the runs that stopped early as
+            ``"extended: <why>"`` / ``"contracted: <why>"`` (empty if both completed);
+            ``None`` where the design or a run raised (call :meth:`run` on it for the error).
+        """
+        rows = [(float(lam), float(Lc), float(R)) for lam, Lc, R in designs]
+        out = []
+        for pair in self._core.run_both_states(rows):
+            if pair is None:
+                out.append(None)
+                continue
+            k_ext, k_con, iterations, ext_done, ext_message, con_done, con_message = pair
+            failures = [f"{name}: {message}" for name, done, message in
+                        (("extended", ext_done, ext_message),
+                         ("contracted", con_done, con_message)) if not done]
+            out.append((k_ext, k_con, int(iterations), failures))
+        return out
+
 
 def bending_test(design: Design, state, protocol="5mm", **options) -> BendingResult:
     """Run the three-point bending test on ``design`` in one state.

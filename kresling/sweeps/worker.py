@@ -97,12 +97,88 @@ def evaluate_design(plan: Plan, n: int, Lc: float, lam: float, R: float) -> tupl
 def run_chunk(plan: Plan, chunk) -> list:
     """Evaluate ``chunk``, a list of ``(index, n, Lc, lam, R)``.
 
+    Consecutive designs of one n go through the analyses that can evaluate many designs at
+    once (``Analysis.evaluate_chunk``: one call into the core instead of one per design and
+    state) and one by one through the others; the values are the same as
+    :func:`evaluate_design`'s. A design such an analysis could not take (its construction or
+    a run raised) is evaluated alone, so that its reason reads the same. The ``seconds`` of
+    a design evaluated in a group are the group's time shared equally, plus its own.
+
     Returns
     -------
     list of tuple
         ``(index, *evaluate_design(...))`` per design, in the chunk's order.
     """
-    return [(index, *evaluate_design(plan, n, Lc, lam, R)) for index, n, Lc, lam, R in chunk]
+    if not any(a.evaluate_chunk is not None for a in plan.analyses):
+        return [(index, *evaluate_design(plan, n, Lc, lam, R))
+                for index, n, Lc, lam, R in chunk]
+    out, start = [], 0
+    while start < len(chunk):
+        end = start + 1
+        while end < len(chunk) and chunk[end][1] == chunk[start][1]:
+            end += 1
+        out += _run_group(plan, chunk[start:end])
+        start = end
+    return out
+
+
+def _run_group(plan: Plan, group) -> list:
+    """:func:`run_chunk` for designs of one n."""
+    n = group[0][1]
+    start = time.perf_counter()
+    designs = [(n, Lc, lam, R) for _index, _n, Lc, lam, R in group]
+    batched = []  # per analysis: its evaluations, or None (evaluated design by design)
+    for analysis in plan.analyses:
+        evaluations = None
+        if analysis.evaluate_chunk is not None:
+            try:
+                evaluations = analysis.evaluate_chunk(_tester(analysis, n, plan.parameters),
+                                                      designs)
+            except Exception:  # noqa: BLE001 - every design is then evaluated alone
+                evaluations = [None] * len(group)
+        batched.append(evaluations)
+    shared = (time.perf_counter() - start) / len(group)
+    rows = []
+    for k, (index, _n, Lc, lam, R) in enumerate(group):
+        own = time.perf_counter()
+        row = _combine(plan, batched, k, n, Lc, lam, R)
+        if row is None:  # an analysis could not take it: alone, as evaluate_design would
+            rows.append((index, *evaluate_design(plan, n, Lc, lam, R)))
+            continue
+        rows.append((index, *row, shared + time.perf_counter() - own))
+    return rows
+
+
+def _combine(plan: Plan, batched: list, k: int, n: int, Lc: float, lam: float, R: float):
+    """Design ``k`` of a group as :func:`evaluate_design` reports it (without the seconds),
+    from the batched evaluations and the other analyses run here; None if a batched
+    analysis has no evaluation of it or its Design cannot be built."""
+    if any(evaluations is not None and evaluations[k] is None for evaluations in batched):
+        return None
+    values, failures, iterations, design = {}, [], 0, None
+    for analysis, evaluations in zip(plan.analyses, batched):
+        if evaluations is not None:
+            result = evaluations[k]
+        else:
+            try:
+                if design is None:
+                    design = Design(n, lam, Lc, R)
+            except Exception:  # noqa: BLE001 - evaluate_design reports it
+                return None
+            try:
+                tester = _tester(analysis, n, plan.parameters) \
+                    if analysis.make_tester is not None else None
+                result = analysis.evaluate(tester, design)
+            except Exception as error:  # noqa: BLE001 - recorded, as in evaluate_design
+                failures.append(f"{analysis.name}: {_describe(error)}")
+                continue
+        values.update(result.values)
+        iterations += result.iterations
+        if result.failure:
+            failures.append(f"{analysis.name}: {result.failure}")
+    row = [float(values.get(column, math.nan)) for column in plan.columns]
+    reason = " | ".join(failures).replace("\n", " ").replace("\r", " ")
+    return (*row, FAILED if failures else OK, reason, iterations)
 
 
 def _describe(error: BaseException) -> str:

@@ -62,6 +62,8 @@ class BendingTest {
   BendingResult run(const geometry::Design& design, int state);
 
   const BendingOptions& options() const { return options_; }
+  /// The polygon size the test is for.
+  int n() const { return builder_.n(); }
 
  private:
   BendingOptions options_;
