@@ -9,12 +9,14 @@
 // through a soft vertical spring bar (Ogden law, axial force A C0/4 (s^4 - 1), monotone in
 // the stretch s) on top of the apex, so that the loaded point snaps back.
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
 
 #include "kresling/assembly/assembler.hpp"
+#include "kresling/elements/dihedral.hpp"
 #include "kresling/solvers/displacement_control.hpp"
 #include "kresling/solvers/force_control.hpp"
 #include "kresling/solvers/newton.hpp"
@@ -246,4 +248,53 @@ TEST(DisplacementControl, KeepsItsWorkspaceAndNoModelBetweenSolves) {
       EXPECT_EQ(r.steps[k].constraint_force[0], fresh.steps[k].constraint_force[0]);
     }
   }
+}
+
+TEST(DisplacementControl, AdaptiveLocatesALawKinkInAFewSolves) {
+  // One hinge of the enhanced linear law: a fixed triangle (0, 1, 2) and a wing node 3 held
+  // by two stiff bars to the axis 0 -> 1, driven 3 mm down so that the hinge opens 0.39 rad,
+  // past its limit 0.3 rad from rest (at 0.75 of the motion). The adaptive path must agree
+  // with the fixed steps' Newton-converged samples to 1e-8 of the largest force (its
+  // stated accuracy, with the 1e-9 tolerance) and locate the kink by aimed steps. Its force
+  // error keeps the increments at one sample here, so the attempts beyond one per sample are
+  // the start, the location and the step on to the next sample: 4 (two aimed solves); a
+  // bisection from one sample to 1e-3 of one needs 10 halvings.
+  const double alpha = 0.5;
+  NodeMatrix X(4, 3);
+  X << 0, 0, 0, 10, 0, 0, 5, -8, 0, 5, 8 * std::cos(alpha), 8 * std::sin(alpha);
+  const Vector3 a = X.row(0), b = X.row(1), c = X.row(2), d = X.row(3);
+  const double rest = elements::dihedral_angle(a, b, c, d);
+  const elements::BarLaw svk{BarLawKind::Linear, 1e4};
+  std::vector<model::Bar> bars = {{{0, 3}, 1.0, (d - a).norm(), svk},
+                                  {{1, 3}, 1.0, (d - b).norm(), svk}};
+  elements::SpringLaw law;
+  law.theta1 = rest - 0.3;
+  law.theta2 = rest + 0.3;
+  std::vector<model::Hinge> hinges = {{{0, 1, 2, 3}, 1.0, rest, 10.0, law}};
+  const model::Model m(X, bars, hinges, {1, 1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 0});
+  VectorX prescribed = VectorX::Zero(m.num_dofs());
+  prescribed[11] = -3.0;
+  const int steps = 20;
+  const auto fixed = solvers::solve_displacement_control(m, prescribed, steps);
+  solvers::DisplacementControlOptions options;
+  options.adaptive = true;
+  const auto adaptive = solvers::solve_displacement_control(m, prescribed, steps, options);
+  ASSERT_TRUE(fixed.completed) << fixed.message;
+  ASSERT_TRUE(adaptive.completed) << adaptive.message;
+  ASSERT_EQ(adaptive.steps.size(), fixed.steps.size());
+  double largest = 0.0;
+  for (const auto& step : fixed.steps) {
+    largest = std::max(largest, std::abs(step.constraint_force[0]));
+  }
+  for (std::size_t k = 0; k < fixed.steps.size(); ++k) {
+    EXPECT_NEAR(adaptive.steps[k].constraint_force[0], fixed.steps[k].constraint_force[0],
+                1e-8 * largest)
+        << "sample " << k + 1;
+  }
+  // The kink is crossed: the last sample's hinge is past the limit.
+  const VectorX& u = fixed.steps.back().displacement;
+  const Vector3 d_end = d + u.segment<3>(9);
+  const double theta_end = elements::dihedral_angle(a, b, c, d_end);
+  EXPECT_TRUE(theta_end < law.theta1 || theta_end > law.theta2) << theta_end;
+  EXPECT_LE(adaptive.attempted_increments, steps + 6);
 }
