@@ -78,20 +78,10 @@ def evaluate_design(plan: Plan, n: int, Lc: float, lam: float, R: float) -> tupl
     except Exception as error:  # noqa: BLE001 - a design that cannot be built is a failure
         design, failures = None, [f"design: {_describe(error)}"]
     for analysis in plan.analyses if design is not None else ():
-        try:
-            tester = _tester(analysis, n, plan.parameters) \
-                if analysis.make_tester is not None else None
-            result = analysis.evaluate(tester, design)
-        except Exception as error:  # noqa: BLE001 - recorded in the table, the sweep goes on
-            failures.append(f"{analysis.name}: {_describe(error)}")
-            continue
-        values.update(result.values)
-        iterations += result.iterations
-        if result.failure:
-            failures.append(f"{analysis.name}: {result.failure}")
-    row = [float(values.get(column, math.nan)) for column in plan.columns]
-    reason = " | ".join(failures).replace("\n", " ").replace("\r", " ")
-    return (*row, FAILED if failures else OK, reason, iterations, time.perf_counter() - start)
+        result = _evaluate(plan, analysis, n, design, failures)
+        if result is not None:
+            iterations += _collect(analysis, result, values, failures)
+    return (*_row(plan, values, failures, iterations), time.perf_counter() - start)
 
 
 def run_chunk(plan: Plan, chunk) -> list:
@@ -165,17 +155,35 @@ def _combine(plan: Plan, batched: list, k: int, n: int, Lc: float, lam: float, R
                     design = Design(n, lam, Lc, R)
             except Exception:  # noqa: BLE001 - evaluate_design reports it
                 return None
-            try:
-                tester = _tester(analysis, n, plan.parameters) \
-                    if analysis.make_tester is not None else None
-                result = analysis.evaluate(tester, design)
-            except Exception as error:  # noqa: BLE001 - recorded, as in evaluate_design
-                failures.append(f"{analysis.name}: {_describe(error)}")
+            result = _evaluate(plan, analysis, n, design, failures)
+            if result is None:
                 continue
-        values.update(result.values)
-        iterations += result.iterations
-        if result.failure:
-            failures.append(f"{analysis.name}: {result.failure}")
+        iterations += _collect(analysis, result, values, failures)
+    return _row(plan, values, failures, iterations)
+
+
+def _evaluate(plan: Plan, analysis, n: int, design: Design, failures: list):
+    """One analysis of one design; None, with the failure appended, if it raised (the
+    table records it and the sweep goes on)."""
+    try:
+        tester = _tester(analysis, n, plan.parameters) \
+            if analysis.make_tester is not None else None
+        return analysis.evaluate(tester, design)
+    except Exception as error:  # noqa: BLE001 - recorded in the table
+        failures.append(f"{analysis.name}: {_describe(error)}")
+        return None
+
+
+def _collect(analysis, result, values: dict, failures: list) -> int:
+    """Add an evaluation's values and failure to the design's; its Newton iterations."""
+    values.update(result.values)
+    if result.failure:
+        failures.append(f"{analysis.name}: {result.failure}")
+    return result.iterations
+
+
+def _row(plan: Plan, values: dict, failures: list, iterations: int) -> tuple:
+    """The values of ``plan.columns``, status, one-line reason and iterations of a design."""
     row = [float(values.get(column, math.nan)) for column in plan.columns]
     reason = " | ".join(failures).replace("\n", " ").replace("\r", " ")
     return (*row, FAILED if failures else OK, reason, iterations)
