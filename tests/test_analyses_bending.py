@@ -104,3 +104,24 @@ def test_run_both_states_equals_run_in_each_state_bit_for_bit():
         extended, contracted = tester.run(design, 1), tester.run(design, 0)
         assert pair == (extended.stiffness, contracted.stiffness,
                         int(extended.iterations.sum() + contracted.iterations.sum()), [])
+
+
+def test_the_5mm_protocol_is_adaptive_by_default_and_falls_back_to_fixed_steps():
+    from kresling.analyses.bending import adaptive_by_default
+    assert adaptive_by_default("5mm", 2) and not adaptive_by_default("5mm", 0)
+    assert not adaptive_by_default("0.001rad", 2)
+    # The optimum: adaptive by default, so not bit for bit the fixed steps' K_B, but within the
+    # adaptive samples' accuracy (1e-8 of the largest force; K_B is a fit to those samples).
+    optimum = Design(10, 0.9, 15)
+    default, fixed = BendingTester(10).run(optimum, 0), \
+        BendingTester(10, adaptive=False).run(optimum, 0)
+    assert default.stiffness != fixed.stiffness
+    assert default.stiffness == pytest.approx(fixed.stiffness, rel=1e-8)
+    # The adaptive increments stop at 83 % of this specimen's contracted travel; the test runs
+    # it again in fixed steps, so its result is the fixed steps' own, bit for bit, and complete.
+    tall = Design(40, 0.9, 15)
+    default, fixed = BendingTester(40).run(tall, 0), BendingTester(40, adaptive=False).run(tall, 0)
+    assert default.completed and fixed.completed and default.stiffness == fixed.stiffness
+    (k_ext, k_con, _, failures), = BendingTester(40).run_both_states([(0.9, 15.0, 30.0)])
+    assert not failures and k_con == fixed.stiffness
+    assert k_ext == BendingTester(40).run(tall, 1).stiffness

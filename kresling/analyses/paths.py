@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from kresling.analyses.bending import PROTOCOLS, require_even_n
+from kresling.analyses.bending import PROTOCOLS, adaptive_by_default, require_even_n
 from kresling.analyses.snap_through import DEFAULT_STEPS
 from kresling.geometry import Design, state_index
 from kresling.model.kresling_specimen import kresling_specimen
@@ -137,9 +137,10 @@ class SnapThroughPath:
 
 def bending_path(design: Design, state, protocol="5mm", *, deflection=None,
                  deflection_angle=None, steps=None, cells=4, parameters=None,
-                 extrapolation=2, **solver) -> BendingPath:
+                 extrapolation=2, adaptive=None, **solver) -> BendingPath:
     """The three-point bending test of :func:`~kresling.analyses.bending_test`, every node
-    at every increment.
+    at every increment (the same path: adaptive increments where the bending test uses them,
+    fixed steps where those could not finish it).
 
     Parameters
     ----------
@@ -147,7 +148,7 @@ def bending_path(design: Design, state, protocol="5mm", *, deflection=None,
     state : {0, 1, "contracted", "extended"}
     protocol : {"5mm", "0.001rad"}
         The presets of :data:`kresling.analyses.PROTOCOLS`.
-    deflection, deflection_angle, steps, cells, parameters, extrapolation, **solver
+    deflection, deflection_angle, steps, cells, parameters, extrapolation, adaptive, **solver
         As for :class:`~kresling.analyses.BendingTester`.
 
     Returns
@@ -205,8 +206,13 @@ def bending_path(design: Design, state, protocol="5mm", *, deflection=None,
     specimen = kresling_specimen(design, [state] * cells, parameters=parameters, fixed=fixed)
     prescribed = np.zeros(fixed.shape)
     prescribed[specimen.level_nodes(cells // 2), 1] = -drive
+    if adaptive is None:
+        adaptive = adaptive_by_default(protocol, extrapolation)
     path = solve_displacement_control(specimen.model, prescribed, settings["steps"],
-                                      extrapolation=extrapolation, **solver)
+                                      extrapolation=extrapolation, adaptive=adaptive, **solver)
+    if adaptive and not path.completed:  # as the bending test does
+        path = solve_displacement_control(specimen.model, prescribed, settings["steps"],
+                                          extrapolation=extrapolation, **solver)
     centre_y = 3 * specimen.centre(cells // 2) + 1
     deflection_mm = -np.asarray(path.displacement, dtype=float).reshape(
         -1, specimen.model.num_dofs)[:, centre_y]
