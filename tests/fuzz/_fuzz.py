@@ -95,3 +95,15 @@ def path_ok(path) -> None:
     """A solver's PathResult: finite numbers; not completed means it says why."""
     finite(path.load_factor, path.displacement, path.constraint_force, path.energy)
     assert path.completed or path.message.strip(), "stopped without a message"
+
+
+def mutated(data: bytes, cuts, insertions) -> bytes:
+    """``data`` with bytes cut out and words spliced in at drawn positions."""
+    data = bytearray(data)
+    for position, length in cuts:
+        position %= max(len(data), 1)
+        del data[position:position + length]
+    for position, word in insertions:
+        position %= max(len(data) + 1, 1)
+        data[position:position] = word
+    return bytes(data)

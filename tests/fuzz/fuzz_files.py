@@ -9,7 +9,7 @@ from pathlib import Path
 from hypothesis import given
 from hypothesis import strategies as st
 
-from _fuzz import finite, fuzz
+from _fuzz import finite, fuzz, mutated
 from kresling import data
 from kresling.fits import (fit_bending_files, fit_crease_file, read_bending_trial,
                            read_machine_record)
@@ -24,17 +24,6 @@ WORDS = [b"", b",", b";", b"\t", b"\"", b"\n", b"\r", b"\x00", b"\xff\xfe", b"na
          b"-1e999", b"1e308", b"#", b"# state: sideways\n", b"# module_length: -3 mm\n",
          b"9" * 300, b"x" * 140_000, b"force (lbf)", b"displacement (furlong)", b"\xc3(",
          b"101,0,1,0", b"../secret.csv", b"/etc/passwd", b"2,2,2,2,2,2,2"]
-
-
-def mutated(data: bytes, cuts, insertions) -> bytes:
-    data = bytearray(data)
-    for position, length in cuts:
-        position %= max(len(data), 1)
-        del data[position:position + length]
-    for position, word in insertions:
-        position %= max(len(data) + 1, 1)
-        data[position:position] = word
-    return bytes(data)
 
 
 mutations = st.tuples(

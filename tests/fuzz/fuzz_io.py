@@ -10,7 +10,7 @@ import numpy as np
 from hypothesis import given
 from hypothesis import strategies as st
 
-from _fuzz import attempt, edgy_floats, finite, fuzz, junk, mostly
+from _fuzz import attempt, edgy_floats, finite, fuzz, junk, mostly, mutated
 from kresling.io import pattern_from_arrays, pattern_from_fold, read_fold, read_obj, read_pattern
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "patterns"
@@ -22,18 +22,6 @@ WORDS = [b"", b"0", b"-1", b"1e308", b"1e999", b"nan", b"inf", b"null", b"true",
          b"\x00", b"\xff\xfe", b"\n", b"9" * 400, b"\"faces_vertices\": [[0, 0, 0]]",
          b"\"vertices_coords\": [[1e400, 0]]", b"\"edges_assignment\": [\"Q\"]",
          b"\"file_frames\": [{\"frame_parent\": 5}]"]
-
-
-def mutated(data: bytes, cuts, insertions) -> bytes:
-    """``data`` with bytes cut out and words spliced in at drawn positions."""
-    data = bytearray(data)
-    for position, length in cuts:
-        position %= max(len(data), 1)
-        del data[position:position + length]
-    for position, word in insertions:
-        position %= max(len(data) + 1, 1)
-        data[position:position] = word
-    return bytes(data)
 
 
 def check_read(data: bytes, suffix: str, reader) -> None:
