@@ -19,6 +19,7 @@ import numpy as np
 
 from kresling import _core
 from kresling._validation import as_finite_real, as_integer, show
+from kresling.analyses.travel import travel_fraction
 from kresling.geometry import Design, as_design, state_index
 from kresling.model.kresling_specimen import SpecimenParameters
 from kresling.solvers.displacement_control import displacement_control_options
@@ -134,12 +135,8 @@ class BendingResult:
     def travel_fraction(self) -> float:
         """Fraction of the drive's travel reached (1 for a completed run; 0 if no increment
         converged)."""
-        if self.completed:
-            return 1.0
-        if not (len(self.deflection) and np.isfinite(self.target_deflection)
-                and self.target_deflection > 0):
-            return 0.0
-        return float(min(1.0, abs(self.deflection[-1]) / self.target_deflection))
+        reached = abs(self.deflection[-1]) if len(self.deflection) else None
+        return travel_fraction(self.completed, reached, self.target_deflection)
 
     @property
     def state_name(self) -> str:

@@ -21,6 +21,7 @@ import numpy as np
 
 from kresling.analyses.bending import PROTOCOLS, adaptive_by_default, require_even_n
 from kresling.analyses.snap_through import DEFAULT_STEPS
+from kresling.analyses.travel import travel_fraction
 from kresling.geometry import Design, state_index
 from kresling.model.kresling_specimen import kresling_specimen
 from kresling.solvers.displacement_control import solve_displacement_control
@@ -83,12 +84,8 @@ class BendingPath:
         """Fraction of the drive's travel reached (1 for a completed path; 0 if no increment
         converged or the travel is not known), as
         :attr:`kresling.analyses.BendingResult.travel_fraction`."""
-        if not self.partial:
-            return 1.0
-        if not (len(self.deflection) and np.isfinite(self.target_deflection)
-                and self.target_deflection > 0):
-            return 0.0
-        return float(min(1.0, abs(self.deflection[-1]) / self.target_deflection))
+        reached = abs(self.deflection[-1]) if len(self.deflection) else None
+        return travel_fraction(not self.partial, reached, self.target_deflection)
 
 
 @dataclass(frozen=True)
@@ -127,12 +124,8 @@ class SnapThroughPath:
         """Fraction of the travel ``Le - Lc`` reached (1 when completed, 0 if no increment
         converged), as :attr:`kresling.analyses.SnapThroughResult.travel_fraction`."""
         design = self.specimen.design
-        travel = design.height(1) - design.height(0)
-        if not self.partial:
-            return 1.0
-        if not (len(self.travel) and travel > 0):
-            return 0.0
-        return float(min(1.0, self.travel[-1] / travel))
+        reached = self.travel[-1] if len(self.travel) else None
+        return travel_fraction(not self.partial, reached, design.height(1) - design.height(0))
 
 
 def bending_path(design: Design, state, protocol="5mm", *, deflection=None,

@@ -40,6 +40,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from kresling import _core
+from kresling.analyses.travel import travel_fraction
 from kresling.geometry import Design, as_design
 from kresling.model.kresling_specimen import SpecimenParameters
 from kresling._validation import as_integer
@@ -143,10 +144,9 @@ class SnapThroughResult:
     @property
     def travel_fraction(self) -> float:
         """Fraction of the travel ``Le - Lc`` the drive reached (1 when completed)."""
-        travel = self.extended_height - self.contracted_height
-        if self.completed or not len(self.displacement) or not travel > 0:
-            return 1.0 if self.completed else 0.0
-        return float(min(1.0, self.displacement[-1] / travel))
+        reached = self.displacement[-1] if len(self.displacement) else None
+        return travel_fraction(self.completed, reached,
+                               self.extended_height - self.contracted_height)
 
     @property
     def increments_to_peak(self) -> float:
