@@ -65,6 +65,11 @@ _OCTAVE_OPTIONS = {
                         "@(Ex)Ogden(Ex,5e3),'Abar',0.1,'Kf',1e-3,'RotSprFold',"
                         "@(he,h0,kf,L0)EnhancedLinear(he,h0,kf,L0,45,315),'LoadType','Force',"
                         "'InitialLoadFactor',0.032,'MaxIcr',180);",
+    # Displacement loading: the driver's Load row [59, 0, -30, 0] is the total prescribed
+    # motion (load.csv holds it), taken in DispStep steps by MERLIN2's step rule.
+    "gmiura_pointload": "opt = struct('ModelType','N5B8','MaterCalib','auto','ModElastic',1e3,"
+                        "'Poisson',0.3,'Thickness',0.25,'LScaleFactor',2,"
+                        "'LoadType','Displacement','DispStep',200);",
 }
 
 
