@@ -97,6 +97,12 @@ StopRule stop_rule(const py::object& callable) {
 
 }  // namespace
 
+// 0 auto, 1 dense, 2 simplicial (CHOLMOD), 3 supernodal (Eigen kernels); checked in Python.
+CholeskyChoice cholesky_choice(int v) {
+  if (v < 0 || v > 3) throw std::invalid_argument("cholesky must be 0, 1, 2 or 3");
+  return static_cast<CholeskyChoice>(v);
+}
+
 void bind_solvers(py::module_& m) {
   bind_path_result(m);
   // The documented bounds of the solvers' controls (kresling/solvers/limits.hpp).
@@ -112,6 +118,10 @@ void bind_solvers(py::module_& m) {
       .def_property(
           "max_iterations", [](const DisplacementControlOptions& o) { return o.newton.max_iterations; },
           [](DisplacementControlOptions& o, int v) { o.newton.max_iterations = v; })
+      .def_property(
+          "cholesky",
+          [](const DisplacementControlOptions& o) { return static_cast<int>(o.newton.cholesky); },
+          [](DisplacementControlOptions& o, int v) { o.newton.cholesky = cholesky_choice(v); })
       .def_readwrite("reject_iterations", &DisplacementControlOptions::reject_iterations)
       .def_readwrite("max_bisections", &DisplacementControlOptions::max_bisections)
       .def_readwrite("shift", &DisplacementControlOptions::shift)
@@ -145,6 +155,10 @@ void bind_solvers(py::module_& m) {
       .def_property(
           "max_iterations", [](const ForceControlOptions& o) { return o.newton.max_iterations; },
           [](ForceControlOptions& o, int v) { o.newton.max_iterations = v; })
+      .def_property(
+          "cholesky",
+          [](const ForceControlOptions& o) { return static_cast<int>(o.newton.cholesky); },
+          [](ForceControlOptions& o, int v) { o.newton.cholesky = cholesky_choice(v); })
       .def_readwrite("max_bisections", &ForceControlOptions::max_bisections)
       .def_readwrite("shift", &ForceControlOptions::shift)
       .def_property(
@@ -173,6 +187,10 @@ void bind_solvers(py::module_& m) {
       .def_property(
           "max_iterations", [](const MgdcmOptions& o) { return o.newton.max_iterations; },
           [](MgdcmOptions& o, int v) { o.newton.max_iterations = v; })
+      .def_property(
+          "cholesky",
+          [](const MgdcmOptions& o) { return static_cast<int>(o.newton.cholesky); },
+          [](MgdcmOptions& o, int v) { o.newton.cholesky = cholesky_choice(v); })
       .def_readwrite("initial_load_factor", &MgdcmOptions::initial_load_factor)
       .def_readwrite("max_increments", &MgdcmOptions::max_increments)
       .def_readwrite("max_load_factor", &MgdcmOptions::max_load_factor)

@@ -88,7 +88,7 @@ void expect_solves(const Eigen::MatrixXd& A, TangentSolver& solver) {
 }  // namespace
 
 TEST(TangentSolver, SmallPositiveDefiniteUsesDenseCholesky) {
-  const Eigen::MatrixXd A = banded(60, 20, Eigen::VectorXd::Constant(60, 10.0), 1);
+  const Eigen::MatrixXd A = banded(24, 20, Eigen::VectorXd::Constant(24, 10.0), 1);
   TangentSolver solver;
   const auto info = solver.factorize(lower_sparse(A));
   EXPECT_TRUE(info.ok);
@@ -115,9 +115,21 @@ TEST(TangentSolver, DenseCholeskyEqualsEigenLltBitForBit) {
   }
 }
 
-TEST(TangentSolver, LargeSparsePositiveDefiniteUsesCholmod) {
+TEST(TangentSolver, LargerPositiveDefiniteUsesTheSupernodalCholesky) {
+  for (int n : {60, 600}) {
+    const Eigen::MatrixXd A = banded(n, 5, Eigen::VectorXd::Constant(n, 10.0), 2);
+    TangentSolver solver;
+    const auto info = solver.factorize(lower_sparse(A));
+    EXPECT_TRUE(info.ok);
+    EXPECT_EQ(info.method, Factorization::SupernodalCholesky);
+    EXPECT_EQ(info.negative_eigenvalues, 0);
+    expect_solves(A, solver);
+  }
+}
+
+TEST(TangentSolver, ForcedSimplicialUsesCholmod) {
   const Eigen::MatrixXd A = banded(600, 5, Eigen::VectorXd::Constant(600, 10.0), 2);
-  TangentSolver solver;
+  TangentSolver solver(CholeskyChoice::Simplicial);
   const auto info = solver.factorize(lower_sparse(A));
   EXPECT_TRUE(info.ok);
   EXPECT_EQ(info.method, Factorization::Cholesky);
@@ -159,20 +171,16 @@ TEST(TangentSolver, SingularMatrixIsReported) {
   EXPECT_FALSE(solver.factorize(S).ok);
 }
 
-// The cost model's decisions at the sizes it was calibrated on (benchmarks/cpp/
-// factorisation_cost.cpp): the n = 10 Kresling bending specimen (136 DOFs, a 57 % full
-// factor) is dense; a 234-DOF Miura sheet (6 x 6 panels) is sparse (simplicial 102 us against
-// dense 256 us measured); a 25,545-DOF sheet (264 flops per factor entry) is supernodal.
+// The cost model's decisions (benchmarks/cpp/factorisation_cost.cpp): dense below 32 DOFs
+// (18 DOFs: 1 us either way), the supernodal factorisation with Eigen's kernels above it
+// (54 DOFs: 5 us against dense 7; the 427-DOF GMiura sheet: 106 us against CHOLMOD's
+// simplicial 280; a 100,233-DOF sheet: 0.46 s against CHOLMOD's supernodal 1.83 s).
 TEST(TangentSolver, CostModelChoosesByMeasuredCost) {
-  EXPECT_EQ(solvers::choose_cholesky(136, 5087, 2.26e5), CholeskyChoice::Dense);
-  EXPECT_EQ(solvers::choose_cholesky(52, 931, 1.92e4), CholeskyChoice::Dense);
-  EXPECT_EQ(solvers::choose_cholesky(234, 6867, 2.34e5), CholeskyChoice::Simplicial);
-  EXPECT_EQ(solvers::choose_cholesky(332, 16271, 9.17e5), CholeskyChoice::Simplicial);
-  EXPECT_EQ(solvers::choose_cholesky(12285, 1.44e6, 2.86e8), CholeskyChoice::Simplicial);
-  EXPECT_EQ(solvers::choose_cholesky(25545, 3.52e6, 9.28e8), CholeskyChoice::Supernodal);
-  // Never dense beyond its size limit, however full.
-  EXPECT_NE(solvers::choose_cholesky(5000, 5000.0 * 5001 / 2, 5000.0 * 5000 * 5000 / 3),
-            CholeskyChoice::Dense);
+  EXPECT_EQ(solvers::choose_cholesky(18, 162, 1.8e3), CholeskyChoice::Dense);
+  EXPECT_EQ(solvers::choose_cholesky(54, 1017, 2.2e4), CholeskyChoice::Supernodal);
+  EXPECT_EQ(solvers::choose_cholesky(136, 5087, 2.26e5), CholeskyChoice::Supernodal);
+  EXPECT_EQ(solvers::choose_cholesky(427, 15637, 6.87e5), CholeskyChoice::Supernodal);
+  EXPECT_EQ(solvers::choose_cholesky(100233, 1.79e7, 7.97e9), CholeskyChoice::Supernodal);
 }
 
 TEST(TangentSolver, EveryForcedCholeskySolves) {
@@ -228,7 +236,7 @@ TEST(TangentSolver, SheetsGetNestedDissectionChainsAmd) {
   const SparseMatrix chain = sparse_banded(3000, 4, 7);
   TangentSolver tower;
   EXPECT_TRUE(tower.factorize(chain).ok);
-  EXPECT_EQ(tower.factorize(chain).method, Factorization::Cholesky);
+  EXPECT_EQ(tower.factorize(chain).method, Factorization::SupernodalCholesky);
   EXPECT_EQ(tower.plan().ordering, Ordering::AMD);
   expect_solves_sparse(chain, tower);
   // Below kTryNestedDissection DOFs only AMD is tried (its analysis is the cheapest).

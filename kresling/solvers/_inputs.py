@@ -20,3 +20,15 @@ def dof_vector(model, name, value, *, allow_none=False):
     if not np.isfinite(array).all():
         raise ValueError(f"{name} contains NaN or inf")
     return np.ascontiguousarray(array.ravel())
+
+
+#: The tangent's Cholesky factorisations a solver can be told to use (index: the core's).
+CHOLESKY_CHOICES = ("auto", "dense", "simplicial", "supernodal")
+
+
+def cholesky_choice(value) -> int:
+    """The core's index of a ``cholesky`` option, or a ValueError naming what is allowed."""
+    if not isinstance(value, str) or value not in CHOLESKY_CHOICES:
+        raise ValueError(f"cholesky = {value!r} is invalid: must be one of "
+                         + ", ".join(repr(c) for c in CHOLESKY_CHOICES))
+    return CHOLESKY_CHOICES.index(value)

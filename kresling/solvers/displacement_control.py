@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from kresling import _core
-from kresling.solvers._inputs import dof_vector
+from kresling.solvers._inputs import cholesky_choice, dof_vector
 from kresling._validation import as_bool, as_integer, as_positive_real, as_real
 from kresling.solvers.path import PathResult
 
@@ -12,7 +12,7 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
                                reject_iterations=25, max_bisections=10, shift=1e-8,
                                extrapolation=0, initial=None, merlin2_steps=False,
                                adaptive=False, adaptive_tolerance=1e-9,
-                               stop=None) -> PathResult:
+                               cholesky="auto", stop=None) -> PathResult:
     """Impose a displacement in equal increments and follow the equilibrium path.
 
     Only the non-zero entries of ``prescribed`` are imposed (zero entries stay free, as in
@@ -63,6 +63,12 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
     adaptive_tolerance : float, default 1e-9
         The adaptive samples' estimated error of the drive's force relative to its largest
         value on the path so far, in (0, 1e-4].
+    cholesky : {"auto", "dense", "simplicial", "supernodal"}, default "auto"
+        How positive definite tangents are factorised: by the measured cost model ("auto":
+        dense below 32 free DOFs, else supernodal), or forced: dense (Eigen), simplicial
+        (CHOLMOD) or supernodal (Eigen's dense kernels on CHOLMOD's symbolic analysis). The
+        path is the same to rounding, except past a bifurcation, where rounding picks the
+        branch the path follows.
     stop : callable, optional
         ``stop(load_factor, displacement) -> bool``, asked after every accepted increment
         (``displacement`` of shape (3N,)); True ends the path there (completed).
@@ -82,6 +88,7 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
         tolerance=tolerance, max_iterations=max_iterations, reject_iterations=reject_iterations,
         max_bisections=max_bisections, shift=shift, extrapolation=extrapolation,
         merlin2_steps=merlin2_steps, adaptive=adaptive, adaptive_tolerance=adaptive_tolerance,
+        cholesky=cholesky,
         stop=stop)
     d = _core.solvers.displacement_control(
         model._core, dof_vector(model, "prescribed", prescribed),
@@ -93,7 +100,7 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
 def displacement_control_options(*, tolerance=1e-6, max_iterations=50, reject_iterations=25,
                                  max_bisections=10, shift=1e-8, extrapolation=0,
                                  merlin2_steps=False, adaptive=False, adaptive_tolerance=1e-9,
-                                 stop=None):
+                                 cholesky="auto", stop=None):
     """Checked C++ options object (see :func:`solve_displacement_control` for meanings)."""
     if extrapolation not in (0, 1, 2) or isinstance(extrapolation, bool):
         raise ValueError(f"extrapolation = {extrapolation!r} is invalid: must be 0, 1 or 2")
@@ -107,6 +114,7 @@ def displacement_control_options(*, tolerance=1e-6, max_iterations=50, reject_it
     o.merlin2_steps = as_bool("merlin2_steps", merlin2_steps)
     o.adaptive = as_bool("adaptive", adaptive)
     o.adaptive_tolerance = as_positive_real("adaptive_tolerance", adaptive_tolerance)
+    o.cholesky = cholesky_choice(cholesky)
     if stop is not None and not callable(stop):
         raise ValueError(f"stop = {stop!r} is invalid: must be None or a callable")
     o.stop = stop

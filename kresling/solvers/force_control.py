@@ -5,13 +5,14 @@ from __future__ import annotations
 import math
 
 from kresling import _core
-from kresling.solvers._inputs import dof_vector
+from kresling.solvers._inputs import cholesky_choice, dof_vector
 from kresling._validation import as_integer, as_positive_real, as_real
 from kresling.solvers.path import PathResult
 
 
 def solve_force_control(model, forces, steps, *, tolerance=1e-6, max_iterations=50,
-                        max_bisections=10, shift=1e-8, initial=None, stop=None) -> PathResult:
+                        max_bisections=10, shift=1e-8, initial=None, stop=None,
+                        cholesky="auto") -> PathResult:
     """Newton equilibrium under ``lambda * forces`` for lambda = 1/steps, ..., 1.
 
     A failed load step is halved up to ``max_bisections`` times. Past a limit point there is
@@ -26,6 +27,8 @@ def solve_force_control(model, forces, steps, *, tolerance=1e-6, max_iterations=
     stop : callable, optional
         ``stop(load_factor, displacement) -> bool`` after every accepted step; True ends
         the path there (completed).
+    cholesky : {"auto", "dense", "simplicial", "supernodal"}, default "auto"
+        The tangent's factorisation, as in :func:`solve_displacement_control`.
 
     Returns
     -------
@@ -33,6 +36,7 @@ def solve_force_control(model, forces, steps, *, tolerance=1e-6, max_iterations=
         ``constraint_force``: the support reactions at the supported DOFs.
     """
     o = _core.solvers.ForceControlOptions()
+    o.cholesky = cholesky_choice(cholesky)
     o.tolerance = as_positive_real("tolerance", tolerance)
     o.max_iterations = as_integer("max_iterations", max_iterations, minimum=1)
     o.max_bisections = as_integer("max_bisections", max_bisections, minimum=0)
@@ -47,7 +51,7 @@ def solve_force_control(model, forces, steps, *, tolerance=1e-6, max_iterations=
 def solve_mgdcm(model, forces, *, initial_load_factor=0.01, max_increments=100,
                 max_load_factor=math.inf, monitor_dof=None, max_displacement=math.inf,
                 max_step_factor=math.inf, tolerance=1e-6, max_iterations=50, shift=1e-8,
-                initial=None, stop=None) -> PathResult:
+                initial=None, stop=None, cholesky="auto") -> PathResult:
     """Modified generalized displacement control (Leon, Paulino et al. 2011).
 
     Follows the equilibrium path of ``lambda * forces`` through limit points and
@@ -74,6 +78,8 @@ def solve_mgdcm(model, forces, *, initial_load_factor=0.01, max_increments=100,
     stop : callable, optional
         ``stop(load_factor, displacement) -> bool`` after every accepted increment
         (``displacement`` of shape (3N,)); True ends the path there (completed).
+    cholesky : {"auto", "dense", "simplicial", "supernodal"}, default "auto"
+        The tangent's factorisation, as in :func:`solve_displacement_control`.
 
     Returns
     -------
@@ -96,6 +102,7 @@ def solve_mgdcm(model, forces, *, initial_load_factor=0.01, max_increments=100,
     o.tolerance = as_positive_real("tolerance", tolerance)
     o.max_iterations = as_integer("max_iterations", max_iterations, minimum=1)
     o.shift = as_real("shift", shift)
+    o.cholesky = cholesky_choice(cholesky)
     o.stop = _stop(stop)
     core = _core.solvers.mgdcm(model._core, dof_vector(model, "forces", forces), o,
                                dof_vector(model, "initial", initial, allow_none=True))

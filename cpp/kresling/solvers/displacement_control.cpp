@@ -92,7 +92,7 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
   if (!(workspace_ && held == held_ && workspace_->fits(model))) {
     workspace_ = std::make_unique<assembly::Workspace>(model, assembly::unmasked_dofs(held),
                                                        options_.shift, assembly::Storage::Lower);
-    solver_ = std::make_unique<TangentSolver>();
+    solver_ = std::make_unique<TangentSolver>(options_.newton.cholesky);
     held_ = held;
   }
   // `model` is bound for this solve only: nothing here refers to it once solve returns.

@@ -55,7 +55,7 @@ PathResult solve_force_control(const model::Model& model, const VectorX& forces,
   check_shift(options.shift);
   assembly::Assembler assembler(model, assembly::unmasked_dofs(model.fixed()), options.shift,
                                 assembly::Storage::Lower);
-  TangentSolver solver;
+  TangentSolver solver(options.newton.cholesky);
   VectorX u = initial.size() ? initial : VectorX::Zero(model.num_dofs());
   PathResult result;
   result.constraint_dofs = fixed_dofs(model);
@@ -111,7 +111,7 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
   }
   assembly::Assembler assembler(model, assembly::unmasked_dofs(model.fixed()), options.shift,
                                 assembly::Storage::Lower);
-  TangentSolver solver;
+  TangentSolver solver(options.newton.cholesky);
   const VectorX F = gather_rows(assembler, forces);
   VectorX u = initial.size() ? initial : VectorX::Zero(model.num_dofs());
   double lambda = 0.0;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "kresling/core/types.hpp"
+#include "kresling/solvers/tangent_solver.hpp"
 
 namespace kresling::solvers {
 
@@ -17,6 +18,10 @@ namespace kresling::solvers {
 struct NewtonOptions {
   double tolerance = 1e-6;   ///< on the 2-norm of the free-DOF correction [mm]
   int max_iterations = 50;
+  /// Which Cholesky factorises positive definite tangents (Auto: by the measured cost
+  /// model). The others are for comparisons: near a bifurcation the branch a path takes is
+  /// decided by rounding, which differs from one factorisation to another.
+  CholeskyChoice cholesky = CholeskyChoice::Auto;
 };
 
 /// One converged equilibrium point of a path.

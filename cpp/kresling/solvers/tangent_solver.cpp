@@ -1,44 +1,48 @@
 #include "kresling/solvers/tangent_solver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <thread>
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <Eigen/UmfPackSupport>
 
+#include "kresling/solvers/supernodal_cholesky.hpp"
+
 namespace kresling::solvers {
 
 namespace {
 
-// The cost model, calibrated with benchmarks/cpp/factorisation_cost.cpp on this project's
-// 2-core machine (Release build, Debian's reference BLAS), on Kresling towers (52-1,984
-// DOFs) and Miura-ori sheets (63-100,233 DOFs):
-//  - dense Cholesky (Eigen, blocked): ~20 GFlop/s on its n^3/3 flops, plus ~1 ns per entry
-//    of the n x n matrix it fills (136 DOFs: 58 us; 332: 641 us; 556: 2.9 ms);
-//  - CHOLMOD simplicial: ~3 GFlop/s on CHOLMOD's flop count, plus ~6 us per call
-//    (136 DOFs: 85 us; 234: 102 us; 1,053: 1.4 ms);
-//  - CHOLMOD supernodal: its dense blocks go through the BLAS, which pays once the factor
-//    costs enough flops per entry; with the reference BLAS that is from ~250 (12,285 DOFs,
-//    199 flops per entry: simplicial 78 ms, supernodal 131 ms; 25,545 DOFs, 264: 473 ms
-//    against 359 ms). An optimised BLAS would move this down (CHOLMOD's own default is 40).
-constexpr double kDenseFlopsPerSecond = 20e9;
-constexpr double kDenseSecondsPerEntry = 1e-9;
-constexpr double kSimplicialFlopsPerSecond = 3e9;
-constexpr double kSimplicialSecondsPerCall = 6e-6;
-constexpr double kSupernodalFlopsPerEntry = 250.0;
-// A dense matrix this large never wins (0.45 s at 3,000 DOFs) and would cost memory.
-constexpr Index kDenseLimit = 2000;
+// The cost model, measured with benchmarks/cpp/factorisation_cost.cpp on this project's
+// 2-core machine (Release build), on Kresling towers (18-2,001 free DOFs), MERLIN2's GMiura
+// sheet (427) and Miura-ori sheets (12,285 and 100,233). One factorisation, microseconds:
+//
+//   DOFs      dense   CHOLMOD simplicial   CHOLMOD supernodal   supernodal (Eigen kernels)
+//   18            1                    2                    4                            1
+//   54            7                   14                   60                            5
+//   153          82                  130                  286                           45
+//   427       1,350                  280                  539                          106
+//   2,001         -                3,444                9,754                        1,137
+//   12,285        -               78,537               96,948                       20,716
+//   100,233       -            2,619,532            1,832,645          455,809 (2 threads: 303,369)
+//
+// CHOLMOD's numeric factorisations lean on the system BLAS, which Debian links to the
+// reference one; the supernodal factorisation with Eigen's kernels (supernodal_cholesky.hpp)
+// wins from a few dozen DOFs up, and ties the dense one below.
+constexpr Index kDenseBelow = 32;
+// From this many flops per factorisation up, independent subtrees factorise on separate
+// threads (12,285-DOF sheet, 2.9e8 flops: 20.7 -> 15.5 ms on 2 cores; at 1e7 the threads'
+// start-up cancels the gain).
+constexpr double kThreadedFlops = 1e8;
 
-double dense_seconds(Index n) {
-  const double m = static_cast<double>(n);
-  return m * m * m / 3.0 / kDenseFlopsPerSecond + m * m * kDenseSecondsPerEntry;
-}
-
-double simplicial_seconds(double flops) {
-  return flops / kSimplicialFlopsPerSecond + kSimplicialSecondsPerCall;
+int threads_for(double flops) {
+  if (flops < kThreadedFlops) return 1;
+  const unsigned hardware = std::thread::hardware_concurrency();
+  return static_cast<int>(std::clamp(hardware, 1u, 4u));
 }
 
 Ordering ordering_of(int cholmod_ordering) {
@@ -120,14 +124,8 @@ class CholmodLdlt {
 
 }  // namespace
 
-CholeskyChoice choose_cholesky(Index n, double factor_nonzeros, double flops) {
-  if (factor_nonzeros > 0 && flops / factor_nonzeros >= kSupernodalFlopsPerEntry) {
-    return CholeskyChoice::Supernodal;
-  }
-  if (n <= kDenseLimit && dense_seconds(n) < simplicial_seconds(flops)) {
-    return CholeskyChoice::Dense;
-  }
-  return CholeskyChoice::Simplicial;
+CholeskyChoice choose_cholesky(Index n, double /*factor_nonzeros*/, double /*flops*/) {
+  return n < kDenseBelow ? CholeskyChoice::Dense : CholeskyChoice::Supernodal;
 }
 
 struct TangentSolver::Impl {
@@ -139,10 +137,10 @@ struct TangentSolver::Impl {
   // matrix and its L1 norm (for rcond, not used here): ~10 % of a 136-DOF factorisation.
   // The strict upper triangle stays zero (the lower-triangle algorithm never touches it).
   Eigen::MatrixXd dense_matrix;
-  // Simplicial for most models; at these sizes the supernodal factorisation leans on a
-  // BLAS (Debian links the reference one) whose per-call cost dominates small blocks.
+  // CHOLMOD's simplicial factorisation: its symbolic analysis chooses the ordering and
+  // counts the flops for every sparse plan; its numeric one serves when forced.
   Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> cholesky;
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> supernodal;
+  SupernodalCholesky supernodal;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
   // From kTryNestedDissection DOFs up the LDL^T is CHOLMOD's, with the Cholesky's ordering.
   std::unique_ptr<CholmodLdlt> large_ldlt;
@@ -175,11 +173,7 @@ void TangentSolver::Impl::make_plan(const SparseMatrix& K) {
     plan.cholesky = requested == CholeskyChoice::Auto ? choose_cholesky(n, c.lnz, c.fl)
                                                        : requested;
     if (plan.cholesky == CholeskyChoice::Supernodal) {
-      cholmod_common& s = supernodal.cholmod();
-      s.nmethods = 1;
-      s.method[0].ordering = selected;
-      s.postorder = 1;
-      supernodal.analyzePattern(K);
+      supernodal.analyze(K, selected, threads_for(c.fl));
     }
   }
   if (plan.cholesky == CholeskyChoice::Dense) {
@@ -197,7 +191,6 @@ TangentSolver::TangentSolver(CholeskyChoice choice) : impl_(std::make_unique<Imp
   impl_->requested = choice;
   // An indefinite tangent is an expected outcome here, not something to print about.
   impl_->cholesky.cholmod().print = 0;
-  impl_->supernodal.cholmod().print = 0;
 }
 TangentSolver::~TangentSolver() = default;
 
@@ -229,8 +222,7 @@ FactorizeInfo TangentSolver::factorize(const SparseMatrix& K) {
       }
       break;
     case CholeskyChoice::Supernodal:
-      s.supernodal.factorize(K);
-      if (s.supernodal.info() == Eigen::Success) {
+      if (s.supernodal.factorize(K)) {
         s.current = Factorization::SupernodalCholesky;
         return {true, Factorization::SupernodalCholesky, 0};
       }

@@ -4,15 +4,16 @@
 ///
 /// The Cholesky factorisation (positive definite: a stable equilibrium, no negative
 /// eigenvalues) is chosen once per sparsity pattern, on the first call, by a cost model
-/// calibrated by measurement (choose_cholesky): a dense Cholesky (Eigen) for small tangents
-/// whose factor would be nearly full, else CHOLMOD's simplicial factorisation, or its
-/// supernodal one when the factor's flops per entry are high enough for the BLAS to pay
-/// (large sheets). The fill-reducing ordering is CHOLMOD's: AMD for small tangents (its
-/// analysis is cheapest), and from kTryNestedDissection DOFs up whichever of AMD and
-/// nested dissection (METIS) gives the fewer flops: nested dissection for sheets, AMD for
-/// towers. When the Cholesky fails the tangent is indefinite: a sparse LDL^T without
-/// pivoting (Eigen's simplicial factorisation with AMD ordering; from kTryNestedDissection
-/// DOFs up CHOLMOD's, with the Cholesky's ordering) gives the count of negative eigenvalues
+/// calibrated by measurement (choose_cholesky): a dense Cholesky (Eigen) for the smallest
+/// tangents, else a supernodal one whose dense kernels are Eigen's, on CHOLMOD's symbolic
+/// analysis (supernodal_cholesky.hpp; threaded across independent subtrees for large
+/// sheets). CHOLMOD's own simplicial factorisation can be forced. The fill-reducing
+/// ordering is CHOLMOD's: AMD for small tangents (its analysis is cheapest), and from
+/// kTryNestedDissection DOFs up whichever of AMD and nested dissection (METIS) gives the
+/// fewer flops: nested dissection for sheets, AMD for towers. When the Cholesky fails the
+/// tangent is indefinite: a sparse LDL^T without pivoting (Eigen's simplicial factorisation
+/// with AMD ordering; from kTryNestedDissection DOFs up CHOLMOD's, with the Cholesky's
+/// ordering) gives the count of negative eigenvalues
 /// by Sylvester's law of inertia; if its pivots are unusable (an exactly singular or badly
 /// conditioned leading block) UMFPACK's LU solves instead and the inertia is reported
 /// unknown (-1). Symbolic analyses are done once per pattern.
@@ -33,7 +34,7 @@ enum class Factorization : int {
   LDLT = 2,
   LU = 3,
   DenseCholesky = 4,
-  SupernodalCholesky = 5  ///< CHOLMOD supernodal LL^T
+  SupernodalCholesky = 5  ///< supernodal LL^T, Eigen kernels (SupernodalCholesky)
 };
 
 /// Which Cholesky to use for positive definite tangents: chosen by cost (Auto), or forced

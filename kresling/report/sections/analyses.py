@@ -256,9 +256,10 @@ def _topology_part(section: Section, out_dir: Path) -> str:
         abs(optimum["contracted"]), change,
         "MERLIN2 with one bar and hinge per edge ('8 % for n = 10 contracted'; docs/model.md, "
         "'Topology')", atol=tolerance,
-        note="half a unit of the rounded 8 %; MERLIN2's Newton sequence, as the 8 % came "
-             "from MERLIN2. The de-duplicated specimen loses stability "
-             f"near 4.9 mm ({stops}), so K_B is fitted to the part before"))
+        note="half a unit of the rounded 8 %; MERLIN2's Newton sequence and factorisation "
+             "(CHOLMOD's), as the 8 % came from MERLIN2. The de-duplicated specimen loses "
+             f"stability near 4.9 mm ({stops}), so K_B is fitted to the part before; the "
+             "branch taken there is decided by rounding (other factorisations: 7.4-8.4 %)"))
     ext = max(abs(e["extended"]) for e in effect)
     con = max(abs(e["contracted"]) for e in effect)
     return (f"MERLIN2's duplicated bars and hinges on the intermediate polygons matter: one "

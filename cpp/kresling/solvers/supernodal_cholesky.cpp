@@ -1,0 +1,389 @@
+#include "kresling/solvers/supernodal_cholesky.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <stdexcept>
+#include <thread>
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/Dense>
+
+namespace kresling::solvers {
+
+namespace {
+
+using Block = Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
+using ConstBlock = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
+
+}  // namespace
+
+struct SupernodalCholesky::Impl {
+  // The symbolic factor (CHOLMOD's layout): supernode s holds the columns
+  // [super[s], super[s+1]) of the permuted matrix; its rows are rows[pi[s] .. pi[s+1]) (its
+  // own columns first, then the rows below, ascending) and its values the column-major
+  // block of those rows by its columns at values[px[s]].
+  Index n = 0;
+  int nsuper = 0;
+  std::vector<int> perm;            // permuted index k -> original index
+  std::vector<int> super, pi, px, rows;
+  std::vector<int> column_super;    // permuted column -> its supernode
+  std::vector<int> parent;          // supernodal elimination tree (-1: a root)
+  std::vector<Index> destination;   // K's stored entry -> its slot in values (-1: upper)
+  Index stored_entries = 0;
+  std::vector<double> values;
+  std::size_t largest_update = 0;   // entries of the largest update block
+  // Parallel schedule: the supernodes each thread factorises (whole subtrees, ascending),
+  // then the rest ("top", ascending) on the calling thread.
+  std::vector<std::vector<int>> subtrees;
+  std::vector<int> top;
+  bool ok = false;
+
+  // Per-thread scratch: the descendants waiting to update each supernode (a list through
+  // `next`, heads per supernode), the relative row map and the update block.
+  struct Scratch {
+    std::vector<int> head;
+    std::vector<int> map;
+    std::vector<int> relative;
+    std::vector<double> update;
+  };
+  std::vector<int> next, position;  // per supernode: next in its list; its next row to use
+  std::vector<Scratch> per_thread;  // scratch of each thread, sized by analyze
+
+  void schedule(int threads);
+  bool factor_supernode(int s, Scratch& scratch);
+  void link(int d, int p_next, std::vector<int>& head);
+};
+
+SupernodalCholesky::SupernodalCholesky() : impl_(std::make_unique<Impl>()) {}
+SupernodalCholesky::~SupernodalCholesky() = default;
+
+bool SupernodalCholesky::analyzed() const { return impl_->nsuper > 0 || impl_->n == 0; }
+double SupernodalCholesky::factor_nonzeros() const {
+  return static_cast<double>(impl_->values.size());
+}
+int SupernodalCholesky::supernodes() const { return impl_->nsuper; }
+
+void SupernodalCholesky::analyze(const SparseMatrix& K, int cholmod_ordering, int threads) {
+  Impl& m = *impl_;
+  m = Impl();
+  m.n = K.rows();
+  if (m.n == 0) return;
+  cholmod_common common;
+  cholmod_start(&common);
+  common.print = 0;
+  common.supernodal = CHOLMOD_SUPERNODAL;
+  common.nmethods = 1;
+  common.method[0].ordering = cholmod_ordering;
+  common.postorder = 1;
+  SparseMatrix lower = K.triangularView<Eigen::Lower>();
+  lower.makeCompressed();
+  cholmod_sparse A = Eigen::viewAsCholmod(lower);
+  A.stype = -1;
+  cholmod_factor* L = cholmod_analyze(&A, &common);
+  if (!L || !L->is_super) {
+    if (L) cholmod_free_factor(&L, &common);
+    cholmod_finish(&common);
+    throw std::runtime_error("SupernodalCholesky: CHOLMOD's symbolic analysis failed");
+  }
+  m.nsuper = static_cast<int>(L->nsuper);
+  auto copy = [](const void* p, std::size_t count) {
+    const int* x = static_cast<const int*>(p);
+    return std::vector<int>(x, x + count);
+  };
+  m.perm = copy(L->Perm, static_cast<std::size_t>(m.n));
+  m.super = copy(L->super, m.nsuper + 1);
+  m.pi = copy(L->pi, m.nsuper + 1);
+  m.px = copy(L->px, m.nsuper + 1);
+  m.rows = copy(L->s, static_cast<std::size_t>(m.pi[m.nsuper]));
+  const std::size_t xsize = static_cast<std::size_t>(m.px[m.nsuper]);
+  cholmod_free_factor(&L, &common);
+  cholmod_finish(&common);
+
+  m.column_super.resize(static_cast<std::size_t>(m.n));
+  m.parent.assign(m.nsuper, -1);
+  for (int s = 0; s < m.nsuper; ++s) {
+    for (int k = m.super[s]; k < m.super[s + 1]; ++k) m.column_super[k] = s;
+  }
+  for (int s = 0; s < m.nsuper; ++s) {
+    const int ncol = m.super[s + 1] - m.super[s], nrow = m.pi[s + 1] - m.pi[s];
+    if (nrow > ncol) m.parent[s] = m.column_super[m.rows[m.pi[s] + ncol]];
+    m.largest_update = std::max(m.largest_update,
+                                static_cast<std::size_t>(nrow) * static_cast<std::size_t>(nrow));
+  }
+  m.values.assign(xsize, 0.0);
+
+  // Where each stored entry of K goes in the factor's values (its lower triangle, permuted).
+  std::vector<int> inverse(static_cast<std::size_t>(m.n));
+  for (Index k = 0; k < m.n; ++k) inverse[m.perm[k]] = static_cast<int>(k);
+  m.destination.clear();
+  m.destination.reserve(static_cast<std::size_t>(K.nonZeros()));
+  for (Index j = 0; j < K.outerSize(); ++j) {
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it) {
+      if (it.row() < it.col()) {
+        m.destination.push_back(-1);
+        continue;
+      }
+      const int a = inverse[it.row()], b = inverse[it.col()];
+      const int row = std::max(a, b), col = std::min(a, b);
+      const int s = m.column_super[col];
+      const int* first = m.rows.data() + m.pi[s];
+      const int* last = m.rows.data() + m.pi[s + 1];
+      // The supernode's own columns come first (ascending), then the rows below (ascending).
+      const int ncol = m.super[s + 1] - m.super[s];
+      const int* found = row < m.super[s + 1] ? first + (row - m.super[s])
+                                              : std::lower_bound(first + ncol, last, row);
+      const Index nrow = m.pi[s + 1] - m.pi[s];
+      m.destination.push_back(m.px[s] + (col - m.super[s]) * nrow + (found - first));
+    }
+  }
+  m.stored_entries = K.nonZeros();
+  m.next.assign(m.nsuper, -1);
+  m.position.assign(m.nsuper, 0);
+  m.schedule(std::max(threads, 1));
+  m.per_thread.resize(m.subtrees.size());
+  for (auto& sc : m.per_thread) {
+    sc.head.assign(m.nsuper, -1);
+    sc.map.assign(static_cast<std::size_t>(m.n), 0);
+    sc.relative.assign(static_cast<std::size_t>(m.n), 0);
+    sc.update.resize(m.largest_update);
+  }
+}
+
+// Splits the elimination tree into subtrees for the threads: starting from the roots, the
+// heaviest subtree (by its dense kernels' flops) is replaced by its children, its root going
+// to the top part (factorised after the threads, alone), for as long as that shortens the
+// estimated time: the top part's work plus the larger of the heaviest subtree's and an even
+// share of the rest. The subtrees go to the least loaded thread, heaviest first.
+void SupernodalCholesky::Impl::schedule(int threads) {
+  subtrees.assign(1, {});
+  top.clear();
+  std::vector<double> work(nsuper, 0.0), own(nsuper, 0.0);
+  std::vector<std::vector<int>> children(nsuper);
+  std::vector<int> roots;
+  for (int s = 0; s < nsuper; ++s) {  // postordered: children come before parents
+    // Its diagonal block, the rows below it, and the updates it sends up.
+    const double c = super[s + 1] - super[s], b = pi[s + 1] - pi[s] - c;
+    own[s] = c * c * c / 3.0 + c * c * b + c * b * b;
+    work[s] += own[s];
+    if (parent[s] >= 0) {
+      work[parent[s]] += work[s];
+      children[parent[s]].push_back(s);
+    } else {
+      roots.push_back(s);
+    }
+  }
+  if (threads <= 1 || nsuper < 2) {
+    subtrees[0].resize(nsuper);
+    for (int s = 0; s < nsuper; ++s) subtrees[0][s] = s;
+    return;
+  }
+  double total = 0.0;
+  for (int r : roots) total += work[r];
+  auto lighter = [&](int a, int b) { return work[a] < work[b]; };
+  std::priority_queue<int, std::vector<int>, decltype(lighter)> open(lighter);
+  for (int r : roots) open.push(r);
+  double top_work = 0.0;
+  auto makespan = [&](double top_part, double heaviest) {
+    return top_part + std::max(heaviest, (total - top_part) / threads);
+  };
+  while (!open.empty() && !children[open.top()].empty()) {
+    const int s = open.top();
+    double next_heaviest = 0.0;
+    for (int child : children[s]) next_heaviest = std::max(next_heaviest, work[child]);
+    open.pop();
+    if (!open.empty()) next_heaviest = std::max(next_heaviest, work[open.top()]);
+    if (makespan(top_work + own[s], next_heaviest) >= makespan(top_work, work[s])) {
+      open.push(s);
+      break;
+    }
+    top_work += own[s];
+    for (int child : children[s]) open.push(child);
+  }
+  std::vector<int> pieces;
+  while (!open.empty()) {
+    pieces.push_back(open.top());
+    open.pop();
+  }
+  // Heaviest first to the least loaded thread.
+  std::vector<double> load(threads, 0.0);
+  std::vector<std::vector<int>> owned(threads);
+  for (int piece : pieces) {
+    const int t = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    load[t] += work[piece];
+    owned[t].push_back(piece);
+  }
+  // A subtree of a postordered tree is a contiguous range ending at its root.
+  std::vector<int> first(nsuper);
+  for (int s = 0; s < nsuper; ++s) first[s] = s;
+  for (int s = 0; s < nsuper; ++s) {
+    if (parent[s] >= 0) first[parent[s]] = std::min(first[parent[s]], first[s]);
+  }
+  subtrees.assign(threads, {});
+  std::vector<char> taken(nsuper, 0);
+  for (int t = 0; t < threads; ++t) {
+    for (int root : owned[t]) {
+      for (int s = first[root]; s <= root; ++s) {
+        subtrees[t].push_back(s);
+        taken[s] = 1;
+      }
+    }
+    std::sort(subtrees[t].begin(), subtrees[t].end());
+  }
+  for (int s = 0; s < nsuper; ++s) {
+    if (!taken[s]) top.push_back(s);
+  }
+}
+
+// Puts supernode d, whose next row to use is at offset p_next of its rows, on the list of
+// the supernode that row belongs to (if any).
+void SupernodalCholesky::Impl::link(int d, int p_next, std::vector<int>& head) {
+  const int nrow = pi[d + 1] - pi[d];
+  position[d] = p_next;
+  if (p_next < nrow) {
+    const int target = column_super[rows[pi[d] + p_next]];
+    next[d] = head[target];
+    head[target] = d;
+  }
+}
+
+// Left-looking: the updates of every supernode waiting on s, then s's diagonal block and
+// the rows below it.
+bool SupernodalCholesky::Impl::factor_supernode(int s, Scratch& scratch) {
+  const int k1 = super[s], k2 = super[s + 1], ncol = k2 - k1;
+  const int nrow = pi[s + 1] - pi[s];
+  const int* srows = rows.data() + pi[s];
+  for (int i = 0; i < nrow; ++i) scratch.map[srows[i]] = i;
+  Block S(values.data() + px[s], nrow, ncol, Eigen::OuterStride<>(nrow));
+  int d = scratch.head[s];
+  scratch.head[s] = -1;
+  while (d >= 0) {
+    const int d_next = next[d];
+    const int dcol = super[d + 1] - super[d], drow = pi[d + 1] - pi[d];
+    const int* drows = rows.data() + pi[d];
+    const int p1 = position[d];
+    int p2 = p1;
+    while (p2 < drow && drows[p2] < k2) ++p2;
+    const int n1 = p2 - p1, n2 = drow - p1;  // rows in s's columns; rows from there down
+    ConstBlock Ld(values.data() + px[d], drow, dcol, Eigen::OuterStride<>(drow));
+    Block C(scratch.update.data(), n2, n1, Eigen::OuterStride<>(n2));
+    const auto upper = Ld.block(p1, 0, n1, dcol);
+    // The top block is symmetric: its lower triangle alone (a rank update), the rest a
+    // product.
+    C.topRows(n1).triangularView<Eigen::Lower>().setZero();
+    C.topRows(n1).selfadjointView<Eigen::Lower>().rankUpdate(upper);
+    if (n2 > n1) C.bottomRows(n2 - n1).noalias() = Ld.block(p2, 0, n2 - n1, dcol) * upper.transpose();
+    for (int i = 0; i < n2; ++i) scratch.relative[i] = scratch.map[drows[p1 + i]];
+    for (int j = 0; j < n1; ++j) {
+      double* column = S.data() + static_cast<Index>(drows[p1 + j] - k1) * nrow;
+      const double* c = C.data() + static_cast<Index>(j) * n2;
+      for (int i = j; i < n2; ++i) column[scratch.relative[i]] -= c[i];
+    }
+    link(d, p2, scratch.head);
+    d = d_next;
+  }
+  auto diagonal = S.topRows(ncol);
+  if (Eigen::internal::llt_inplace<double, Eigen::Lower>::blocked(diagonal) != -1) return false;
+  if (!diagonal.diagonal().allFinite()) return false;
+  if (nrow > ncol) {
+    diagonal.triangularView<Eigen::Lower>().adjoint().solveInPlace<Eigen::OnTheRight>(
+        S.bottomRows(nrow - ncol));
+  }
+  link(s, ncol, scratch.head);
+  return true;
+}
+
+bool SupernodalCholesky::factorize(const SparseMatrix& K) {
+  Impl& m = *impl_;
+  m.ok = false;
+  if (K.rows() != m.n || K.nonZeros() != m.stored_entries) {
+    throw std::invalid_argument("SupernodalCholesky::factorize: the matrix's pattern is not "
+                                "the analysed one");
+  }
+  if (m.n == 0) return m.ok = true;
+  std::fill(m.values.begin(), m.values.end(), 0.0);
+  const double* x = K.valuePtr();
+  for (std::size_t k = 0; k < m.destination.size(); ++k) {
+    if (m.destination[k] >= 0) m.values[m.destination[k]] += x[k];
+  }
+  const int threads = static_cast<int>(m.subtrees.size());
+  std::vector<Impl::Scratch>& scratch = m.per_thread;
+  for (auto& sc : scratch) std::fill(sc.head.begin(), sc.head.end(), -1);
+  std::vector<char> good(threads, 1);
+  auto run = [&](int t) {
+    for (int s : m.subtrees[t]) {
+      if (!m.factor_supernode(s, scratch[t])) {
+        good[t] = 0;
+        return;
+      }
+    }
+  };
+  if (threads == 1) {
+    run(0);
+  } else {
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(run, t);
+    run(0);
+    for (auto& th : pool) th.join();
+  }
+  if (std::find(good.begin(), good.end(), 0) != good.end()) return false;
+  if (!m.top.empty()) {
+    // The subtrees' supernodes wait in each thread's lists: merge them into the first's.
+    Impl::Scratch& main = scratch[0];
+    for (int t = 1; t < threads; ++t) {
+      for (int s : m.top) {
+        int d = scratch[t].head[s];
+        while (d >= 0) {
+          const int d_next = m.next[d];
+          m.next[d] = main.head[s];
+          main.head[s] = d;
+          d = d_next;
+        }
+      }
+    }
+    for (int s : m.top) {
+      if (!m.factor_supernode(s, main)) return false;
+    }
+  }
+  m.ok = true;
+  return true;
+}
+
+// Forward and back substitution, supernode by supernode, column by column: the supernodes
+// of small models are a few columns wide, where plain loops over a column (contiguous in the
+// factor) beat the dense triangular solver's per-call overhead.
+VectorX SupernodalCholesky::solve(const VectorX& b) const {
+  const Impl& m = *impl_;
+  if (!m.ok) throw std::logic_error("SupernodalCholesky::solve called without a factorisation");
+  VectorX y(m.n);
+  for (Index k = 0; k < m.n; ++k) y[k] = b[m.perm[k]];
+  double* v = y.data();
+  for (int s = 0; s < m.nsuper; ++s) {  // L y = P b
+    const int k1 = m.super[s], ncol = m.super[s + 1] - k1, nrow = m.pi[s + 1] - m.pi[s];
+    const int* r = m.rows.data() + m.pi[s];
+    const double* L = m.values.data() + m.px[s];
+    for (int j = 0; j < ncol; ++j) {
+      const double* column = L + static_cast<Index>(j) * nrow;
+      const double x = v[k1 + j] /= column[j];
+      for (int i = j + 1; i < ncol; ++i) v[k1 + i] -= column[i] * x;
+      for (int i = ncol; i < nrow; ++i) v[r[i]] -= column[i] * x;
+    }
+  }
+  for (int s = m.nsuper - 1; s >= 0; --s) {  // L^T z = y
+    const int k1 = m.super[s], ncol = m.super[s + 1] - k1, nrow = m.pi[s + 1] - m.pi[s];
+    const int* r = m.rows.data() + m.pi[s];
+    const double* L = m.values.data() + m.px[s];
+    for (int j = ncol - 1; j >= 0; --j) {
+      const double* column = L + static_cast<Index>(j) * nrow;
+      double sum = v[k1 + j];
+      for (int i = j + 1; i < ncol; ++i) sum -= column[i] * v[k1 + i];
+      for (int i = ncol; i < nrow; ++i) sum -= column[i] * v[r[i]];
+      v[k1 + j] = sum / column[j];
+    }
+  }
+  VectorX x(m.n);
+  for (Index k = 0; k < m.n; ++k) x[m.perm[k]] = y[k];
+  return x;
+}
+
+}  // namespace kresling::solvers
