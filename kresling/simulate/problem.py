@@ -41,6 +41,8 @@ __all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_proble
 
 #: Analysis methods and what each needs.
 METHODS = ("displacement_control", "force_control", "mgdcm")
+#: How displacement control steps between its samples.
+INCREMENTS = ("fixed", "adaptive")
 _AXES = {"x": 0, "y": 1, "z": 2}
 
 
@@ -86,6 +88,9 @@ class Analysis:
     stop: MonitorStop | None = None
     tolerance: float = 1e-6
     max_iterations: int = 50
+    #: Displacement control: "fixed" (equal increments, MERLIN2's step control under
+    #: merlin2_compat) or "adaptive" (the same samples, increments by an error estimate).
+    increments: str = "fixed"
 
 
 @dataclass(frozen=True)
@@ -349,6 +354,9 @@ def _read_analysis(t, num_nodes):
     if method in ("displacement_control", "force_control"):
         settings["steps"] = t.get("steps", _count, required=True,
                                   allowed="the number of increments (an integer >= 1)")
+    if method == "displacement_control":
+        settings["increments"] = t.get("increments", _string, "fixed",
+                                       choices=INCREMENTS)
     else:
         settings["initial_load_factor"] = t.get("initial_load_factor", _number, 0.01)
         if settings["initial_load_factor"] == 0:

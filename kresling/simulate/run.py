@@ -208,8 +208,10 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
               "stop": callback}
     try:
         if analysis.method == "displacement_control":
-            path = solve_displacement_control(model, vector, analysis.steps,
-                                              merlin2_steps=problem.merlin2_compat, **common)
+            adaptive = analysis.increments == "adaptive"
+            path = solve_displacement_control(
+                model, vector, analysis.steps, adaptive=adaptive,
+                merlin2_steps=problem.merlin2_compat and not adaptive, **common)
         elif analysis.method == "force_control":
             path = solve_force_control(model, vector, analysis.steps, **common)
         else:
