@@ -13,13 +13,14 @@ Times are best of ``--repeat`` runs. Run: ``python benchmarks/simulate_speed.py`
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import shutil
 import subprocess
 import tempfile
 import time
 from pathlib import Path
 
-from kresling.simulate import simulate
+from kresling.simulate import load_problem, simulate
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "tests" / "data" / "merlin2_examples"
@@ -32,7 +33,17 @@ def recorded_seconds(case: Path) -> float:
     return float("nan")
 
 
-def ours(problem: Path, repeat: int):
+def variants(problem: Path):
+    """The problem as posed (label: its folder's name), and for displacement control also
+    with adaptive increments (the same samples; label suffixed " adaptive")."""
+    posed = load_problem(problem)
+    yield problem.parent.name, posed
+    if posed.analysis.method == "displacement_control":
+        analysis = dataclasses.replace(posed.analysis, increments="adaptive")
+        yield problem.parent.name + " adaptive", dataclasses.replace(posed, analysis=analysis)
+
+
+def ours(problem, repeat: int):
     best, sim = float("inf"), None
     for _ in range(repeat):
         start = time.perf_counter()
@@ -98,19 +109,21 @@ def main(argv=None):
     parser.add_argument("--octave", type=Path, metavar="DIR",
                         help="MERLIN2 v1.1's source folder, to time it live under Octave")
     args = parser.parse_args(argv)
-    print(f"{'example':<20} {'nodes':>5} {'bars':>5} {'hinges':>6} {'incr':>5} "
+    print(f"{'example':<26} {'nodes':>5} {'bars':>5} {'hinges':>6} {'incr':>5} "
           f"{'MERLIN2 s':>10} {'live s':>8} {'ours s':>8} {'ratio':>7}")
     for problem in sorted(EXAMPLES.glob("*/problem.toml")):
         case = problem.parent
-        seconds, sim = ours(problem, args.repeat)
         live = octave_seconds(args.octave, case) if args.octave else float("nan")
         reference = live if live == live else recorded_seconds(case)
-        m = sim.model
-        print(f"{case.name:<20} {m.num_nodes:>5} {len(m.bars):>5} {len(m.hinges):>6} "
-              f"{sim.path.num_steps:>5} {recorded_seconds(case):>10.3f} {live:>8.3f} "
-              f"{seconds:>8.4f} {reference / seconds:>7.0f}")
+        for label, posed in variants(problem):
+            seconds, sim = ours(posed, args.repeat)
+            m = sim.model
+            print(f"{label:<26} {m.num_nodes:>5} {len(m.bars):>5} {len(m.hinges):>6} "
+                  f"{sim.path.num_steps:>5} {recorded_seconds(case):>10.3f} {live:>8.3f} "
+                  f"{seconds:>8.4f} {reference / seconds:>7.0f}")
     print("\nMERLIN2 s: its path-analysis time as recorded with the reference run; live s: "
-          "timed now (with --octave); ratio: MERLIN2 (live if timed) over ours.")
+          "timed now (with --octave); ratio: MERLIN2 (live if timed) over ours. 'adaptive': "
+          "the same samples, the path between them in adaptive increments.")
 
 
 if __name__ == "__main__":
