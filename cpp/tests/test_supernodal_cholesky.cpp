@@ -96,6 +96,8 @@ TEST(SupernodalCholesky, ThreadsChangeOnlyTheRounding) {
   EXPECT_LE((x1 - x2).norm(), 1e-13 * x1.norm());
   EXPECT_EQ(one.factor_nonzeros(), two.factor_nonzeros());
   EXPECT_GT(one.supernodes(), 1);
+  EXPECT_EQ(one.working_threads(), 1);
+  EXPECT_EQ(two.working_threads(), 2);  // nested dissection's halves, one per thread
 }
 
 // New values on the analysed pattern: the factor starts again from the matrix (nothing of

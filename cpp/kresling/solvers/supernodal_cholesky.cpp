@@ -63,6 +63,11 @@ double SupernodalCholesky::factor_nonzeros() const {
   return static_cast<double>(impl_->values.size());
 }
 int SupernodalCholesky::supernodes() const { return impl_->nsuper; }
+int SupernodalCholesky::working_threads() const {
+  int working = 0;
+  for (const auto& share : impl_->subtrees) working += share.empty() ? 0 : 1;
+  return working;
+}
 
 void SupernodalCholesky::analyze(const SparseMatrix& K, int cholmod_ordering, int threads) {
   Impl& m = *impl_;

@@ -47,6 +47,8 @@ class SupernodalCholesky {
   bool analyzed() const;
   double factor_nonzeros() const;  ///< entries of L, explicit zeros of amalgamation included
   int supernodes() const;
+  /// Threads that factorise a share of the elimination tree (1: no split paid off).
+  int working_threads() const;
 
  private:
   struct Impl;
