@@ -85,16 +85,22 @@ void expect_solves(const Eigen::MatrixXd& A, TangentSolver& solver) {
   EXPECT_LE((A * x - b).norm(), 1e-10 * b.norm());
 }
 
+// A positive definite A: factorised by `method`, no negative eigenvalue, and solved.
+void expect_positive_definite_by(const Eigen::MatrixXd& A, TangentSolver& solver,
+                                 Factorization method) {
+  const auto info = solver.factorize(lower_sparse(A));
+  EXPECT_TRUE(info.ok);
+  EXPECT_EQ(info.method, method);
+  EXPECT_EQ(info.negative_eigenvalues, 0);
+  expect_solves(A, solver);
+}
+
 }  // namespace
 
 TEST(TangentSolver, SmallPositiveDefiniteUsesDenseCholesky) {
-  const Eigen::MatrixXd A = banded(24, 20, Eigen::VectorXd::Constant(24, 10.0), 1);
   TangentSolver solver;
-  const auto info = solver.factorize(lower_sparse(A));
-  EXPECT_TRUE(info.ok);
-  EXPECT_EQ(info.method, Factorization::DenseCholesky);
-  EXPECT_EQ(info.negative_eigenvalues, 0);
-  expect_solves(A, solver);
+  expect_positive_definite_by(banded(24, 20, Eigen::VectorXd::Constant(24, 10.0), 1), solver,
+                              Factorization::DenseCholesky);
 }
 
 // The dense path factorises in place with the blocked algorithm Eigen::LLT runs: its solves
@@ -117,24 +123,16 @@ TEST(TangentSolver, DenseCholeskyEqualsEigenLltBitForBit) {
 
 TEST(TangentSolver, LargerPositiveDefiniteUsesTheSupernodalCholesky) {
   for (int n : {60, 600}) {
-    const Eigen::MatrixXd A = banded(n, 5, Eigen::VectorXd::Constant(n, 10.0), 2);
     TangentSolver solver;
-    const auto info = solver.factorize(lower_sparse(A));
-    EXPECT_TRUE(info.ok);
-    EXPECT_EQ(info.method, Factorization::SupernodalCholesky);
-    EXPECT_EQ(info.negative_eigenvalues, 0);
-    expect_solves(A, solver);
+    expect_positive_definite_by(banded(n, 5, Eigen::VectorXd::Constant(n, 10.0), 2), solver,
+                                Factorization::SupernodalCholesky);
   }
 }
 
 TEST(TangentSolver, ForcedSimplicialUsesCholmod) {
-  const Eigen::MatrixXd A = banded(600, 5, Eigen::VectorXd::Constant(600, 10.0), 2);
   TangentSolver solver(CholeskyChoice::Simplicial);
-  const auto info = solver.factorize(lower_sparse(A));
-  EXPECT_TRUE(info.ok);
-  EXPECT_EQ(info.method, Factorization::Cholesky);
-  EXPECT_EQ(info.negative_eigenvalues, 0);
-  expect_solves(A, solver);
+  expect_positive_definite_by(banded(600, 5, Eigen::VectorXd::Constant(600, 10.0), 2), solver,
+                              Factorization::Cholesky);
 }
 
 TEST(TangentSolver, IndefiniteReportsItsInertia) {
