@@ -271,6 +271,11 @@ def _as_coordinates(values, name: str, *, count: int | None = None) -> np.ndarra
 
 def check_face(face, count: int, fail: Fail, index: int) -> tuple:
     """One face as a tuple of int: integer entries in ``[0, count)``, distinct, >= 3."""
+    # The readers' faces (Python ints, valid): accepted in bulk; anything else entry by
+    # entry below, which names the first bad one.
+    if type(face) is tuple and len(face) >= 3 and all(type(v) is int for v in face) and \
+            min(face) >= 0 and max(face) < count and len(set(face)) == len(face):
+        return face
     if not _is_sequence(face):
         raise fail(index, "must be a list of vertex indices", value=face)
     vertices = []
@@ -316,6 +321,9 @@ def check_edge(edge, count: int, fail: Fail, index: int) -> tuple:
 
 def check_unique_edges(edges: np.ndarray, fail: Fail) -> None:
     """Each vertex pair once; ``fail`` names the repeat."""
+    pairs = np.sort(np.asarray(edges, dtype=np.int64).reshape(-1, 2), axis=1)
+    if len(np.unique(pairs, axis=0)) == len(pairs):
+        return
     seen = {}
     for index, (u, v) in enumerate(np.asarray(edges).tolist()):
         key = (min(u, v), max(u, v))
@@ -325,6 +333,14 @@ def check_unique_edges(edges: np.ndarray, fail: Fail) -> None:
 
 
 def _as_edges(edges, count: int, fail: Fail) -> np.ndarray:
+    # An integer array of valid pairs (what the readers build) is checked in bulk; anything
+    # else pair by pair, which names the first bad one.
+    if isinstance(edges, np.ndarray) and edges.dtype.kind in "iu" and edges.ndim == 2 and \
+            edges.shape[1] == 2 and len(edges) and edges.min() >= 0 and \
+            edges.max() < count and (edges[:, 0] != edges[:, 1]).all():
+        array = edges.astype(np.int64)
+        check_unique_edges(array, fail)
+        return array
     pairs = [check_edge(edge, count, fail, k) for k, edge in enumerate(_as_list(edges, fail))]
     array = np.array(pairs, dtype=np.int64).reshape(-1, 2)
     check_unique_edges(array, fail)
@@ -442,7 +458,12 @@ def check_panels(vertices: np.ndarray, faces, planarity_tolerance,
         sides = np.linalg.norm(np.roll(corners, -1, axis=1) - corners, axis=-1)
         area = 0.5 * np.linalg.norm(
             np.cross(centred, np.roll(centred, -1, axis=1)).sum(axis=1), axis=-1)
-        for row, index in enumerate(indices):
+        # Python only for the panels flagged (the rest, nearly always all, in bulk).
+        flagged = np.flatnonzero((diameter == 0.0)
+                                 | (sides <= 1e-12 * diameter[:, None]).any(axis=1)
+                                 | (area < DEGENERATE_AREA * diameter ** 2))
+        for row in flagged.tolist():
+            index = indices[row]
             face = faces[index]
             if diameter[row] == 0.0:
                 problems[index] = f"face {index} is degenerate: all its corners coincide"
