@@ -35,15 +35,12 @@ BarResponse bar_response(const Vector3& x1, const Vector3& x2, double area, doub
   const Vector6 g = bar_strain_gradient(x1, x2, rest_length);
   r.force = (volume * s.stress) * g;
   if (with_stiffness) {
-    r.stiffness = (volume * s.modulus) * (g * g.transpose());
-    // S d2E/dx2 has the block pattern [[I, -I], [-I, I]] / L^2.
-    const double geometric = volume * s.stress / L2;
-    for (int k = 0; k < 3; ++k) {
-      r.stiffness(k, k) += geometric;
-      r.stiffness(k + 3, k + 3) += geometric;
-      r.stiffness(k, k + 3) -= geometric;
-      r.stiffness(k + 3, k) -= geometric;
-    }
+    // The stiffness has the block pattern [[K, -K], [-K, K]] with K = c d d^T + S I / L^2
+    // (g = [-d, d]; S d2E/dx2 = S [[I, -I], [-I, I]] / L^2): one 3 x 3 block, signed.
+    const Vector3 d = g.tail<3>();
+    Matrix3 K = (volume * s.modulus) * (d * d.transpose());
+    K.diagonal().array() += volume * s.stress / L2;
+    r.stiffness << K, -K, -K, K;
   }
   return r;
 }
