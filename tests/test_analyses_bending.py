@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from kresling import Design, data
+from kresling.data.tables import TABLE3_DESIGNS
 from kresling.analyses import BendingTester, bending_stiffness, bending_test
 from kresling.model import SpecimenParameters
 
@@ -109,7 +110,7 @@ def test_run_both_states_equals_run_in_each_state_bit_for_bit():
 def test_the_5mm_protocol_is_adaptive_by_default_and_falls_back_to_fixed_steps():
     from kresling.analyses.bending import adaptive_by_default
     assert adaptive_by_default("5mm", 2) and not adaptive_by_default("5mm", 0)
-    assert not adaptive_by_default("0.001rad", 2)
+    assert adaptive_by_default("0.001rad", 2) and not adaptive_by_default("0.001rad", 0)
     # The optimum: adaptive by default, so not bit for bit the fixed steps' K_B, but within the
     # adaptive samples' accuracy (1e-8 of the largest force; K_B is a fit to those samples).
     optimum = Design(10, 0.9, 15)
@@ -153,3 +154,18 @@ class _StoppingEarly:
     def run_both_states(self, rows):
         return [(k_ext, k_con, iterations, False, "stopped", False, "stopped")
                 for k_ext, k_con, iterations, *_ in self._core.run_both_states(rows)]
+
+
+@pytest.mark.parametrize("n, Lc, lam", TABLE3_DESIGNS)
+def test_the_small_protocol_is_adaptive_by_default_to_fixed_steps_accuracy(n, Lc, lam):
+    # The 0.001 rad protocol's ten samples in adaptive increments (error target 1e-8): each
+    # sampled force within 1e-8 of the largest of the fixed steps' (the samples' stated
+    # accuracy; measured up to 3.5e-9), so K_B, a fit to them, within 1e-8 too.
+    design = Design(n, lam, Lc)
+    default, fixed = BendingTester(n, "0.001rad"), BendingTester(n, "0.001rad", adaptive=False)
+    for state in (0, 1):
+        a, f = default.run(design, state), fixed.run(design, state)
+        assert a.completed and f.completed
+        assert int(a.iterations.sum()) < int(f.iterations.sum())
+        assert np.abs(a.force - f.force).max() <= 1e-8 * np.abs(f.force).max()
+        assert a.stiffness == pytest.approx(f.stiffness, rel=1e-8)

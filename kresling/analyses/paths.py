@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from kresling.analyses.bending import PROTOCOLS, adaptive_by_default, require_even_n
+from kresling.analyses.bending import PROTOCOLS, adaptive_options, require_even_n
 from kresling.analyses.snap_through import DEFAULT_STEPS
 from kresling.analyses.travel import travel_fraction
 from kresling.geometry import Design, state_index
@@ -199,8 +199,7 @@ def bending_path(design: Design, state, protocol="5mm", *, deflection=None,
     specimen = kresling_specimen(design, [state] * cells, parameters=parameters, fixed=fixed)
     prescribed = np.zeros(fixed.shape)
     prescribed[specimen.level_nodes(cells // 2), 1] = -drive
-    if adaptive is None:
-        adaptive = adaptive_by_default(protocol, extrapolation)
+    adaptive, solver = adaptive_options(protocol, extrapolation, adaptive, solver)
     path = solve_displacement_control(specimen.model, prescribed, settings["steps"],
                                       extrapolation=extrapolation, adaptive=adaptive, **solver)
     if adaptive and not path.completed:  # as the bending test does
