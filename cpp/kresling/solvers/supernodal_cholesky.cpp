@@ -4,6 +4,7 @@
 #include <cmath>
 #include <queue>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 #include <Eigen/CholmodSupport>
@@ -58,7 +59,6 @@ struct SupernodalCholesky::Impl {
 SupernodalCholesky::SupernodalCholesky() : impl_(std::make_unique<Impl>()) {}
 SupernodalCholesky::~SupernodalCholesky() = default;
 
-bool SupernodalCholesky::analyzed() const { return impl_->nsuper > 0 || impl_->n == 0; }
 double SupernodalCholesky::factor_nonzeros() const {
   return static_cast<double>(impl_->values.size());
 }
@@ -69,17 +69,24 @@ int SupernodalCholesky::working_threads() const {
   return working;
 }
 
-void SupernodalCholesky::analyze(const SparseMatrix& K, int cholmod_ordering, int threads) {
+SupernodalCholesky::Analysis SupernodalCholesky::analyze(const SparseMatrix& K,
+                                                         const std::vector<int>& orderings,
+                                                         int threads) {
   Impl& m = *impl_;
   m = Impl();
   m.n = K.rows();
-  if (m.n == 0) return;
+  Analysis analysis;
+  if (m.n == 0) return analysis;
+  if (orderings.empty() || orderings.size() > CHOLMOD_MAXMETHODS) {
+    throw std::invalid_argument("SupernodalCholesky::analyze: orderings must name 1 to " +
+                                std::to_string(CHOLMOD_MAXMETHODS) + " orderings");
+  }
   cholmod_common common;
   cholmod_start(&common);
   common.print = 0;
   common.supernodal = CHOLMOD_SUPERNODAL;
-  common.nmethods = 1;
-  common.method[0].ordering = cholmod_ordering;
+  common.nmethods = static_cast<int>(orderings.size());
+  for (std::size_t k = 0; k < orderings.size(); ++k) common.method[k].ordering = orderings[k];
   common.postorder = 1;
   SparseMatrix lower = K.triangularView<Eigen::Lower>();
   lower.makeCompressed();
@@ -102,6 +109,8 @@ void SupernodalCholesky::analyze(const SparseMatrix& K, int cholmod_ordering, in
   m.px = copy(L->px, m.nsuper + 1);
   m.rows = copy(L->s, static_cast<std::size_t>(m.pi[m.nsuper]));
   const std::size_t xsize = static_cast<std::size_t>(m.px[m.nsuper]);
+  const auto& kept = common.method[common.selected];
+  analysis = {kept.ordering, kept.lnz, kept.fl};
   cholmod_free_factor(&L, &common);
   cholmod_finish(&common);
 
@@ -145,6 +154,13 @@ void SupernodalCholesky::analyze(const SparseMatrix& K, int cholmod_ordering, in
   m.stored_entries = K.nonZeros();
   m.next.assign(m.nsuper, -1);
   m.position.assign(m.nsuper, 0);
+  use_threads(threads);
+  return analysis;
+}
+
+void SupernodalCholesky::use_threads(int threads) {
+  Impl& m = *impl_;
+  if (m.n == 0) return;
   m.schedule(std::max(threads, 1));
   m.per_thread.resize(m.subtrees.size());
   for (auto& sc : m.per_thread) {

@@ -32,10 +32,25 @@ class SupernodalCholesky {
   SupernodalCholesky(const SupernodalCholesky&) = delete;
   SupernodalCholesky& operator=(const SupernodalCholesky&) = delete;
 
-  /// Symbolic analysis of K's pattern (the lower triangle is read) with CHOLMOD's ordering
-  /// `cholmod_ordering` (CHOLMOD_AMD, CHOLMOD_NESDIS, ...). `threads` > 1 factorises
-  /// independent subtrees concurrently. Throws std::runtime_error if CHOLMOD fails.
-  void analyze(const SparseMatrix& K, int cholmod_ordering, int threads = 1);
+  /// What the symbolic analysis found, for the ordering CHOLMOD kept.
+  struct Analysis {
+    int ordering = 0;              ///< CHOLMOD's ordering (CHOLMOD_AMD, CHOLMOD_NESDIS, ...)
+    double factor_nonzeros = 0.0;  ///< entries of L (without the amalgamation's zeros)
+    double flops = 0.0;            ///< of one numeric factorisation, as CHOLMOD counts them
+  };
+
+  /// Symbolic analysis of K's pattern (the lower triangle is read) with each of CHOLMOD's
+  /// `orderings` (CHOLMOD_AMD, CHOLMOD_NESDIS, ...); CHOLMOD keeps the one needing the fewest
+  /// flops. `threads` > 1 factorises independent subtrees concurrently (see use_threads).
+  /// Throws std::runtime_error if CHOLMOD fails.
+  Analysis analyze(const SparseMatrix& K, const std::vector<int>& orderings, int threads = 1);
+  Analysis analyze(const SparseMatrix& K, int ordering, int threads = 1) {
+    return analyze(K, std::vector<int>{ordering}, threads);
+  }
+
+  /// Split the analysed elimination tree over `threads` threads (1: all on the caller's);
+  /// for choosing the count from the analysis's flops.
+  void use_threads(int threads);
 
   /// Numeric factorisation of K (same pattern as analysed). False if K is not positive
   /// definite (a pivot is not positive or not finite): the factor is then unusable.
@@ -44,7 +59,6 @@ class SupernodalCholesky {
   /// x with K x = b, from the last successful factorisation.
   VectorX solve(const VectorX& b) const;
 
-  bool analyzed() const;
   double factor_nonzeros() const;  ///< entries of L, explicit zeros of amalgamation included
   int supernodes() const;
   /// Threads that factorise a share of the elimination tree (1: no split paid off).

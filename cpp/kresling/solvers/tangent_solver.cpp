@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Dense>
@@ -59,11 +60,9 @@ Ordering ordering_of(int cholmod_ordering) {
 
 // The orderings to try: AMD alone for small tangents, AMD and CHOLMOD's nested dissection
 // (METIS bisection) from kTryNestedDissection DOFs up; CHOLMOD keeps the better one.
-void set_orderings(cholmod_common& c, Index n) {
-  c.nmethods = n >= kTryNestedDissection ? 2 : 1;
-  c.method[0].ordering = CHOLMOD_AMD;
-  c.method[1].ordering = CHOLMOD_NESDIS;
-  c.postorder = 1;
+std::vector<int> orderings_for(Index n) {
+  if (n >= kTryNestedDissection) return {CHOLMOD_AMD, CHOLMOD_NESDIS};
+  return {CHOLMOD_AMD};
 }
 
 // LDL^T by CHOLMOD (simplicial, no pivoting: D's signs are the inertia by Sylvester's law),
@@ -124,7 +123,7 @@ class CholmodLdlt {
 
 }  // namespace
 
-CholeskyChoice choose_cholesky(Index n, double /*factor_nonzeros*/, double /*flops*/) {
+CholeskyChoice choose_cholesky(Index n) {
   return n < kDenseBelow ? CholeskyChoice::Dense : CholeskyChoice::Supernodal;
 }
 
@@ -156,27 +155,28 @@ struct TangentSolver::Impl {
 void TangentSolver::Impl::make_plan(const SparseMatrix& K) {
   const auto start = std::chrono::steady_clock::now();
   const Index n = K.rows();
-  // The symbolic analysis is what the cost model needs (flops, factor entries); it is
-  // kept for the simplicial factorisation, or redone with the same ordering if the
-  // supernodal one is chosen. A forced dense factorisation skips it.
-  if (requested == CholeskyChoice::Dense) {
-    plan.cholesky = CholeskyChoice::Dense;
-  } else {
+  // The choice needs only the size; the symbolic analysis is then done once, by the
+  // factorisation chosen, and gives the plan its ordering, factor entries and flops.
+  plan.cholesky = requested == CholeskyChoice::Auto ? choose_cholesky(n) : requested;
+  auto record = [&](int ordering, double factor_nonzeros, double flops) {
+    cholmod_ordering = ordering;
+    plan.ordering = ordering_of(ordering);
+    plan.factor_nonzeros = factor_nonzeros;
+    plan.flops = flops;
+  };
+  if (plan.cholesky == CholeskyChoice::Simplicial) {
     cholmod_common& c = cholesky.cholmod();
-    set_orderings(c, n);
+    const std::vector<int> orderings = orderings_for(n);
+    c.nmethods = static_cast<int>(orderings.size());
+    for (std::size_t k = 0; k < orderings.size(); ++k) c.method[k].ordering = orderings[k];
+    c.postorder = 1;
     cholesky.analyzePattern(K);
-    plan.factor_nonzeros = c.lnz;
-    plan.flops = c.fl;
-    const int selected = c.method[c.selected].ordering;
-    cholmod_ordering = selected;
-    plan.ordering = ordering_of(selected);
-    plan.cholesky = requested == CholeskyChoice::Auto ? choose_cholesky(n, c.lnz, c.fl)
-                                                       : requested;
-    if (plan.cholesky == CholeskyChoice::Supernodal) {
-      supernodal.analyze(K, selected, threads_for(c.fl));
-    }
-  }
-  if (plan.cholesky == CholeskyChoice::Dense) {
+    record(c.method[c.selected].ordering, c.lnz, c.fl);
+  } else if (plan.cholesky == CholeskyChoice::Supernodal) {
+    const SupernodalCholesky::Analysis a = supernodal.analyze(K, orderings_for(n));
+    supernodal.use_threads(threads_for(a.flops));
+    record(a.ordering, a.factor_nonzeros, a.flops);
+  } else {
     const double m = static_cast<double>(n);
     plan.ordering = Ordering::None;
     plan.factor_nonzeros = m * (m + 1) / 2;

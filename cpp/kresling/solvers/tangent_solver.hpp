@@ -63,10 +63,9 @@ struct FactorizationPlan {
   double analysis_seconds = 0.0; ///< symbolic analysis and choice, once per pattern
 };
 
-/// The cost model behind CholeskyChoice::Auto, for a tangent of n DOFs whose sparse factor
-/// (with the chosen ordering) has `factor_nonzeros` entries and costs `flops`. Exposed so
-/// that the rule can be tested and printed by the benchmarks.
-CholeskyChoice choose_cholesky(Index n, double factor_nonzeros, double flops);
+/// The cost model behind CholeskyChoice::Auto, for a tangent of n DOFs: measured, it needs
+/// only the size (tangent_solver.cpp has the table). Exposed so that the rule can be tested.
+CholeskyChoice choose_cholesky(Index n);
 
 class TangentSolver {
  public:
