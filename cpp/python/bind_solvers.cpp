@@ -95,13 +95,35 @@ StopRule stop_rule(const py::object& callable) {
   };
 }
 
-}  // namespace
-
 // 0 auto, 1 dense, 2 simplicial (CHOLMOD), 3 supernodal (Eigen kernels); checked in Python.
 CholeskyChoice cholesky_choice(int v) {
   if (v < 0 || v > 3) throw std::invalid_argument("cholesky must be 0, 1, 2 or 3");
   return static_cast<CholeskyChoice>(v);
 }
+
+// The controls every path-following solver shares: Newton's (tolerance, iterations, the
+// Cholesky used), the diagonal shift and the stopping rule.
+template <class Options>
+py::class_<Options> bind_path_options(py::module_& m, const char* name) {
+  py::class_<Options> options(m, name);
+  options.def(py::init<>())
+      .def_property(
+          "tolerance", [](const Options& o) { return o.newton.tolerance; },
+          [](Options& o, double v) { o.newton.tolerance = v; })
+      .def_property(
+          "max_iterations", [](const Options& o) { return o.newton.max_iterations; },
+          [](Options& o, int v) { o.newton.max_iterations = v; })
+      .def_property(
+          "cholesky", [](const Options& o) { return static_cast<int>(o.newton.cholesky); },
+          [](Options& o, int v) { o.newton.cholesky = cholesky_choice(v); })
+      .def_readwrite("shift", &Options::shift)
+      .def_property(
+          "stop", [](const Options& o) { return static_cast<bool>(o.stop); },
+          [](Options& o, const py::object& f) { o.stop = stop_rule(f); });
+  return options;
+}
+
+}  // namespace
 
 void bind_solvers(py::module_& m) {
   bind_path_result(m);
@@ -110,28 +132,13 @@ void bind_solvers(py::module_& m) {
   m.attr("MAX_BISECTIONS") = kMaxBisections;
   m.attr("MAX_ITERATIONS") = kMaxIterations;
   m.attr("MAX_SHIFT") = kMaxShift;
-  py::class_<DisplacementControlOptions>(m, "DisplacementControlOptions")
-      .def(py::init<>())
-      .def_property(
-          "tolerance", [](const DisplacementControlOptions& o) { return o.newton.tolerance; },
-          [](DisplacementControlOptions& o, double v) { o.newton.tolerance = v; })
-      .def_property(
-          "max_iterations", [](const DisplacementControlOptions& o) { return o.newton.max_iterations; },
-          [](DisplacementControlOptions& o, int v) { o.newton.max_iterations = v; })
-      .def_property(
-          "cholesky",
-          [](const DisplacementControlOptions& o) { return static_cast<int>(o.newton.cholesky); },
-          [](DisplacementControlOptions& o, int v) { o.newton.cholesky = cholesky_choice(v); })
+  bind_path_options<DisplacementControlOptions>(m, "DisplacementControlOptions")
       .def_readwrite("reject_iterations", &DisplacementControlOptions::reject_iterations)
       .def_readwrite("max_bisections", &DisplacementControlOptions::max_bisections)
-      .def_readwrite("shift", &DisplacementControlOptions::shift)
       .def_readwrite("extrapolation", &DisplacementControlOptions::extrapolation)
       .def_readwrite("merlin2_steps", &DisplacementControlOptions::merlin2_steps)
       .def_readwrite("adaptive", &DisplacementControlOptions::adaptive)
-      .def_readwrite("adaptive_tolerance", &DisplacementControlOptions::adaptive_tolerance)
-      .def_property(
-          "stop", [](const DisplacementControlOptions& o) { return static_cast<bool>(o.stop); },
-          [](DisplacementControlOptions& o, const py::object& f) { o.stop = stop_rule(f); });
+      .def_readwrite("adaptive_tolerance", &DisplacementControlOptions::adaptive_tolerance);
 
   m.def(
       "displacement_control",
@@ -147,23 +154,8 @@ void bind_solvers(py::module_& m) {
       py::arg("model"), py::arg("prescribed"), py::arg("steps"), py::arg("options"),
       py::arg("initial"));
 
-  py::class_<ForceControlOptions>(m, "ForceControlOptions")
-      .def(py::init<>())
-      .def_property(
-          "tolerance", [](const ForceControlOptions& o) { return o.newton.tolerance; },
-          [](ForceControlOptions& o, double v) { o.newton.tolerance = v; })
-      .def_property(
-          "max_iterations", [](const ForceControlOptions& o) { return o.newton.max_iterations; },
-          [](ForceControlOptions& o, int v) { o.newton.max_iterations = v; })
-      .def_property(
-          "cholesky",
-          [](const ForceControlOptions& o) { return static_cast<int>(o.newton.cholesky); },
-          [](ForceControlOptions& o, int v) { o.newton.cholesky = cholesky_choice(v); })
-      .def_readwrite("max_bisections", &ForceControlOptions::max_bisections)
-      .def_readwrite("shift", &ForceControlOptions::shift)
-      .def_property(
-          "stop", [](const ForceControlOptions& o) { return static_cast<bool>(o.stop); },
-          [](ForceControlOptions& o, const py::object& f) { o.stop = stop_rule(f); });
+  bind_path_options<ForceControlOptions>(m, "ForceControlOptions")
+      .def_readwrite("max_bisections", &ForceControlOptions::max_bisections);
 
   m.def(
       "force_control",
@@ -179,28 +171,13 @@ void bind_solvers(py::module_& m) {
       py::arg("model"), py::arg("forces"), py::arg("steps"), py::arg("options"),
       py::arg("initial"));
 
-  py::class_<MgdcmOptions>(m, "MgdcmOptions")
-      .def(py::init<>())
-      .def_property(
-          "tolerance", [](const MgdcmOptions& o) { return o.newton.tolerance; },
-          [](MgdcmOptions& o, double v) { o.newton.tolerance = v; })
-      .def_property(
-          "max_iterations", [](const MgdcmOptions& o) { return o.newton.max_iterations; },
-          [](MgdcmOptions& o, int v) { o.newton.max_iterations = v; })
-      .def_property(
-          "cholesky",
-          [](const MgdcmOptions& o) { return static_cast<int>(o.newton.cholesky); },
-          [](MgdcmOptions& o, int v) { o.newton.cholesky = cholesky_choice(v); })
+  bind_path_options<MgdcmOptions>(m, "MgdcmOptions")
       .def_readwrite("initial_load_factor", &MgdcmOptions::initial_load_factor)
       .def_readwrite("max_increments", &MgdcmOptions::max_increments)
       .def_readwrite("max_load_factor", &MgdcmOptions::max_load_factor)
       .def_readwrite("monitor_dof", &MgdcmOptions::monitor_dof)
       .def_readwrite("max_displacement", &MgdcmOptions::max_displacement)
-      .def_readwrite("max_step_factor", &MgdcmOptions::max_step_factor)
-      .def_readwrite("shift", &MgdcmOptions::shift)
-      .def_property(
-          "stop", [](const MgdcmOptions& o) { return static_cast<bool>(o.stop); },
-          [](MgdcmOptions& o, const py::object& f) { o.stop = stop_rule(f); });
+      .def_readwrite("max_step_factor", &MgdcmOptions::max_step_factor);
 
   m.def(
       "mgdcm",
