@@ -202,18 +202,12 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
   PathResult result;
   result.constraint_dofs = imposed;
   const model::Model& model = assembler_->model();
-  const VectorX no_load = VectorX::Zero(start.size());
   const double spacing = 1.0 / steps;
   const double smallest = std::ldexp(spacing, -options_.max_bisections);
   const double event_width = kEventWidth * spacing;
   auto sample_at = [&](int k) { return k == steps ? 1.0 : k * spacing; };
   auto newton = [&](VectorX& w, double t) {
-    for (Index i : imposed) w[i] = start[i] + t * prescribed[i];
-    return newton_equilibrium(*assembler_, *solver_, w, no_load, options_.newton,
-                              options_.reject_iterations);
-  };
-  auto accepted = [&](const NewtonOutcome& o) {
-    return o.converged && o.iterations < options_.reject_iterations;
+    return equilibrium_at(w, t, start, prescribed, imposed);
   };
   auto why = [&](const NewtonOutcome& o) {
     return o.failure.empty() ? "Newton needed " + std::to_string(o.iterations) + " iterations"

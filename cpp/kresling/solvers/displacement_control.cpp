@@ -105,7 +105,7 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
       full.reset();
     }
   } unbind{assembler_, full_assembler_};
-  const VectorX no_load = VectorX::Zero(n);
+  no_load_.setZero(n);
   VectorX u = initial.size() ? initial : VectorX::Zero(n);
   if (options_.merlin2_steps) return solve_merlin2_steps(prescribed, steps, imposed, u);
   // Cables are tension-only: their slack kink is not located, so they keep fixed steps.
@@ -126,12 +126,7 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
   std::vector<VectorX> path_u{u};
   int previous_negative = 0;  // stability of the last accepted equilibrium
   auto solve_from = [&](VectorX& trial, double t_new) {
-    for (Index i : imposed) trial[i] = start[i] + t_new * prescribed[i];
-    return newton_equilibrium(*assembler_, *solver_, trial, no_load, options_.newton,
-                              options_.reject_iterations);
-  };
-  auto accepted = [&](const NewtonOutcome& o) {
-    return o.converged && o.iterations < options_.reject_iterations;
+    return equilibrium_at(trial, t_new, start, prescribed, imposed);
   };
   march(steps, options_.max_bisections, result,
         [&](double, double t_new, std::string& failure) {
@@ -240,7 +235,7 @@ PathResult DisplacementControl::solve_merlin2_steps(const VectorX& prescribed, i
     const double limit = ((step_size > 1.0) + 1.0) * max_iterations / (damping + 1.0);
     const int budget = std::min(max_iterations, static_cast<int>(std::ceil(limit)));
     const NewtonOutcome outcome =
-        damping == 1.0 ? newton_equilibrium(*assembler_, *solver_, trial, VectorX::Zero(u.size()),
+        damping == 1.0 ? newton_equilibrium(*assembler_, *solver_, trial, no_load_,
                                             options_.newton, budget)
                        : damped_newton(*assembler_, *solver_, trial, options_.newton, damping);
     PathStep step;
@@ -282,6 +277,18 @@ PathResult DisplacementControl::solve_merlin2_steps(const VectorX& prescribed, i
                      "in a row; last: " + last_failure;
   }
   return result;
+}
+
+NewtonOutcome DisplacementControl::equilibrium_at(VectorX& u, double t, const VectorX& start,
+                                                 const VectorX& prescribed,
+                                                 const std::vector<Index>& imposed) {
+  for (Index i : imposed) u[i] = start[i] + t * prescribed[i];
+  return newton_equilibrium(*assembler_, *solver_, u, no_load_, options_.newton,
+                            options_.reject_iterations);
+}
+
+bool DisplacementControl::accepted(const NewtonOutcome& outcome) const {
+  return outcome.converged && outcome.iterations < options_.reject_iterations;
 }
 
 PathResult solve_displacement_control(const model::Model& model, const VectorX& prescribed,

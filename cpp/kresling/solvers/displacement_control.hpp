@@ -16,6 +16,7 @@
 
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/model/model.hpp"
+#include "kresling/solvers/newton.hpp"
 #include "kresling/solvers/path.hpp"
 #include "kresling/solvers/tangent_solver.hpp"
 
@@ -83,6 +84,11 @@ class DisplacementControl {
                                  const std::vector<Index>& imposed, VectorX u);
   PathResult solve_adaptive(const VectorX& prescribed, int steps,
                             const std::vector<Index>& imposed, const VectorX& start);
+  // Newton from `u` with the imposed DOFs at start + t * prescribed, no external load.
+  NewtonOutcome equilibrium_at(VectorX& u, double t, const VectorX& start,
+                               const VectorX& prescribed, const std::vector<Index>& imposed);
+  // Converged within an increment's budget (fewer than reject_iterations iterations).
+  bool accepted(const NewtonOutcome& outcome) const;
 
   DisplacementControlOptions options_;
   // Kept from one solve to the next, with no reference to any model: the workspace
@@ -95,6 +101,7 @@ class DisplacementControl {
   std::unique_ptr<assembly::Workspace> full_workspace_;
   std::optional<assembly::Assembler> full_assembler_;
   std::vector<std::uint8_t> held_;  // constraints the cached pattern was built for
+  VectorX no_load_;                  // zero external force, sized by solve
   // The model of the solve under way bound to workspace_; emptied when solve returns.
   std::optional<assembly::Assembler> assembler_;
 };
