@@ -103,6 +103,19 @@ def octave_seconds(merlin: Path, case: Path) -> float:
     return float("nan")
 
 
+def rows(repeat: int, octave):
+    """Per example and variant: (label, simulation, MERLIN2's recorded s, live s or NaN,
+    ours s, ratio of MERLIN2's time, live if timed, to ours)."""
+    for problem in sorted(EXAMPLES.glob("*/problem.toml")):
+        case = problem.parent
+        live = octave_seconds(octave, case) if octave else float("nan")
+        recorded = recorded_seconds(case)
+        reference = live if live == live else recorded
+        for label, posed in variants(problem):
+            seconds, sim = ours(posed, repeat)
+            yield label, sim, recorded, live, seconds, reference / seconds
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=5)
@@ -111,16 +124,11 @@ def main(argv=None):
     args = parser.parse_args(argv)
     print(f"{'example':<26} {'nodes':>5} {'bars':>5} {'hinges':>6} {'incr':>5} "
           f"{'MERLIN2 s':>10} {'live s':>8} {'ours s':>8} {'ratio':>7}")
-    for problem in sorted(EXAMPLES.glob("*/problem.toml")):
-        case = problem.parent
-        live = octave_seconds(args.octave, case) if args.octave else float("nan")
-        reference = live if live == live else recorded_seconds(case)
-        for label, posed in variants(problem):
-            seconds, sim = ours(posed, args.repeat)
-            m = sim.model
-            print(f"{label:<26} {m.num_nodes:>5} {len(m.bars):>5} {len(m.hinges):>6} "
-                  f"{sim.path.num_steps:>5} {recorded_seconds(case):>10.3f} {live:>8.3f} "
-                  f"{seconds:>8.4f} {reference / seconds:>7.0f}")
+    for label, sim, recorded, live, seconds, ratio in rows(args.repeat, args.octave):
+        m = sim.model
+        print(f"{label:<26} {m.num_nodes:>5} {len(m.bars):>5} {len(m.hinges):>6} "
+              f"{sim.path.num_steps:>5} {recorded:>10.3f} {live:>8.3f} {seconds:>8.4f} "
+              f"{ratio:>7.0f}")
     print("\nMERLIN2 s: its path-analysis time as recorded with the reference run; live s: "
           "timed now (with --octave); ratio: MERLIN2 (live if timed) over ours. 'adaptive': "
           "the same samples, the path between them in adaptive increments.")

@@ -83,16 +83,10 @@ def examples_table(repeat, octave):
               f"{'live s':>8} {'ours s':>8} {'ratio':>7}")
     print(header)
     print("-" * len(header))
-    for problem in sorted(simulate_speed.EXAMPLES.glob("*/problem.toml")):
-        case = problem.parent
-        live = simulate_speed.octave_seconds(octave, case) if octave else float("nan")
-        recorded = simulate_speed.recorded_seconds(case)
-        reference = live if live == live else recorded
-        for label, posed in simulate_speed.variants(problem):
-            seconds, sim = simulate_speed.ours(posed, repeat)
-            print(f"{label:<26} {sim.model.num_nodes:>5} {sim.model.num_dofs:>5} "
-                  f"{sim.path.num_steps:>5} {recorded:>10.3f} {live:>8.3f} {seconds:>8.4f} "
-                  f"{reference / seconds:>7.0f}")
+    for label, sim, recorded, live, seconds, ratio in simulate_speed.rows(repeat, octave):
+        print(f"{label:<26} {sim.model.num_nodes:>5} {sim.model.num_dofs:>5} "
+              f"{sim.path.num_steps:>5} {recorded:>10.3f} {live:>8.3f} {seconds:>8.4f} "
+              f"{ratio:>7.0f}")
     print("ratio: MERLIN2 (live if timed, else recorded) over ours (goal: 200x each); "
           "'adaptive': the same samples, the path between them in adaptive increments")
 
