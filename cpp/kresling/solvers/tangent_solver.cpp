@@ -136,8 +136,7 @@ struct TangentSolver::Impl {
   // matrix and its L1 norm (for rcond, not used here): ~10 % of a 136-DOF factorisation.
   // The strict upper triangle stays zero (the lower-triangle algorithm never touches it).
   Eigen::MatrixXd dense_matrix;
-  // CHOLMOD's simplicial factorisation: its symbolic analysis chooses the ordering and
-  // counts the flops for every sparse plan; its numeric one serves when forced.
+  // CHOLMOD's simplicial factorisation, when forced (comparisons, tests).
   Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> cholesky;
   SupernodalCholesky supernodal;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt;
