@@ -14,7 +14,7 @@ import json
 
 import pytest
 
-from cli_helpers import run_kresling
+from cli_helpers import run_kresling, run_kresling_json
 from kresling import Design
 from kresling.analyses import linear_bending_stiffness, snap_through
 from kresling.model import MOUNTAIN_CREASES, SpecimenParameters
@@ -24,9 +24,7 @@ DESIGN = ("--n", "4", "--lam", "0.7", "--Lc", "30")
 
 
 def run_json(tmp_path, *args):
-    result = run_kresling(*args, "--json", cwd=tmp_path)
-    assert result.returncode == 0, result.stderr
-    return json.loads(result.stdout)
+    return run_kresling_json(*args, cwd=tmp_path)
 
 
 def test_options_set_the_specimen_parameters(tmp_path):

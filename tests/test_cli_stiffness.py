@@ -4,19 +4,16 @@ the K_B ratio does not move (to the Newton tolerance, ~1e-9 relative)."""
 
 from __future__ import annotations
 
-import json
 
 import pytest
 
-from cli_helpers import run_kresling
+from cli_helpers import run_kresling, run_kresling_json
 
 DESIGN = ("--n", "4", "--lam", "0.7", "--Lc", "30")
 
 
 def run_json(tmp_path, *args):
-    result = run_kresling(*args, "--json", cwd=tmp_path)
-    assert result.returncode == 0, result.stderr
-    return json.loads(result.stdout)
+    return run_kresling_json(*args, cwd=tmp_path)
 
 
 def test_bend_scales_with_kf(tmp_path):
