@@ -103,7 +103,7 @@ CholeskyChoice cholesky_choice(int v) {
 
 // The controls every path-following solver shares: Newton's (tolerance, iterations, the
 // Cholesky used), the diagonal shift and the stopping rule.
-template <class Options>
+template <typename Options>
 py::class_<Options> bind_path_options(py::module_& m, const char* name) {
   py::class_<Options> options(m, name);
   options.def(py::init<>())
