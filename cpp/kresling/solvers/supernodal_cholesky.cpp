@@ -372,33 +372,48 @@ bool SupernodalCholesky::factorize(const SparseMatrix& K) {
 
 // Forward and back substitution, supernode by supernode, column by column: the supernodes
 // of small models are a few columns wide, where plain loops over a column (contiguous in the
-// factor) beat the dense triangular solver's per-call overhead.
+// factor) beat the dense triangular solver's per-call overhead. The rows below a supernode's
+// own columns are gathered into (or scattered from) a contiguous buffer once per supernode,
+// so that the work on them is a contiguous, vectorised product per column instead of an
+// indexed access per entry.
 VectorX SupernodalCholesky::solve(const VectorX& b) const {
   const Impl& m = *impl_;
   if (!m.ok) throw std::logic_error("SupernodalCholesky::solve called without a factorisation");
+  using Column = Eigen::Map<const VectorX>;
   VectorX y(m.n);
   for (Index k = 0; k < m.n; ++k) y[k] = b[m.perm[k]];
   double* v = y.data();
+  int widest = 0;  // rows below a supernode's own columns, at most
+  for (int s = 0; s < m.nsuper; ++s) {
+    widest = std::max(widest, (m.pi[s + 1] - m.pi[s]) - (m.super[s + 1] - m.super[s]));
+  }
+  VectorX below(widest);
   for (int s = 0; s < m.nsuper; ++s) {  // L y = P b
     const int k1 = m.super[s], ncol = m.super[s + 1] - k1, nrow = m.pi[s + 1] - m.pi[s];
-    const int* r = m.rows.data() + m.pi[s];
+    const int nbelow = nrow - ncol;
+    const int* r = m.rows.data() + m.pi[s] + ncol;
     const double* L = m.values.data() + m.px[s];
+    auto update = below.head(nbelow);
+    update.setZero();
     for (int j = 0; j < ncol; ++j) {
       const double* column = L + static_cast<Index>(j) * nrow;
       const double x = v[k1 + j] /= column[j];
       for (int i = j + 1; i < ncol; ++i) v[k1 + i] -= column[i] * x;
-      for (int i = ncol; i < nrow; ++i) v[r[i]] -= column[i] * x;
+      update.noalias() += x * Column(column + ncol, nbelow);
     }
+    for (int i = 0; i < nbelow; ++i) v[r[i]] -= update[i];
   }
   for (int s = m.nsuper - 1; s >= 0; --s) {  // L^T z = y
     const int k1 = m.super[s], ncol = m.super[s + 1] - k1, nrow = m.pi[s + 1] - m.pi[s];
-    const int* r = m.rows.data() + m.pi[s];
+    const int nbelow = nrow - ncol;
+    const int* r = m.rows.data() + m.pi[s] + ncol;
     const double* L = m.values.data() + m.px[s];
+    auto solved = below.head(nbelow);
+    for (int i = 0; i < nbelow; ++i) solved[i] = v[r[i]];
     for (int j = ncol - 1; j >= 0; --j) {
       const double* column = L + static_cast<Index>(j) * nrow;
-      double sum = v[k1 + j];
+      double sum = v[k1 + j] - Column(column + ncol, nbelow).dot(solved);
       for (int i = j + 1; i < ncol; ++i) sum -= column[i] * v[k1 + i];
-      for (int i = ncol; i < nrow; ++i) sum -= column[i] * v[r[i]];
       v[k1 + j] = sum / column[j];
     }
   }
