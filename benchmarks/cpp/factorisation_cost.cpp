@@ -1,8 +1,10 @@
 // Calibration of the tangent solver's cost model (kresling/solvers/tangent_solver.cpp):
 // for each symmetric matrix given (Matrix Market, the lower triangle of a tangent restricted
-// to its free DOFs; `python benchmarks/speed.py --export-tangents DIR` writes the Miura
-// sheets' and the Kresling towers'), the time of one factorisation by every candidate, the
-// factor's entries and flops with each ordering, and what the cost model picks.
+// to its free DOFs, e.g. K = kresling.assembly.tangent_stiffness(model, u, shift=1e-8)
+// written by scipy.io.mmwrite(path, scipy.sparse.tril(K[free][:, free]),
+// symmetry="symmetric")), the time of one factorisation by every candidate, the factor's
+// entries and flops with each ordering, one solve with ours and with CHOLMOD's simplicial
+// factor, and what the cost model picks.
 //
 // Run: build/py/factorisation_cost DIR/*.mtx  (built with KRESLING_BUILD_BENCHMARKS=ON).
 
