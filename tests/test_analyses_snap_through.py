@@ -113,7 +113,7 @@ def test_odd_n_runs():
     (lambda: snap_through(Design(8, 0.8, 30), steps=0), r"steps = 0 is invalid"),
     (lambda: SnapThroughTester(8).run(Design(6, 0.8, 30)), r"design.n = 6 is invalid"),
     (lambda: SnapThroughTester(2), r"n = 2 is invalid"),
-    (lambda: snap_through(Design(8, 0.8, 30), extrapolation=3), r"extrapolation = 3 is invalid"),
+    (lambda: snap_through(Design(8, 0.8, 30), extrapolation=4), r"extrapolation = 4 is invalid"),
 ])
 def test_bad_input(call, message):
     with pytest.raises(ValueError, match=message):

@@ -183,25 +183,31 @@ def test_energy_split_equals_merlin2s(simulated):
         assert np.abs(values - ref).max() <= 1e-7 * scale + 1e-15, ours
 
 
-def test_adaptive_increments_follow_merlin2s_gmiura_path():
-    # The GMiura point load with increments = "adaptive": the same 200 samples, the path
-    # between them in adaptive increments (MERLIN2 took 1,863 Newton iterations). MERLIN2's
-    # own increments are the samples k/200 up to its first rejected one (188): there the two
-    # paths agree as the adaptive samples are meant to, the reaction within 1e-8 of its
-    # largest value, and the displacements within MERLIN2's Newton tolerance (1e-6 mm), as
-    # the fixed-step comparisons above. Measured: 3.6e-10 and 1.2e-7 mm, in 274 iterations.
+@pytest.mark.parametrize("analysis, share", [
+    ({"increments": "adaptive"}, 0.2),
+    ({"predictor": "cubic"}, 0.3),
+], ids=["adaptive increments", "fixed increments, cubic predictor"])
+def test_faster_modes_follow_merlin2s_gmiura_path(analysis, share):
+    # The GMiura point load's 200 samples, followed in adaptive increments, or in its fixed
+    # ones with each Newton solve started from a cubic extrapolation of the path (MERLIN2
+    # took 1,863 Newton iterations from the previous equilibrium). MERLIN2's own increments
+    # are the samples k/200 up to its first rejected one (188): there the paths agree as
+    # the samples are meant to, the reaction within 1e-8 of its largest value, and the
+    # displacements within MERLIN2's Newton tolerance (1e-6 mm), as the fixed-step
+    # comparisons above. Measured: adaptive 3.6e-10 and 1.2e-7 mm in 274 iterations; cubic
+    # predictor 3.9e-12 and 1.2e-7 mm in 481 iterations.
     case = "gmiura_pointload"
     problem = load_problem(DATA / case / "problem.toml")
-    adaptive = simulate(dataclasses.replace(
-        problem, analysis=dataclasses.replace(problem.analysis, increments="adaptive")),
-        progress=False)
+    ours = simulate(dataclasses.replace(
+        problem, analysis=dataclasses.replace(problem.analysis, **analysis)), progress=False)
     ref_u, ref_f = reference(case, "Uhis.csv"), reference(case, "Fhis.csv").ravel()
     drive = reference(case, "load.csv").ravel()
     fraction = ref_u @ drive / (drive @ drive)
     same = np.flatnonzero(np.abs(fraction - np.arange(1, len(fraction) + 1) / 200) < 1e-12)
-    assert adaptive.completed and len(same) == 187 and same[-1] == 186
-    np.testing.assert_allclose(adaptive.path.load_factor[same], fraction[same], rtol=1e-12)
-    assert np.abs(adaptive.path.displacement[same] - ref_u[same]).max() <= 1e-6
-    reaction = np.asarray(adaptive.path.constraint_force)[same, 0]
+    assert ours.completed and ours.path.num_steps == 200
+    assert len(same) == 187 and same[-1] == 186
+    np.testing.assert_allclose(ours.path.load_factor[same], fraction[same], rtol=1e-12)
+    assert np.abs(ours.path.displacement[same] - ref_u[same]).max() <= 1e-6
+    reaction = np.asarray(ours.path.constraint_force)[same, 0]
     assert np.abs(reaction - ref_f[same]).max() <= 1e-8 * np.abs(ref_f).max()
-    assert adaptive.path.iterations.sum() < 0.2 * 1863
+    assert ours.path.iterations.sum() < share * 1863

@@ -245,7 +245,7 @@ class BendingTester:
         Even; the load acts on the middle polygon.
     parameters : SpecimenParameters, optional
         Stiffness assignment (the thesis's by default).
-    extrapolation : {0, 1, 2}, default 2
+    extrapolation : {0, 1, 2, 3}, default 2
         Starting guess of each increment (see ``solve_displacement_control``): 2 converges
         in about one Newton iteration per increment to the same equilibria as MERLIN2's 0.
     adaptive : bool, optional

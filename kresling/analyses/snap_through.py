@@ -219,7 +219,7 @@ class SnapThroughTester:
         Displacement increments from ``Le`` to ``Lc``.
     parameters : SpecimenParameters, optional
         Stiffness assignment (the thesis's by default).
-    extrapolation : {0, 1, 2}, default 2
+    extrapolation : {0, 1, 2, 3}, default 2
         Starting guess of each increment (see ``solve_displacement_control``).
     **solver
         Other options of ``solve_displacement_control`` (tolerance, max_iterations, ...).

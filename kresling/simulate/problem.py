@@ -43,6 +43,9 @@ __all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_proble
 METHODS = ("displacement_control", "force_control", "mgdcm")
 #: How displacement control steps between its samples.
 INCREMENTS = ("fixed", "adaptive")
+#: Displacement control with fixed increments: each Newton solve's start, by the order of its
+#: extrapolation along the path (the previous equilibrium, then through 2, 3 or 4 of them).
+PREDICTORS = ("previous", "linear", "quadratic", "cubic")
 _AXES = {"x": 0, "y": 1, "z": 2}
 
 
@@ -91,6 +94,11 @@ class Analysis:
     #: Displacement control: "fixed" (equal increments, MERLIN2's step control under
     #: merlin2_compat) or "adaptive" (the same samples, increments by an error estimate).
     increments: str = "fixed"
+    #: Displacement control with fixed increments: each increment's Newton start, one of
+    #: PREDICTORS ("previous": the last equilibrium, as MERLIN2; the others extrapolate the
+    #: path through the last equilibria; a start other than "previous" uses bisection, not
+    #: MERLIN2's step control, under merlin2_compat).
+    predictor: str = "previous"
 
 
 @dataclass(frozen=True)
@@ -357,6 +365,10 @@ def _read_analysis(t, num_nodes):
     if method == "displacement_control":
         settings["increments"] = t.get("increments", _string, "fixed",
                                        choices=INCREMENTS)
+        if settings["increments"] == "adaptive" and t.has("predictor"):
+            t.fail("predictor", "applies to fixed increments only: adaptive increments start "
+                                "each Newton solve from their own cubic Hermite curves")
+        settings["predictor"] = t.get("predictor", _string, "previous", choices=PREDICTORS)
     else:
         settings["initial_load_factor"] = t.get("initial_load_factor", _number, 0.01)
         if settings["initial_load_factor"] == 0:

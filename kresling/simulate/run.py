@@ -11,7 +11,7 @@ import numpy as np
 
 from kresling.model import PatternModel, build_pattern_model
 from kresling.simulate.element_histories import ElementHistories, element_histories
-from kresling.simulate.problem import _AXES, Problem, load_problem
+from kresling.simulate.problem import _AXES, PREDICTORS, Problem, load_problem
 from kresling.solvers import (PathResult, solve_displacement_control, solve_force_control,
                               solve_mgdcm)
 
@@ -216,10 +216,11 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
     try:
         if analysis.method == "displacement_control":
             adaptive = analysis.increments == "adaptive"
+            order = PREDICTORS.index(analysis.predictor)  # its extrapolation's order
             path = solve_displacement_control(
                 model, vector, analysis.steps, adaptive=adaptive,
-                adaptive_tolerance=ADAPTIVE_TOLERANCE,
-                merlin2_steps=problem.merlin2_compat and not adaptive, **common)
+                adaptive_tolerance=ADAPTIVE_TOLERANCE, extrapolation=order,
+                merlin2_steps=problem.merlin2_compat and not adaptive and order == 0, **common)
         elif analysis.method == "force_control":
             path = solve_force_control(model, vector, analysis.steps, **common)
         else:

@@ -36,11 +36,14 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
         0 to 30: an increment may be cut to 1/2^max_bisections of its size.
     shift : float
         Added to the tangent's diagonal (MERLIN2: 1e-8); 0 to 1e-3 N/mm.
-    extrapolation : {0, 1, 2}
+    extrapolation : {0, 1, 2, 3}
         Starting guess of each increment's free DOFs: the previous equilibrium (0, MERLIN2's
-        iteration sequence), or a linear (1) or quadratic (2) extrapolation along the path.
-        The equilibrium found is the same to the Newton tolerance; 2 typically needs one
-        iteration per increment instead of three.
+        iteration sequence), or a linear (1), quadratic (2) or cubic (3) extrapolation along
+        the path through the last 2, 3 or 4 equilibria. The equilibrium found is the same to
+        the Newton tolerance; 2 typically needs one iteration per increment instead of
+        three. Where Newton converges only linearly (MERLIN2's super-linear bend law on
+        nearly flat panels) the cubic saves most: MERLIN2's GMiura point load takes 1,877,
+        626 and 481 iterations in its 200 increments with 0, 2 and 3.
     initial : array_like, optional
         Starting displacement (default zero).
     merlin2_steps : bool, default False
@@ -102,8 +105,8 @@ def displacement_control_options(*, tolerance=1e-6, max_iterations=50, reject_it
                                  merlin2_steps=False, adaptive=False, adaptive_tolerance=1e-9,
                                  cholesky="auto", stop=None):
     """Checked C++ options object (see :func:`solve_displacement_control` for meanings)."""
-    if extrapolation not in (0, 1, 2) or isinstance(extrapolation, bool):
-        raise ValueError(f"extrapolation = {extrapolation!r} is invalid: must be 0, 1 or 2")
+    if extrapolation not in (0, 1, 2, 3) or isinstance(extrapolation, bool):
+        raise ValueError(f"extrapolation = {extrapolation!r} is invalid: must be 0, 1, 2 or 3")
     o = _core.solvers.DisplacementControlOptions()
     o.tolerance = as_positive_real("tolerance", tolerance)
     o.max_iterations = as_integer("max_iterations", max_iterations, minimum=1)

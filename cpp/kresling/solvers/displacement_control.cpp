@@ -38,8 +38,8 @@ void check_options(const DisplacementControlOptions& o) {
   require_integer_in("reject_iterations", o.reject_iterations, 1, kMaxIterations);
   check_bisections(o.max_bisections);
   check_shift(o.shift);
-  if (o.extrapolation < 0 || o.extrapolation > 2) {
-    throw_invalid("extrapolation", o.extrapolation, "0, 1 or 2");
+  if (o.extrapolation < 0 || o.extrapolation > 3) {
+    throw_invalid("extrapolation", o.extrapolation, "0, 1, 2 or 3");
   }
   require_finite("adaptive_tolerance", o.adaptive_tolerance);
   if (!(o.adaptive_tolerance > 0.0 && o.adaptive_tolerance <= 1e-4)) {
@@ -166,7 +166,7 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
           result.steps.push_back(std::move(step));
           path_t.push_back(t_new);
           path_u.push_back(u);
-          if (path_t.size() > 3) {
+          if (path_t.size() > 4) {  // the cubic's four points at most
             path_t.erase(path_t.begin());
             path_u.erase(path_u.begin());
           }

@@ -28,9 +28,11 @@ struct DisplacementControlOptions {
   int max_bisections = 10;     ///< an increment may be cut to 1/2^10 of its size
   double shift = 1e-8;         ///< diagonal shift of the tangent (MERLIN2's)
   /// Starting guess of each increment's free DOFs: 0 = the previous equilibrium (MERLIN2's
-  /// Newton sequence, iteration for iteration); 1 = linear, 2 = quadratic extrapolation
-  /// along the path through the last accepted equilibria. The equilibrium found is the same
-  /// (to the Newton tolerance); a good guess only saves iterations. Where several
+  /// Newton sequence, iteration for iteration); 1 = linear, 2 = quadratic, 3 = cubic
+  /// extrapolation along the path through the last 2, 3 or 4 accepted equilibria. The
+  /// equilibrium found is the same (to the Newton tolerance); a good guess only saves
+  /// iterations (MERLIN2's GMiura point load, 200 increments: 1,877, 626 and 481 for 0, 2
+  /// and 3, as Newton converges only linearly on its nearly flat panels). Where several
   /// equilibria exist (past a bifurcation), an increment whose extrapolated start converges
   /// to a less stable one than the last is retried from the last equilibrium.
   int extrapolation = 0;
