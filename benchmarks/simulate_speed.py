@@ -35,12 +35,15 @@ def recorded_seconds(case: Path) -> float:
 
 def variants(problem: Path):
     """The problem as posed (label: its folder's name), and for displacement control also
-    with adaptive increments (the same samples; label suffixed " adaptive")."""
+    with its fixed increments started from a cubic extrapolation of the path and with
+    adaptive increments (the same samples; labels suffixed " cubic" and " adaptive")."""
     posed = load_problem(problem)
     yield problem.parent.name, posed
     if posed.analysis.method == "displacement_control":
-        analysis = dataclasses.replace(posed.analysis, increments="adaptive")
-        yield problem.parent.name + " adaptive", dataclasses.replace(posed, analysis=analysis)
+        for suffix, change in ((" cubic", {"predictor": "cubic"}),
+                               (" adaptive", {"increments": "adaptive"})):
+            analysis = dataclasses.replace(posed.analysis, **change)
+            yield problem.parent.name + suffix, dataclasses.replace(posed, analysis=analysis)
 
 
 def ours(problem, repeat: int):
@@ -130,8 +133,9 @@ def main(argv=None):
               f"{sim.path.num_steps:>5} {recorded:>10.3f} {live:>8.3f} {seconds:>8.4f} "
               f"{ratio:>7.0f}")
     print("\nMERLIN2 s: its path-analysis time as recorded with the reference run; live s: "
-          "timed now (with --octave); ratio: MERLIN2 (live if timed) over ours. 'adaptive': "
-          "the same samples, the path between them in adaptive increments.")
+          "timed now (with --octave); ratio: MERLIN2 (live if timed) over ours. 'cubic': the "
+          "same increments, each Newton solve started from a cubic extrapolation of the path; "
+          "'adaptive': the same samples, the path between them in adaptive increments.")
 
 
 if __name__ == "__main__":

@@ -88,7 +88,9 @@ def examples_table(repeat, octave):
               f"{sim.path.num_steps:>5} {recorded:>10.3f} {live:>8.3f} {seconds:>8.4f} "
               f"{ratio:>7.0f}")
     print("ratio: MERLIN2 (live if timed, else recorded) over ours (goal: 200x each); "
-          "'adaptive': the same samples, the path between them in adaptive increments")
+          "'cubic': the same increments, each Newton solve started from a cubic "
+          "extrapolation of the path; 'adaptive': the same samples, the path between them in "
+          "adaptive increments")
 
 
 # One sheet size in a fresh process; prints one JSON line.
