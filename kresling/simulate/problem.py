@@ -417,7 +417,7 @@ def _read_loads(entries, source, text, num_nodes):
     return tuple(loads)
 
 
-def _node_count(pattern, split):
+def node_count(pattern, split):
     """Pattern vertices plus the centre nodes N5B8 adds (one per panel of 4+ vertices)."""
     centres = sum(1 for face in pattern.faces if len(face) > 3) if split == "N5B8" else 0
     return pattern.num_vertices + centres
@@ -490,7 +490,7 @@ def load_problem(problem) -> Problem:
     pattern, split, centre = _read_pattern(t_pattern, base, compat)
     laws = _read_laws(_Table(root.get("laws", lambda t, k, v, a: v, {}), "laws", source, text),
                       isinstance(material, SheetMaterial))
-    count = _node_count(pattern, split)
+    count = node_count(pattern, split)
     supports = _read_supports(root.get("support", _array_of_tables, []), source, text, count)
     loads = _read_loads(root.get("load", _array_of_tables, []), source, text, count)
     t_analysis = _Table(root.get("analysis", lambda t, k, v, a: v, required=True,
