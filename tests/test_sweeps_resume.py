@@ -128,6 +128,21 @@ def test_a_directory_of_another_sweep_is_refused(tmp_path, change, message):
     assert (out / "results.csv").read_bytes() == before
 
 
+def test_a_bending_map_of_another_increments_method_is_not_resumed(tmp_path):
+    # A K_B map written when the bending test took fixed increments (its manifest's settings
+    # name no increments) is not completed with adaptive ones: the two differ by a few 1e-9.
+    out = tmp_path / "sweep"
+    designs = design_grid((4,), 2)
+    sweep(designs, ["kb_ratio"], out=out, progress=False)
+    manifest = json.loads((out / "manifest.json").read_text())
+    settings = manifest["analyses"]["bending_0.001rad"]
+    assert settings["increments"] == "adaptive" and settings["adaptive_tolerance"] == 1e-8
+    del settings["increments"], settings["adaptive_tolerance"]
+    (out / "manifest.json").write_text(json.dumps(manifest))
+    with pytest.raises(ValueError, match="holds a sweep with different parameters .*analyses"):
+        sweep(designs, ["kb_ratio"], out=out, progress=False)
+
+
 def test_results_without_a_manifest_are_refused(tmp_path):
     (tmp_path / "results.csv").write_text("n,Lc,lam\n")
     with pytest.raises(ValueError, match="no manifest.json"):

@@ -152,11 +152,16 @@ def test_empty_designs_refused():
 
 
 def test_the_registry_pins_the_analyses_defaults():
+    from kresling.analyses.bending import ADAPTIVE_TOLERANCE, adaptive_by_default
     from kresling.analyses.snap_through import DEFAULT_STEPS
-    from kresling.sweeps.metrics import SNAP_STEPS
+    from kresling.sweeps.metrics import BENDING_ADAPTIVE_TOLERANCE, SNAP_STEPS
 
     assert SNAP_STEPS == DEFAULT_STEPS
-    assert METRICS["kb_ratio"].analysis.settings == {"protocol": "0.001rad", "cells": 4}
+    assert BENDING_ADAPTIVE_TOLERANCE == ADAPTIVE_TOLERANCE
+    assert all(adaptive_by_default(protocol, 2) for protocol in ADAPTIVE_TOLERANCE)
+    assert METRICS["kb_ratio"].analysis.settings == {
+        "protocol": "0.001rad", "cells": 4, "increments": "adaptive", "adaptive_tolerance": 1e-8}
+    assert METRICS["kb_ratio_5mm"].analysis.settings["adaptive_tolerance"] == 1e-9
 
 
 def _same_row(got, expected):

@@ -147,12 +147,22 @@ def _bending_chunk(suffix: str, tester: BendingTester, designs: list) -> list:
     return out
 
 
+# The bending tests' adaptive increments and their error targets, passed explicitly so that
+# the manifest records them (a map resumed across a change of either would mix two methods;
+# kresling.analyses.bending.ADAPTIVE_TOLERANCE; the tests check they agree).
+BENDING_ADAPTIVE_TOLERANCE = {"5mm": 1e-9, "0.001rad": 1e-8}
+
+
 def _bending_analysis(protocol: str, suffix: str) -> Analysis:
+    tolerance = BENDING_ADAPTIVE_TOLERANCE[protocol]
     return Analysis(f"bending_{protocol}", (f"kb_ratio{suffix}", f"kb_ext{suffix}",
                                             f"kb_con{suffix}"),
                     partial(_bending, suffix),
-                    partial(make_tester, "BendingTester", protocol=protocol),
-                    even_n=True, settings={"protocol": protocol, "cells": 4},
+                    partial(make_tester, "BendingTester", protocol=protocol, adaptive=True,
+                            adaptive_tolerance=tolerance),
+                    even_n=True,
+                    settings={"protocol": protocol, "cells": 4, "increments": "adaptive",
+                              "adaptive_tolerance": tolerance},
                     evaluate_chunk=partial(_bending_chunk, suffix))
 
 
