@@ -153,10 +153,11 @@ def test_empty_designs_refused():
 
 def test_the_registry_pins_the_analyses_defaults():
     from kresling.analyses.bending import ADAPTIVE_TOLERANCE, adaptive_by_default
-    from kresling.analyses.snap_through import DEFAULT_STEPS
-    from kresling.sweeps.metrics import BENDING_ADAPTIVE_TOLERANCE, SNAP_STEPS
+    from kresling.analyses.snap_through import DEFAULT_EXTRAPOLATION, DEFAULT_STEPS
+    from kresling.sweeps.metrics import (BENDING_ADAPTIVE_TOLERANCE, SNAP_EXTRAPOLATION,
+                                         SNAP_STEPS)
 
-    assert SNAP_STEPS == DEFAULT_STEPS
+    assert SNAP_STEPS == DEFAULT_STEPS and SNAP_EXTRAPOLATION == DEFAULT_EXTRAPOLATION
     assert BENDING_ADAPTIVE_TOLERANCE == ADAPTIVE_TOLERANCE
     assert all(adaptive_by_default(protocol, 2) for protocol in ADAPTIVE_TOLERANCE)
     assert METRICS["kb_ratio"].analysis.settings == {

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling.analyses.bending import PROTOCOLS, adaptive_options, require_even_n
-from kresling.analyses.snap_through import DEFAULT_STEPS
+from kresling.analyses.snap_through import DEFAULT_EXTRAPOLATION, DEFAULT_STEPS
 from kresling.analyses.travel import travel_fraction
 from kresling.geometry import Design, state_index
 from kresling.model.kresling_specimen import kresling_specimen
@@ -218,7 +218,7 @@ def bending_path(design: Design, state, protocol="5mm", *, deflection=None,
 
 
 def snap_through_path(design: Design, *, steps=DEFAULT_STEPS, parameters=None,
-                      extrapolation=2, **solver) -> SnapThroughPath:
+                      extrapolation=DEFAULT_EXTRAPOLATION, **solver) -> SnapThroughPath:
     """The snap-through test of :func:`~kresling.analyses.snap_through`, every node at every
     increment (the drive from ``Le`` to ``Lc``; not the release to the second stable state).
 

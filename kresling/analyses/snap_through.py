@@ -47,11 +47,17 @@ from kresling._validation import as_integer
 from kresling.solvers.displacement_control import displacement_control_options
 
 __all__ = ["SnapThroughResult", "SnapThroughTester", "snap_through", "DEFAULT_STEPS",
-           "MIN_INCREMENTS_TO_PEAK"]
+           "DEFAULT_EXTRAPOLATION", "MIN_INCREMENTS_TO_PEAK"]
 
 #: Increments from Le to Lc: the snap force within 1e-4 (relative) and its displacement
 #: within 0.01 mm of the converged values on the thesis's designs, in about 5 ms a run.
 DEFAULT_STEPS = 100
+
+#: Each increment's Newton start: a cubic extrapolation through the last four equilibria.
+#: Against the quadratic, on 160 random designs of the thesis's grid (n = 4-10): 15 % faster,
+#: snap forces within 8e-12 and energy barriers within 3e-14 (relative), the same designs
+#: bistable.
+DEFAULT_EXTRAPOLATION = 3
 
 #: Fewest increments up to the peak for the snap force to count as resolved. Measured against
 #: 2000-increment runs of five designs (n = 4-10, lambda 0.7-0.9, Lc 15-45 mm): with 3 or
@@ -219,7 +225,7 @@ class SnapThroughTester:
         Displacement increments from ``Le`` to ``Lc``.
     parameters : SpecimenParameters, optional
         Stiffness assignment (the thesis's by default).
-    extrapolation : {0, 1, 2, 3}, default 2
+    extrapolation : {0, 1, 2, 3}, default :data:`DEFAULT_EXTRAPOLATION` (3)
         Starting guess of each increment (see ``solve_displacement_control``).
     **solver
         Other options of ``solve_displacement_control`` (tolerance, max_iterations, ...).
@@ -230,7 +236,8 @@ class SnapThroughTester:
         For n < 3, steps < 1 or bad parameters.
     """
 
-    def __init__(self, n, *, steps=DEFAULT_STEPS, parameters=None, extrapolation=2, **solver):
+    def __init__(self, n, *, steps=DEFAULT_STEPS, parameters=None,
+                 extrapolation=DEFAULT_EXTRAPOLATION, **solver):
         self.n = as_integer("n", n, minimum=3)
         self.steps = as_integer("steps", steps, minimum=1)
         self.parameters = parameters or SpecimenParameters()
@@ -258,7 +265,8 @@ def snap_through(design: Design, *, steps=DEFAULT_STEPS, parameters=None,
     parameters : SpecimenParameters, optional
         Stiffness assignment (the thesis's by default).
     **solver
-        Options of ``solve_displacement_control`` (``extrapolation`` defaults to 2).
+        Options of ``solve_displacement_control`` (``extrapolation`` defaults to
+        :data:`DEFAULT_EXTRAPOLATION`, 3).
 
     Returns
     -------

@@ -189,16 +189,19 @@ def _snap_through(tester: SnapThroughTester, design: Design) -> Evaluation:
     return Evaluation(dict(zip(_SNAP_COLUMNS, values)), iterations)
 
 
-# The snap-through test's increments, passed explicitly so that the manifest records them
-# (kresling.analyses.snap_through.DEFAULT_STEPS; the tests check they agree).
+# The snap-through test's increments and their Newton start, passed explicitly so that the
+# manifest records them (kresling.analyses.snap_through.DEFAULT_STEPS and
+# DEFAULT_EXTRAPOLATION; the tests check they agree).
 SNAP_STEPS = 100
+SNAP_EXTRAPOLATION = 3
 _PSI = Analysis("facet_angles", ("psi_ratio", "psi_ext", "psi_con"), _psi)
 _LINEAR = Analysis("bending_linear", ("kb_ratio_linear", "kb_ext_linear", "kb_con_linear"),
                    _linear_bending, partial(make_tester, "LinearBendingTester"), even_n=True,
                    settings={"cells": 4, "model": "linearised at the stable state"})
 _SNAP = Analysis("snap_through", _SNAP_COLUMNS, _snap_through,
-                 partial(make_tester, "SnapThroughTester", steps=SNAP_STEPS),
-                 settings={"steps": SNAP_STEPS, "cells": 1})
+                 partial(make_tester, "SnapThroughTester", steps=SNAP_STEPS,
+                         extrapolation=SNAP_EXTRAPOLATION),
+                 settings={"steps": SNAP_STEPS, "cells": 1, "extrapolation": SNAP_EXTRAPOLATION})
 _BENDING_SMALL = _bending_analysis("0.001rad", "")
 _BENDING_5MM = _bending_analysis("5mm", "_5mm")
 
