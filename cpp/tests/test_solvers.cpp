@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -212,6 +214,51 @@ TEST(DisplacementControl, BarChainStretchesUniformly) {
       EXPECT_NEAR(step.constraint_force[0], -kArea * kModulus * (s * s - 1) / 2 * s,
                   1e-9 * kModulus);
     }
+  }
+}
+
+TEST(DisplacementControl, ExtrapolatedStartsReachTheSameEquilibria) {
+  // The truss's spring top driven 0.5 mm down in 20 increments, each Newton solve started
+  // from the last equilibrium or from a linear, quadratic or cubic extrapolation through the
+  // last 2, 3 or 4: every step is an equilibrium of the closed form (the spring's force is
+  // the truss's load at the apex), the apex within Newton's tolerance of the one from the
+  // last equilibrium, and a higher order never needs more iterations in all.
+  const model::Model m = truss();
+  VectorX prescribed = VectorX::Zero(m.num_dofs());
+  prescribed[kTopZ] = -0.5 * kRise;
+  std::vector<solvers::PathResult> paths;
+  for (int order = 0; order <= 3; ++order) {
+    solvers::DisplacementControlOptions o;
+    o.extrapolation = order;
+    paths.push_back(solvers::solve_displacement_control(m, prescribed, 20, o));
+    const auto& r = paths.back();
+    ASSERT_TRUE(r.completed) << "order " << order << ": " << r.message;
+    ASSERT_EQ(r.steps.size(), 20u);
+    for (std::size_t k = 0; k < r.steps.size(); ++k) {
+      const VectorX& u = r.steps[k].displacement;
+      const double z = kRise + u[kApexZ];
+      const double spring = spring_compression(kSpringLength + u[kTopZ] - u[kApexZ]);
+      EXPECT_NEAR(spring, truss_load(z), kEquilibriumTol) << "order " << order << ", step " << k;
+      EXPECT_NEAR(u[kApexZ], paths.front().steps[k].displacement[kApexZ], 1e-6)
+          << "order " << order << ", step " << k;
+    }
+  }
+  auto iterations = [](const solvers::PathResult& r) {
+    int total = 0;
+    for (const auto& step : r.steps) total += step.iterations;
+    return total;
+  };
+  for (int order = 1; order <= 3; ++order) {
+    EXPECT_LE(iterations(paths[order]), iterations(paths[order - 1])) << "order " << order;
+  }
+  EXPECT_LT(iterations(paths[3]), iterations(paths[0]));
+  solvers::DisplacementControlOptions quartic;
+  quartic.extrapolation = 4;
+  try {
+    solvers::solve_displacement_control(m, prescribed, 20, quartic);
+    ADD_FAILURE() << "extrapolation = 4 was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("0, 1, 2 or 3"), std::string::npos) << e.what();
   }
 }
 
