@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import csv
 import dataclasses
+import json
 import tomllib
 from pathlib import Path
 
@@ -100,6 +101,10 @@ def test_cli_run_completes(simulated):
     assert result.returncode == 0, result.stderr
     for name in ("history.csv", "displacements.csv", "path.fold", "summary.json"):
         assert (out / name).is_file()
+    stepping = {"polygon_N5B8_auto": "MGDCM (generalized displacement control)",
+                "kresling_folding": "MGDCM (generalized displacement control)",
+                "gmiura_pointload": "equal increments with MERLIN2's step control"}
+    assert json.loads((out / "summary.json").read_text())["stepping"] == stepping[case]
 
 
 def test_model_equals_merlin2s(simulated):
@@ -183,11 +188,11 @@ def test_energy_split_equals_merlin2s(simulated):
         assert np.abs(values - ref).max() <= 1e-7 * scale + 1e-15, ours
 
 
-@pytest.mark.parametrize("analysis, share", [
-    ({"increments": "adaptive"}, 0.2),
-    ({"predictor": "cubic"}, 0.3),
+@pytest.mark.parametrize("analysis, share, stepping", [
+    ({"increments": "adaptive"}, 0.2, "adaptive increments"),
+    ({"predictor": "cubic"}, 0.3, "equal increments, each started from a cubic extrapolation"),
 ], ids=["adaptive increments", "fixed increments, cubic predictor"])
-def test_faster_modes_follow_merlin2s_gmiura_path(analysis, share):
+def test_faster_modes_follow_merlin2s_gmiura_path(analysis, share, stepping):
     # The GMiura point load's 200 samples, followed in adaptive increments, or in its fixed
     # ones with each Newton solve started from a cubic extrapolation of the path (MERLIN2
     # took 1,863 Newton iterations from the previous equilibrium). MERLIN2's own increments
@@ -205,6 +210,7 @@ def test_faster_modes_follow_merlin2s_gmiura_path(analysis, share):
     fraction = ref_u @ drive / (drive @ drive)
     same = np.flatnonzero(np.abs(fraction - np.arange(1, len(fraction) + 1) / 200) < 1e-12)
     assert ours.completed and ours.path.num_steps == 200
+    assert ours.summary()["stepping"].startswith(stepping)
     assert len(same) == 187 and same[-1] == 186
     np.testing.assert_allclose(ours.path.load_factor[same], fraction[same], rtol=1e-12)
     assert np.abs(ours.path.displacement[same] - ref_u[same]).max() <= 1e-6

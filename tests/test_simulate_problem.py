@@ -238,6 +238,9 @@ def test_extrapolated_predictors_keep_the_equilibria(folder):
             for p in ("previous", "linear", "quadratic", "cubic")}
     previous = runs["previous"]
     scale = np.abs(np.asarray(previous.path.constraint_force)).max()
+    stepping = {name: run.summary()["stepping"] for name, run in runs.items()}
+    assert stepping["previous"] == "equal increments, each started from the previous equilibrium"
+    assert stepping["cubic"] == "equal increments, each started from a cubic extrapolation"
     for name, run in runs.items():
         assert run.completed and run.problem.analysis.predictor == name
         np.testing.assert_allclose(run.path.load_factor, np.arange(1, 41) / 40, rtol=1e-15)
@@ -245,6 +248,17 @@ def test_extrapolated_predictors_keep_the_equilibria(folder):
         difference = np.asarray(run.path.constraint_force) - previous.path.constraint_force
         assert np.abs(difference).max() <= 1e-8 * scale
     assert runs["cubic"].path.iterations.sum() < 0.5 * previous.path.iterations.sum()
+
+
+def test_summary_says_how_the_path_was_stepped(folder):
+    displacement = VALID.replace('method = "force_control"', 'method = "displacement_control"') \
+        .replace("force = [0.0, 0.0, 0.01]", "displacement = [0.0, 0.0, 1.0]")
+    cases = {VALID: "equal load increments",
+             displacement: "equal increments, each started from the previous equilibrium",
+             displacement.replace("steps = 5", 'steps = 5\nincrements = "adaptive"'):
+                 "adaptive increments, the equal samples read off the path between them"}
+    for text, stepping in cases.items():
+        assert simulate(write(folder, text), progress=False).summary()["stepping"] == stepping
 
 
 def test_predictor_is_for_fixed_increments_of_displacement_control(folder):

@@ -48,7 +48,7 @@ def run(args) -> int:
         print_json(summary)
     else:
         rows = [(key, "" if summary[key] is None else summary[key])
-                for key in ("method", "nodes", "bars", "hinges", "supported_dofs",
+                for key in ("method", "stepping", "nodes", "bars", "hinges", "supported_dofs",
                             "increments", "newton_iterations", "final_load_factor",
                             "completed")]
         print_table(rows, ("quantity", "value"))

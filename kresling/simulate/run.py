@@ -111,6 +111,7 @@ class Simulation:
         return {
             "source": self.problem.source,
             "method": self.problem.analysis.method,
+            "stepping": stepping(self.problem),
             "nodes": self.model.num_nodes,
             "bars": len(self.model.bars),
             "hinges": len(self.model.hinges),
@@ -121,6 +122,22 @@ class Simulation:
             "completed": bool(path.completed),
             "message": path.message,
         }
+
+
+def stepping(problem) -> str:
+    """How the problem's path is stepped, in words (the summary's record of it)."""
+    analysis = problem.analysis
+    if analysis.method == "mgdcm":
+        return "MGDCM (generalized displacement control)"
+    if analysis.method == "force_control":
+        return "equal load increments"
+    if analysis.increments == "adaptive":
+        return "adaptive increments, the equal samples read off the path between them"
+    if analysis.predictor != "previous":
+        return f"equal increments, each started from a {analysis.predictor} extrapolation"
+    if problem.merlin2_compat:
+        return "equal increments with MERLIN2's step control"
+    return "equal increments, each started from the previous equilibrium"
 
 
 def build_problem_model(problem) -> PatternModel:
