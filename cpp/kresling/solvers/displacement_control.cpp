@@ -135,14 +135,20 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
           if (options_.extrapolation > 0) {
             extrapolate(path_t, path_u, options_.extrapolation, t_new, trial);
             outcome = solve_from(trial, t_new);
-            // Past a bifurcation an extrapolated guess can land on an unstable branch where
-            // the previous equilibrium leads on along a stable one (the path MERLIN2's start
-            // follows): when stability is lost, retry from there and keep the more stable.
-            if (accepted(outcome) && outcome.negative_eigenvalues > previous_negative) {
+            // Two cases where the previous equilibrium is the better start (MERLIN2's): past a
+            // limit point of the driven motion (a snap) the extrapolated guess lies beyond the
+            // end of the branch and Newton fails, where from the previous equilibrium it
+            // reaches the branch the structure snaps to; past a bifurcation the guess can land
+            // on an unstable branch where the previous equilibrium leads on along a stable
+            // one. Retry from there (before the increment is halved), and keep the result if
+            // it converged where the guess did not, or is more stable.
+            const bool failed = !accepted(outcome);
+            if (failed || outcome.negative_eigenvalues > previous_negative) {
               VectorX plain = u;
               const NewtonOutcome retry = solve_from(plain, t_new);
-              if (accepted(retry) && retry.negative_eigenvalues >= 0 &&
-                  retry.negative_eigenvalues < outcome.negative_eigenvalues) {
+              if (accepted(retry) &&
+                  (failed || (retry.negative_eigenvalues >= 0 &&
+                              retry.negative_eigenvalues < outcome.negative_eigenvalues))) {
                 trial = plain;
                 outcome = retry;
               }
