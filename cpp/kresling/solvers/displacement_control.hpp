@@ -34,7 +34,8 @@ struct DisplacementControlOptions {
   /// iterations (MERLIN2's GMiura point load, 200 increments: 1,877, 626 and 481 for 0, 2
   /// and 3, as Newton converges only linearly on its nearly flat panels). Where several
   /// equilibria exist (past a bifurcation), an increment whose extrapolated start converges
-  /// to a less stable one than the last is retried from the last equilibrium.
+  /// to a less stable one than the last is retried from the last equilibrium; so is one
+  /// whose extrapolated start fails (past a snap), before it is halved.
   int extrapolation = 0;
   /// MERLIN2 v1.1's step control instead of bisection (docs/model.md, 'Displacement
   /// control'): a rejected increment halves the step factor (after 10 rejections in a row it
