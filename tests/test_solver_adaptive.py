@@ -1,6 +1,6 @@
 """The adaptive displacement control (dense output between adaptive increments) against the
 fixed steps: the four Table 3 designs, both states, both bending protocols, and their
-snap-through test.
+snap-through test; and a snapping truss whose path the adaptive increments cannot finish.
 
 Reference: the fixed-step path (quadratic starting guess), itself MERLIN2's path to the Newton
 tolerance. Tolerance: every sample's summed force within 1e-8 of the fixed path's largest
@@ -14,6 +14,8 @@ import pytest
 from kresling import Design
 from kresling.analyses import BendingTester
 from kresling.analyses.snap_through import SnapThroughTester
+from kresling.model import Model
+from kresling.solvers import solve_displacement_control
 
 TABLE3 = [(10, 0.9, 15.0), (8, 0.8, 30.0), (8, 0.8, 15.0), (4, 0.7, 30.0)]
 
@@ -65,3 +67,33 @@ def test_adaptive_snap_through_matches_fixed_steps(n, lam, Lc):
     assert adaptive.bistable == fixed.bistable
     if np.isfinite(fixed.energy_barrier):
         assert adaptive.energy_barrier == pytest.approx(fixed.energy_barrier, rel=1e-8)
+
+
+def snapping_truss():
+    """Two bars of the linear law (half-span 10 mm, rise 1 mm) meeting at an apex held in x
+    and y, loaded through a soft Ogden spring bar (10 mm, 0.5 N/mm) on top: driving the
+    spring's top down, the apex snaps through once the truss is stiffer than the spring."""
+    nodes = np.array([[-10.0, 0, 0], [10.0, 0, 0], [0, 0, 1.0], [0, 0, 11.0]])
+    fixed = np.array([[1, 1, 1], [1, 1, 1], [1, 1, 0], [1, 1, 0]], dtype=bool)
+    return Model(nodes, [[0, 2], [1, 2], [2, 3]], np.zeros((0, 4), dtype=int),
+                 bar_modulus=1000.0, hinge_stiffness=np.zeros(0), bar_area=[1.0, 1.0, 0.005],
+                 bar_law=["linear", "linear", "ogden"], fixed=fixed)
+
+
+def test_a_path_adaptive_increments_cannot_finish_is_followed_in_fixed_steps():
+    # The truss's spring top driven 3.4 mm down in 5 samples: the apex snaps through, and
+    # the adaptive increments' predictor, past the snap, leads Newton nowhere (they give up
+    # at 0.4 of the motion when asked alone); from the last equilibrium the fixed steps
+    # cross it. The solver then follows the path again in fixed steps and returns their
+    # result, bit for bit, with the attempts of both runs counted.
+    model = snapping_truss()
+    prescribed = np.zeros(12)
+    prescribed[11] = -3.4
+    fixed = solve_displacement_control(model, prescribed, 5, extrapolation=2)
+    adaptive = solve_displacement_control(model, prescribed, 5, extrapolation=2, adaptive=True)
+    assert fixed.completed and adaptive.completed, adaptive.message
+    np.testing.assert_array_equal(adaptive.load_factor, fixed.load_factor)
+    np.testing.assert_array_equal(adaptive.displacement, fixed.displacement)
+    np.testing.assert_array_equal(adaptive.constraint_force, fixed.constraint_force)
+    assert adaptive.attempted_increments > fixed.attempted_increments
+    assert adaptive.displacement[-1, 8] + 1.0 < -1.0 / np.sqrt(3.0)  # the apex snapped through

@@ -272,21 +272,11 @@ class BendingTester:
         options = displacement_control_options(extrapolation=extrapolation, adaptive=adaptive,
                                                **solver)
         self._core = self._core_test(options)
-        # Fixed steps for a run the adaptive increments could not finish (built when needed).
-        self._fixed_options = displacement_control_options(
-            extrapolation=extrapolation, adaptive=False, **solver) if options.adaptive else None
-        self._fixed_core = None
 
     def _core_test(self, options):
         return _core.analyses.BendingTest(
             self.n, self.settings["deflection"], self.settings["deflection_angle"],
             self.settings["steps"], self.settings["cells"], self.parameters.to_core(), options)
-
-    def _fixed(self):
-        """The core test in fixed steps, for runs the adaptive increments did not finish."""
-        if self._fixed_core is None:
-            self._fixed_core = self._core_test(self._fixed_options)
-        return self._fixed_core
 
     def run(self, design: Design, state) -> BendingResult:
         """Bend ``design`` (same n) in ``state`` (0/1 or "contracted"/"extended")."""
@@ -295,8 +285,6 @@ class BendingTester:
         if design.n != self.n:
             raise ValueError(f"design.n = {design.n} is invalid: this tester is for n = {self.n}")
         core = self._core.run(design._core, state)
-        if not core.completed and self._fixed_options is not None:
-            core = self._fixed().run(design._core, state)
         target = self.settings["deflection"] if self.settings["deflection_angle"] == 0 else \
             core.module_length * np.tan(self.settings["deflection_angle"])
         return BendingResult._from_core(core, design=design, state=state,
@@ -326,12 +314,6 @@ class BendingTester:
         """
         rows = [(float(lam), float(Lc), float(R)) for lam, Lc, R in designs]
         pairs = self._core.run_both_states(rows)
-        if self._fixed_options is not None:
-            # A design whose adaptive run stopped early goes through run(), which runs that
-            # state again in fixed steps: the same values as asking run() for it.
-            for k, pair in enumerate(pairs):
-                if pair is not None and not (pair[3] and pair[5]):
-                    pairs[k] = self._both_states(Design(self.n, *rows[k]))
         out = []
         for pair in pairs:
             if pair is None:
@@ -344,12 +326,6 @@ class BendingTester:
             out.append((k_ext, k_con, int(iterations), failures))
         return out
 
-
-    def _both_states(self, design: Design) -> tuple:
-        """run_both_states' core tuple for one design, from :meth:`run` in each state."""
-        ext, con = self.run(design, 1), self.run(design, 0)
-        return (ext.stiffness, con.stiffness, int(ext.iterations.sum() + con.iterations.sum()),
-                ext.completed, ext.message, con.completed, con.message)
 
 
 def bending_test(design: Design, state, protocol="5mm", **options) -> BendingResult:

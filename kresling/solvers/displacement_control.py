@@ -61,8 +61,10 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
         (``sum_k F_k U_k / max|U|``, the summed reaction of a uniform drive) agrees with the
         fixed steps' to about ``adaptive_tolerance`` of its largest value; its shares among
         the driven DOFs only to the Newton tolerance, as between fixed-step runs. Faster
-        where the path is smooth over many samples; models with cables keep fixed steps;
-        ignores ``extrapolation`` (docs/model.md, 'Displacement control').
+        where the path is smooth over many samples; models with cables keep fixed steps. A
+        path they cannot finish is followed again in fixed steps (from ``extrapolation``'s
+        start), whose result is returned with the attempts of both runs counted
+        (docs/model.md, 'Displacement control').
     adaptive_tolerance : float, default 1e-9
         The adaptive samples' estimated error of the drive's force relative to its largest
         value on the path so far, in (0, 1e-4].

@@ -108,6 +108,7 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
   no_load_.setZero(n);
   VectorX u = initial.size() ? initial : VectorX::Zero(n);
   if (options_.merlin2_steps) return solve_merlin2_steps(prescribed, steps, imposed, u);
+  int fallback_attempts = 0;  // of adaptive increments that could not finish the path
   // Cables are tension-only: their slack kink is not located, so they keep fixed steps.
   if (options_.adaptive && model.cables().empty()) {
     if (!(full_workspace_ && full_workspace_->fits(model))) {
@@ -115,11 +116,18 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
                                                               assembly::Storage::Lower);
     }
     full_assembler_.emplace(model, *full_workspace_);
-    return solve_adaptive(prescribed, steps, imposed, u);
+    PathResult adaptive = solve_adaptive(prescribed, steps, imposed, u);
+    if (adaptive.completed) return adaptive;
+    // A path the adaptive increments cannot finish (their predictor sent past a snap that
+    // the last equilibrium crosses, say) is followed again in fixed increments from the
+    // start, so that they never complete less of it than fixed increments would: the result
+    // is the fixed increments' own, with both runs' attempts counted.
+    fallback_attempts = adaptive.attempted_increments;
   }
   const VectorX start = u;
 
   PathResult result;
+  result.attempted_increments = fallback_attempts;
   result.constraint_dofs = imposed;
   // The last accepted points of the path, for the extrapolated starting guess.
   std::vector<double> path_t{0.0};

@@ -59,7 +59,9 @@ struct DisplacementControlOptions {
   /// guesses give shares 1e-4 apart). Measured against the fixed steps on the Table 3
   /// designs (bending, both protocols and states; snap-through): summed forces within
   /// 4.2e-9 of the largest. Models with cables (tension-only: a kink at slack) run with
-  /// fixed steps. Ignores extrapolation; merlin2_steps takes precedence.
+  /// fixed steps. A path the adaptive increments cannot finish is followed again in fixed
+  /// steps (from `extrapolation`'s start), whose result is returned (attempts of both runs
+  /// counted). merlin2_steps takes precedence.
   bool adaptive = false;
   /// Estimated error of an adaptive sample's drive force, relative to its largest value on
   /// the path so far (in (0, 1e-4]). 1e-9: ten times below the stated 1e-8; a tighter one
