@@ -34,6 +34,7 @@ struct SupernodalCholesky::Impl {
   Index stored_entries = 0;
   std::vector<double> values;
   std::size_t largest_update = 0;   // entries of the largest update block
+  Index widest_below = 0;           // rows below a supernode's own columns, at most
   // Parallel schedule: the supernodes each thread factorises (whole subtrees, ascending),
   // then the rest ("top", ascending) on the calling thread.
   std::vector<std::vector<int>> subtrees;
@@ -124,6 +125,7 @@ SupernodalCholesky::Analysis SupernodalCholesky::analyze(const SparseMatrix& K,
     if (nrow > ncol) m.parent[s] = m.column_super[m.rows[m.pi[s] + ncol]];
     m.largest_update = std::max(m.largest_update,
                                 static_cast<std::size_t>(nrow) * static_cast<std::size_t>(nrow));
+    m.widest_below = std::max<Index>(m.widest_below, nrow - ncol);
   }
   m.values.assign(xsize, 0.0);
 
@@ -383,11 +385,7 @@ VectorX SupernodalCholesky::solve(const VectorX& b) const {
   VectorX y(m.n);
   for (Index k = 0; k < m.n; ++k) y[k] = b[m.perm[k]];
   double* v = y.data();
-  int widest = 0;  // rows below a supernode's own columns, at most
-  for (int s = 0; s < m.nsuper; ++s) {
-    widest = std::max(widest, (m.pi[s + 1] - m.pi[s]) - (m.super[s + 1] - m.super[s]));
-  }
-  VectorX below(widest);
+  VectorX below(m.widest_below);
   for (int s = 0; s < m.nsuper; ++s) {  // L y = P b
     const int k1 = m.super[s], ncol = m.super[s + 1] - k1, nrow = m.pi[s + 1] - m.pi[s];
     const int nbelow = nrow - ncol;
