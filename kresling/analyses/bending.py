@@ -271,12 +271,9 @@ class BendingTester:
         self.settings = dict(preset, cells=as_integer("cells", cells))
         options = displacement_control_options(extrapolation=extrapolation, adaptive=adaptive,
                                                **solver)
-        self._core = self._core_test(options)
-
-    def _core_test(self, options):
-        return _core.analyses.BendingTest(
-            self.n, self.settings["deflection"], self.settings["deflection_angle"],
-            self.settings["steps"], self.settings["cells"], self.parameters.to_core(), options)
+        self._core = _core.analyses.BendingTest(
+            self.n, preset["deflection"], preset["deflection_angle"], preset["steps"],
+            self.settings["cells"], self.parameters.to_core(), options)
 
     def run(self, design: Design, state) -> BendingResult:
         """Bend ``design`` (same n) in ``state`` (0/1 or "contracted"/"extended")."""
@@ -313,9 +310,8 @@ class BendingTester:
             ``None`` where the design or a run raised (call :meth:`run` on it for the error).
         """
         rows = [(float(lam), float(Lc), float(R)) for lam, Lc, R in designs]
-        pairs = self._core.run_both_states(rows)
         out = []
-        for pair in pairs:
+        for pair in self._core.run_both_states(rows):
             if pair is None:
                 out.append(None)
                 continue
@@ -325,7 +321,6 @@ class BendingTester:
                          ("contracted", con_done, con_message)) if not done]
             out.append((k_ext, k_con, int(iterations), failures))
         return out
-
 
 
 def bending_test(design: Design, state, protocol="5mm", **options) -> BendingResult:
