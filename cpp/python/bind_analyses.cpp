@@ -113,14 +113,9 @@ auto unlocked(F&& f) {
 
 // The manipulator as one structure (analyses/arm_analysis.hpp): tip loads, pulls, capacity.
 void bind_arm_analysis(py::module_& m) {
-  py::class_<ArmOptions>(m, "ArmOptions")
-      .def(py::init<>())
-      .def_property(
-          "tolerance", [](const ArmOptions& o) { return o.newton.tolerance; },
-          [](ArmOptions& o, double v) { o.newton.tolerance = v; })
-      .def_property(
-          "max_iterations", [](const ArmOptions& o) { return o.newton.max_iterations; },
-          [](ArmOptions& o, int v) { o.newton.max_iterations = v; })
+  py::class_<ArmOptions> arm_options(m, "ArmOptions");
+  arm_options.def(py::init<>());
+  def_newton_controls(arm_options)
       .def_readwrite("steps", &ArmOptions::steps)
       .def_readwrite("max_bisections", &ArmOptions::max_bisections)
       .def_readwrite("shift", &ArmOptions::shift);

@@ -106,13 +106,8 @@ CholeskyChoice cholesky_choice(int v) {
 template <typename Options>
 py::class_<Options> bind_path_options(py::module_& m, const char* name) {
   py::class_<Options> options(m, name);
-  options.def(py::init<>())
-      .def_property(
-          "tolerance", [](const Options& o) { return o.newton.tolerance; },
-          [](Options& o, double v) { o.newton.tolerance = v; })
-      .def_property(
-          "max_iterations", [](const Options& o) { return o.newton.max_iterations; },
-          [](Options& o, int v) { o.newton.max_iterations = v; })
+  options.def(py::init<>());
+  def_newton_controls(options)
       .def_property(
           "cholesky", [](const Options& o) { return static_cast<int>(o.newton.cholesky); },
           [](Options& o, int v) { o.newton.cholesky = cholesky_choice(v); })

@@ -17,6 +17,20 @@ namespace kresling::python {
 elements::BarLawKind bar_law_kind(Index code, const char* name);
 elements::SpringLawKind spring_law_kind(Index code, const char* name);
 
+/// Newton's controls of an options struct with a `newton` member (solvers::NewtonOptions)
+/// as the flat properties `tolerance` and `max_iterations`, as every solver's and analysis's
+/// options show them in Python.
+template <typename Options>
+pybind11::class_<Options>& def_newton_controls(pybind11::class_<Options>& options) {
+  return options
+      .def_property(
+          "tolerance", [](const Options& o) { return o.newton.tolerance; },
+          [](Options& o, double v) { o.newton.tolerance = v; })
+      .def_property(
+          "max_iterations", [](const Options& o) { return o.newton.max_iterations; },
+          [](Options& o, int v) { o.newton.max_iterations = v; });
+}
+
 void bind_geometry(pybind11::module_& m);
 void bind_elements(pybind11::module_& m);
 void bind_model(pybind11::module_& m);
