@@ -26,22 +26,33 @@ class Assembly:
 
     Attributes
     ----------
-    energy_bars, energy_hinges : float
-        Stored energy by element family [N*mm].
+    energies : dict
+        Stored energy of each element family of the model, by its name ("bars",
+        "hinges", "cables", ...), in assembly order [N*mm].
     force : ndarray, shape (3N,)
         Internal force at every DOF [N] (the gradient of the energy).
     stiffness : scipy.sparse.csc_matrix, shape (3N, 3N) or None
         Symmetrised tangent (supports ignored) [N/mm], plus ``shift`` on the diagonal.
     """
 
-    energy_bars: float
-    energy_hinges: float
+    energies: dict
     force: np.ndarray
     stiffness: sp.csc_matrix | None
 
     @property
     def energy(self) -> float:
-        return self.energy_bars + self.energy_hinges
+        """The total stored energy [N*mm] (the families' energies summed in order)."""
+        return float(sum(self.energies.values(), 0.0))
+
+    @property
+    def energy_bars(self) -> float:
+        """The bars' stored energy [N*mm]."""
+        return self.energies["bars"]
+
+    @property
+    def energy_hinges(self) -> float:
+        """The hinges' stored energy [N*mm]."""
+        return self.energies["hinges"]
 
 
 class Workspace:
@@ -127,11 +138,12 @@ def assemble(model, u=None, *, stiffness=True, shift=0.0, workspace=None) -> Ass
     if workspace is not None and not isinstance(workspace, Workspace):
         raise ValueError(f"workspace = {workspace!r} is invalid: must be a "
                          "kresling.assembly.Workspace or None")
-    eb, eh, force, K = _core.assembly.assemble(model._core, u, as_finite_real("shift", shift),
+    energies, force, K = _core.assembly.assemble(model._core, u, as_finite_real("shift", shift),
                                               as_bool("stiffness", stiffness),
                                               None if workspace is None else workspace._core)
     force = np.asarray(force)
-    if not (np.isfinite(eb) and np.isfinite(eh) and np.isfinite(force).all()):
+    energies = dict(zip(model._core.families, np.asarray(energies).tolist()))
+    if not (np.isfinite(list(energies.values())).all() and np.isfinite(force).all()):
         raise ValueError("u is invalid: the energy or the internal force is not finite there (an "
                          "element degenerated, a hinge folded flat, or the displacement is "
                          "beyond what a float holds)")
@@ -140,7 +152,7 @@ def assemble(model, u=None, *, stiffness=True, shift=0.0, workspace=None) -> Ass
         data, indices, indptr, shape = K
         matrix = sp.csc_matrix((np.asarray(data), np.asarray(indices), np.asarray(indptr)),
                                shape=tuple(shape))
-    return Assembly(eb, eh, force, matrix)
+    return Assembly(energies, force, matrix)
 
 
 def tangent_stiffness(model, u=None, *, shift=0.0) -> sp.csc_matrix:

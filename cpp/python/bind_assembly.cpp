@@ -59,33 +59,23 @@ void bind_assembly(py::module_& m) {
         }
         const assembly::Workspace& used = workspace ? *workspace : *own;
         py::object K = with_matrix ? py::object(csc(used.matrix())) : py::none();
-        return py::make_tuple(e.bars, e.hinges, force, K);
+        return py::make_tuple(VectorX(e.vector()), force, K);
       },
       py::arg("model"), py::arg("u"), py::arg("shift"), py::arg("with_matrix"),
       py::arg("workspace") = py::none());
 
-  using assembly::ElementState;
-  // Fields in the order kresling.Model.element_state returns them.
-  py::class_<ElementState>(m, "ElementState",
-                           "Per-element state at one displacement (B bars, H hinges, C cables)")
-      .def_readonly("bar_strain", &ElementState::bar_strain, "Green-Lagrange strain (B,)")
-      .def_readonly("bar_force", &ElementState::bar_force,
-                    "axial force (B,) [N], tension positive")
-      .def_readonly("hinge_angle", &ElementState::hinge_angle, "dihedral angle (H,) [rad]")
-      .def_readonly("hinge_moment", &ElementState::hinge_moment,
-                    "moment times hinge length (H,) [N*mm]")
-      .def_readonly("bar_stress", &ElementState::bar_stress,
-                    "second Piola-Kirchhoff stress (B,) [N/mm^2]")
-      .def_readonly("bar_energy", &ElementState::bar_energy, "stored energy per bar (B,) [N*mm]")
-      .def_readonly("hinge_energy", &ElementState::hinge_energy,
-                    "stored energy per hinge (H,) [N*mm]")
-      .def_readonly("cable_length", &ElementState::cable_length,
-                    "length of each cable's path (C,) [mm]")
-      .def_readonly("cable_tension", &ElementState::cable_tension,
-                    "tension per cable (C,) [N], 0 when slack")
-      .def_readonly("cable_energy", &ElementState::cable_energy,
-                    "stored energy per cable (C,) [N*mm]");
-  m.def("element_state", &assembly::element_state, py::arg("model"), py::arg("u"));
+  m.def(
+      "element_state",
+      [](const Model& model, const VectorX& u) {
+        // Every family's per-element columns, in the order the families add them.
+        py::dict out;
+        for (const auto& [name, values] : assembly::element_state(model, u).columns) {
+          out[name.c_str()] = values;
+        }
+        return out;
+      },
+      py::arg("model"), py::arg("u"),
+      "Per-element state at one displacement: {column: (E,) array}, family by family");
 }
 
 }  // namespace kresling::python

@@ -16,23 +16,6 @@ using namespace kresling::elements;
 
 namespace kresling::python {
 
-BarLawKind bar_law_kind(Index code, const char* name) {
-  if (code != static_cast<Index>(BarLawKind::Linear) && code != static_cast<Index>(BarLawKind::Ogden)) {
-    throw std::invalid_argument(std::string(name) + " = " + std::to_string(code) +
-                                " is not a bar law code (see kresling.laws.BAR_LAWS)");
-  }
-  return static_cast<BarLawKind>(code);
-}
-
-SpringLawKind spring_law_kind(Index code, const char* name) {
-  if (code < static_cast<Index>(SpringLawKind::Linear) ||
-      code > static_cast<Index>(SpringLawKind::SuperLinearBend)) {
-    throw std::invalid_argument(std::string(name) + " = " + std::to_string(code) +
-                                " is not a spring law code (see kresling.laws.SPRING_LAWS)");
-  }
-  return static_cast<SpringLawKind>(code);
-}
-
 void bind_elements(py::module_& m) {
   // The law kinds, named as the Python API names them (kresling.laws derives its tables
   // from these: the names and codes are declared here once).

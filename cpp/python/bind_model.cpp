@@ -6,6 +6,7 @@
 #include "bindings.hpp"
 #include "kresling/model/arm.hpp"
 #include "kresling/model/calibration.hpp"
+#include "kresling/model/family_registry.hpp"
 #include "kresling/model/kresling_specimen.hpp"
 #include "kresling/model/merlin2_rest_angle.hpp"
 #include "kresling/model/model.hpp"
@@ -19,8 +20,6 @@ namespace kresling::python {
 
 namespace {
 
-using IndexArray = py::array_t<Index, py::array::c_style | py::array::forcecast>;
-using RealArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 void require_shape(const char* name, const py::array& a, py::ssize_t rows, py::ssize_t cols) {
   const bool ok = cols < 0 ? (a.ndim() == 1 && a.shape(0) == rows)
@@ -31,57 +30,62 @@ void require_shape(const char* name, const py::array& a, py::ssize_t rows, py::s
   }
 }
 
-model::Model make_model(const Eigen::Ref<const NodeMatrix>& nodes, IndexArray bar_nodes,
-                        RealArray bar_area, RealArray bar_rest_length, IndexArray bar_law,
-                        RealArray bar_modulus, IndexArray hinge_nodes, RealArray hinge_stiffness,
-                        RealArray hinge_rest_angle, RealArray hinge_length, IndexArray hinge_law,
-                        RealArray hinge_theta1, RealArray hinge_theta2,
-                        py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> fixed,
-                        const std::vector<std::tuple<std::vector<Index>, double, double>>& cables) {
-  const py::ssize_t nb = bar_nodes.ndim() == 2 ? bar_nodes.shape(0) : 0;
-  const py::ssize_t nh = hinge_nodes.ndim() == 2 ? hinge_nodes.shape(0) : 0;
-  require_shape("bar_nodes", bar_nodes, nb, 2);
-  require_shape("hinge_nodes", hinge_nodes, nh, 4);
-  require_shape("bar_area", bar_area, nb, -1);
-  require_shape("bar_rest_length", bar_rest_length, nb, -1);
-  require_shape("bar_law", bar_law, nb, -1);
-  require_shape("bar_modulus", bar_modulus, nb, -1);
-  for (const auto& [name, a] : {std::pair<const char*, py::array>{"hinge_stiffness", hinge_stiffness},
-                                {"hinge_rest_angle", hinge_rest_angle}, {"hinge_length", hinge_length},
-                                {"hinge_law", hinge_law}, {"hinge_theta1", hinge_theta1},
-                                {"hinge_theta2", hinge_theta2}}) {
-    require_shape(name, a, nh, -1);
+// A family's table from a dict of numpy arrays {column: (E,) or (E, k) array}: integer
+// arrays become node-index columns, the others real ones.
+model::Table table_from_dict(const std::string& family, const py::dict& columns) {
+  model::Table table;
+  for (const auto& [key, value] : columns) {
+    const std::string name = py::cast<std::string>(key);
+    const py::array a = py::array::ensure(value);
+    if (!a || a.ndim() > 2) {
+      throw std::invalid_argument(family + "." + name + ": must be an array of shape (E,) or (E, k)");
+    }
+    const Index width = a.ndim() == 2 ? static_cast<Index>(a.shape(1)) : 1;
+    const char kind = a.dtype().kind();
+    if (kind == 'i' || kind == 'u') {
+      const auto v = py::array_t<Index, py::array::c_style | py::array::forcecast>::ensure(a);
+      table[name] = model::index_column(std::vector<Index>(v.data(), v.data() + v.size()), width);
+    } else if (kind == 'f') {
+      const auto v = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+      table[name] = model::real_column(std::vector<double>(v.data(), v.data() + v.size()), width);
+    } else {
+      throw std::invalid_argument(family + "." + name + ": must hold integers or reals");
+    }
   }
-  require_shape("fixed", fixed, 3 * nodes.rows(), -1);
-  std::vector<model::Bar> bars(static_cast<std::size_t>(nb));
-  auto bn = bar_nodes.unchecked<2>();
-  for (py::ssize_t i = 0; i < nb; ++i) {
-    const Index law = bar_law.at(i);
-    bars[i].nodes = {bn(i, 0), bn(i, 1)};
-    bars[i].area = bar_area.at(i);
-    bars[i].rest_length = bar_rest_length.at(i);
-    bars[i].law = {bar_law_kind(law, "bar_law"), bar_modulus.at(i)};
-  }
-  std::vector<model::Hinge> hinges(static_cast<std::size_t>(nh));
-  auto hn = hinge_nodes.unchecked<2>();
-  for (py::ssize_t i = 0; i < nh; ++i) {
-    const Index law = hinge_law.at(i);
-    hinges[i].nodes = {hn(i, 0), hn(i, 1), hn(i, 2), hn(i, 3)};
-    hinges[i].stiffness = hinge_stiffness.at(i);
-    hinges[i].rest_angle = hinge_rest_angle.at(i);
-    hinges[i].length = hinge_length.at(i);
-    hinges[i].law = {spring_law_kind(law, "hinge_law"), hinge_theta1.at(i),
-                     hinge_theta2.at(i)};
-  }
-  std::vector<std::uint8_t> mask(fixed.data(), fixed.data() + fixed.size());
-  std::vector<model::Cable> cable_list;
-  for (const auto& [cable_nodes, stiffness, rest_length] : cables) {
-    cable_list.push_back({cable_nodes, stiffness, rest_length});
-  }
-  return model::Model(NodeMatrix(nodes), std::move(bars), std::move(hinges), std::move(mask),
-                      std::move(cable_list));
+  return table;
 }
 
+py::dict table_to_dict(const model::Table& table) {
+  py::dict out;
+  for (const auto& [name, c] : table) {
+    const py::ssize_t rows = c.width > 0 ? c.size() / c.width : 0;
+    std::vector<py::ssize_t> shape = c.width == 1 ? std::vector<py::ssize_t>{rows}
+                                                  : std::vector<py::ssize_t>{rows, c.width};
+    if (c.integer) {
+      out[name.c_str()] = py::array_t<Index>(shape, c.indices.data());
+    } else {
+      out[name.c_str()] = py::array_t<double>(shape, c.reals.data());
+    }
+  }
+  return out;
+}
+
+model::Model make_model(const Eigen::Ref<const NodeMatrix>& nodes,
+                        py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> fixed,
+                        const py::dict& families) {
+  require_shape("fixed", fixed, 3 * nodes.rows(), -1);
+  std::vector<model::FamilyPtr> list;
+  for (const auto& [key, value] : families) {
+    const std::string name = py::cast<std::string>(key);
+    if (!py::isinstance<py::dict>(value)) {
+      throw std::invalid_argument("families['" + name + "']: must be a dict of columns");
+    }
+    list.push_back(model::family_kind(name).from_table(table_from_dict(name, value.cast<py::dict>())));
+  }
+  std::vector<std::uint8_t> mask(fixed.data(), fixed.data() + fixed.size());
+  py::gil_scoped_release release;  // validation of a large model takes a while
+  return model::Model(NodeMatrix(nodes), std::move(mask), std::move(list));
+}
 
 // Rows of fixed-size index arrays as an (n, width) int64 array.
 template <std::size_t Width>
@@ -122,7 +126,7 @@ void bind_specimen(py::module_& m) {
       .def_readwrite("theta2", &SpecimenParameters::theta2)
       .def_property(
           "bar_law", [](const SpecimenParameters& p) { return static_cast<int>(p.bar_law); },
-          [](SpecimenParameters& p, int law) { p.bar_law = bar_law_kind(law, "bar_law"); })
+          [](SpecimenParameters& p, int law) { p.bar_law = elements::bar_law_kind(law, "bar_law"); })
       .def_readwrite("duplicate_shared_edges", &SpecimenParameters::duplicate_shared_edges);
 
   py::class_<model::KreslingSpecimen>(
@@ -193,64 +197,39 @@ void bind_arm_model(py::module_& m) {
 
 void bind_model(py::module_& m) {
   py::class_<model::Model>(m, "Model")
-      .def(py::init(&make_model), py::arg("nodes"), py::arg("bar_nodes"), py::arg("bar_area"),
-           py::arg("bar_rest_length"), py::arg("bar_law"), py::arg("bar_modulus"),
-           py::arg("hinge_nodes"), py::arg("hinge_stiffness"), py::arg("hinge_rest_angle"),
-           py::arg("hinge_length"), py::arg("hinge_law"), py::arg("hinge_theta1"),
-           py::arg("hinge_theta2"), py::arg("fixed"),
-           py::arg("cables") = std::vector<std::tuple<std::vector<Index>, double, double>>{})
+      .def(py::init(&make_model), py::arg("nodes"), py::arg("fixed"), py::arg("families"),
+           "A model of nodes (N, 3), supports (3N,) and element families {name: {column: "
+           "array}} (see family_kinds())")
       .def_property_readonly("num_nodes", &model::Model::num_nodes)
-      .def_property_readonly("num_cables", [](const model::Model& m) { return m.cables().size(); })
-      .def("with_cable_rest_lengths", &model::Model::with_cable_rest_lengths,
-           py::arg("rest_lengths"))
       .def_property_readonly("num_dofs", &model::Model::num_dofs)
+      .def_property_readonly("num_cables", [](const model::Model& m) { return m.cables().size(); })
       .def_property_readonly("num_bars", [](const model::Model& m) { return m.bars().size(); })
       .def_property_readonly("num_hinges", [](const model::Model& m) { return m.hinges().size(); })
-      .def("arrays", [](const model::Model& m) {
-        // Structure-of-arrays copies of the model's data (for the Python Model's views).
-        const auto nb = static_cast<py::ssize_t>(m.bars().size());
-        const auto nh = static_cast<py::ssize_t>(m.hinges().size());
-        py::array_t<Index> bar_nodes({nb, py::ssize_t(2)}), hinge_nodes({nh, py::ssize_t(4)});
-        py::array_t<double> area(nb), rest(nb), modulus(nb), k(nh), angle(nh), length(nh),
-            t1(nh), t2(nh);
-        py::array_t<Index> bar_law(nb), hinge_law(nh);
-        auto bn = bar_nodes.mutable_unchecked<2>();
-        for (py::ssize_t i = 0; i < nb; ++i) {
-          const auto& b = m.bars()[i];
-          bn(i, 0) = b.nodes[0], bn(i, 1) = b.nodes[1];
-          area.mutable_at(i) = b.area, rest.mutable_at(i) = b.rest_length;
-          modulus.mutable_at(i) = b.law.modulus;
-          bar_law.mutable_at(i) = static_cast<Index>(b.law.kind);
-        }
-        auto hn = hinge_nodes.mutable_unchecked<2>();
-        for (py::ssize_t i = 0; i < nh; ++i) {
-          const auto& h = m.hinges()[i];
-          for (int j = 0; j < 4; ++j) hn(i, j) = h.nodes[j];
-          k.mutable_at(i) = h.stiffness, angle.mutable_at(i) = h.rest_angle;
-          length.mutable_at(i) = h.length, t1.mutable_at(i) = h.law.theta1;
-          t2.mutable_at(i) = h.law.theta2;
-          hinge_law.mutable_at(i) = static_cast<Index>(h.law.kind);
-        }
+      .def_property_readonly(
+          "families",
+          [](const model::Model& m) {
+            std::vector<std::string> names;
+            for (const auto& f : m.families()) names.emplace_back(f->name());
+            return names;
+          },
+          "the element families, in assembly order")
+      .def("with_cable_rest_lengths", &model::Model::with_cable_rest_lengths,
+           py::arg("rest_lengths"))
+      .def_property_readonly("nodes", [](const model::Model& m) { return m.nodes(); })
+      .def_property_readonly("fixed", [](const model::Model& m) {
+        return py::array_t<std::uint8_t>(static_cast<py::ssize_t>(m.fixed().size()), m.fixed().data());
+      })
+      .def("tables", [](const model::Model& m) {
+        // Every family's data as columns (family_table.hpp), for the Python Model's views.
         py::dict out;
-        out["nodes"] = m.nodes();
-        out["bars"] = bar_nodes, out["bar_area"] = area, out["bar_rest_length"] = rest;
-        out["bar_modulus"] = modulus, out["bar_law"] = bar_law;
-        out["hinges"] = hinge_nodes, out["hinge_stiffness"] = k, out["hinge_rest_angle"] = angle;
-        out["hinge_length"] = length, out["hinge_law"] = hinge_law;
-        out["hinge_theta1"] = t1, out["hinge_theta2"] = t2;
-        out["fixed"] = py::array_t<std::uint8_t>(m.fixed().size(), m.fixed().data());
-        py::list cable_nodes;
-        std::vector<double> cable_stiffness, cable_rest;
-        for (const auto& c : m.cables()) {
-          cable_nodes.append(vector_array(c.nodes));
-          cable_stiffness.push_back(c.stiffness);
-          cable_rest.push_back(c.rest_length);
-        }
-        out["cable_nodes"] = cable_nodes;
-        out["cable_stiffness"] = vector_array(cable_stiffness);
-        out["cable_rest_length"] = vector_array(cable_rest);
+        for (const auto& f : m.families()) out[f->name()] = table_to_dict(f->table());
         return out;
       });
+  m.def("family_kinds", [] {
+    std::vector<std::pair<std::string, std::string>> kinds;
+    for (const auto& k : model::family_kinds()) kinds.emplace_back(k.name, k.description);
+    return kinds;
+  }, "the registered element families: (name, description), in assembly order");
 
   using model::Topology;
   py::class_<Topology>(m, "Topology", "The elements a set of panels produces (read-only)")

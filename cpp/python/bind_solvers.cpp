@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "kresling/solvers/displacement_control.hpp"
+#include "kresling/solvers/fold.hpp"
 #include "kresling/solvers/force_control.hpp"
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/linear_stiffness.hpp"
@@ -55,11 +56,10 @@ void bind_path_result(py::module_& m) {
         return per_step_rows(r, static_cast<Index>(r.constraint_dofs.size()),
                              [](const PathStep& s) -> const VectorX& { return s.constraint_force; });
       })
-      .def_property_readonly("energy_bars", [](const PathResult& r) {
-        return per_step(r, [](const PathStep& s) { return s.energy_bars; });
-      })
-      .def_property_readonly("energy_hinges", [](const PathResult& r) {
-        return per_step(r, [](const PathStep& s) { return s.energy_hinges; });
+      .def_readonly("families", &PathResult::families)
+      .def_property_readonly("energies", [](const PathResult& r) {
+        return per_step_rows(r, static_cast<Index>(r.families.size()),
+                             [](const PathStep& s) -> const VectorX& { return s.energies; });
       })
       .def_property_readonly("iterations", [](const PathResult& r) {
         Eigen::VectorXi out(static_cast<Index>(r.steps.size()));
@@ -186,6 +186,27 @@ void bind_solvers(py::module_& m) {
         return r;
       },
       py::arg("model"), py::arg("forces"), py::arg("options"), py::arg("initial"));
+
+  bind_path_options<FoldOptions>(m, "FoldOptions")
+      .def_readwrite("max_bisections", &FoldOptions::max_bisections)
+      .def_readwrite("extrapolation", &FoldOptions::extrapolation);
+
+  m.def(
+      "fold",
+      [](const Model& model, const std::vector<std::pair<std::vector<Index>, VectorX>>& stages,
+         int steps, const VectorX& forces, const FoldOptions& options, const VectorX& initial) {
+        std::vector<FoldStage> list;
+        for (const auto& [hinges, targets] : stages) list.push_back({hinges, targets});
+        PathResult r;
+        {
+          py::gil_scoped_release release;
+          r = solve_fold(model, list, steps, forces, options, initial);
+        }
+        return r;
+      },
+      py::arg("model"), py::arg("stages"), py::arg("steps"), py::arg("forces"),
+      py::arg("options"), py::arg("initial"),
+      "Fold by crease actuation: stages of (hinge indices, target rest angles [rad])");
 
   m.def(
       "condensed_stiffness",

@@ -11,12 +11,6 @@
 
 namespace kresling::python {
 
-/// A law's integer code (as the per-element law arrays carry it) as its kind; throws
-/// std::invalid_argument naming `name` for a code that is no law. The codes are the values
-/// of the BarLawKind and SpringLawKind enums bound in the elements submodule.
-elements::BarLawKind bar_law_kind(Index code, const char* name);
-elements::SpringLawKind spring_law_kind(Index code, const char* name);
-
 /// Newton's controls of an options struct with a `newton` member (solvers::NewtonOptions)
 /// as the flat properties `tolerance` and `max_iterations`, as every solver's and analysis's
 /// options show them in Python.

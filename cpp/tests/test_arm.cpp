@@ -58,10 +58,10 @@ TEST(ArmModel, StressFreeAsBuiltInEveryConfigurationWithTheTipAtTheSumOfHeights)
     EXPECT_LT(f.cwiseAbs().maxCoeff(), 1e-9) << config;
     EXPECT_LT(e.total(), 1e-12) << config;
     const auto s = assembly::element_state(mm, VectorX::Zero(mm.num_dofs()));
-    ASSERT_EQ(s.cable_tension.size(), 3);
+    ASSERT_EQ(s["cable_tension"].size(), 3);
     for (int t = 0; t < 3; ++t) {
-      EXPECT_EQ(s.cable_tension[t], 0.0);
-      EXPECT_NEAR(s.cable_length[t], height, 1e-9) << config;  // straight, vertical
+      EXPECT_EQ(s["cable_tension"][t], 0.0);
+      EXPECT_NEAR(s["cable_length"][t], height, 1e-9) << config;  // straight, vertical
       EXPECT_NEAR(arm.slack_length[t], height, 1e-9);
     }
   }

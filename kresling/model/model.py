@@ -84,6 +84,11 @@ class Model:
         [N] and ``rest_length`` [mm] (``None``: its path length in ``nodes``, just taut).
         Read back as ``cable_nodes`` (tuple of arrays), ``cable_stiffness``,
         ``cable_rest_length``. Default: none.
+    families : dict, optional
+        Further element families by name, each a dict of its columns (arrays with one row
+        per element), e.g. ``{"springs": {"nodes": [3], "stiffness": [[kx, ky, kz]],
+        "anchor": [[x, y, z]]}}``; :func:`family_kinds` lists the families there are and
+        ``model.family(name)`` reads one back. Default: none.
 
     Raises
     ------
@@ -99,7 +104,8 @@ class Model:
 
     def __init__(self, nodes, bars, hinges, *, bar_modulus, hinge_stiffness, bar_area=1.0,
                  bar_rest_length=None, bar_law="ogden", hinge_rest_angle=None, hinge_length=None,
-                 hinge_law="enhanced_linear", hinge_limits=FOLD_LIMITS, fixed=None, cables=None):
+                 hinge_law="enhanced_linear", hinge_limits=FOLD_LIMITS, fixed=None, cables=None,
+                 families=None):
         nodes = np.ascontiguousarray(as_float_array("nodes", nodes))
         if nodes.ndim != 2 or nodes.shape[1] != 3:
             raise ValueError(f"nodes has shape {nodes.shape}: must be (N, 3)")
@@ -148,38 +154,53 @@ class Model:
         for array in self._arrays.values():
             array.flags.writeable = False
         self._arrays["cable_nodes"] = cable_nodes
-        a = self._arrays
-        self._core = _core.model.Model(
-            a["nodes"], a["bars"], a["bar_area"], a["bar_rest_length"], a["bar_law"],
-            a["bar_modulus"], a["hinges"], a["hinge_stiffness"], a["hinge_rest_angle"],
-            a["hinge_length"], a["hinge_law"], a["hinge_limits"][:, 0].copy(),
-            a["hinge_limits"][:, 1].copy(), a["fixed"].astype(np.uint8).ravel(),
-            [(c.tolist(), k, r) for c, k, r in zip(cable_nodes, cable_stiffness, cable_rest)])
+        self._core = _core.model.Model(nodes, fixed.astype(np.uint8).ravel(),
+                                       {**_builtin_tables(self._arrays), **_tables(families)})
 
     @classmethod
     def _from_core(cls, core) -> "Model":
         """Wrap a model built (and validated) by the C++ core, e.g. a Kresling specimen."""
-        a = {k: np.asarray(v) for k, v in core.arrays().items()}
+        tables = {name: {k: np.asarray(v) for k, v in table.items()}
+                  for name, table in core.tables().items()}
+        bars, hinges, cables = tables["bars"], tables["hinges"], tables["cables"]
         self = cls.__new__(cls)
         self._arrays = {
-            "nodes": a["nodes"], "bars": a["bars"].reshape(-1, 2), "bar_area": a["bar_area"],
-            "bar_rest_length": a["bar_rest_length"], "bar_law": a["bar_law"],
-            "bar_modulus": a["bar_modulus"], "hinges": a["hinges"].reshape(-1, 4),
-            "hinge_stiffness": a["hinge_stiffness"], "hinge_rest_angle": a["hinge_rest_angle"],
-            "hinge_length": a["hinge_length"], "hinge_law": a["hinge_law"],
-            "hinge_limits": np.column_stack([a["hinge_theta1"], a["hinge_theta2"]]),
-            "fixed": a["fixed"].astype(bool).reshape(-1, 3),
-            "cable_stiffness": a.get("cable_stiffness", np.zeros(0)),
-            "cable_rest_length": a.get("cable_rest_length", np.zeros(0)),
+            "nodes": np.asarray(core.nodes), "bars": bars["nodes"].reshape(-1, 2),
+            "bar_area": bars["area"], "bar_rest_length": bars["rest_length"],
+            "bar_law": bars["law"], "bar_modulus": bars["modulus"],
+            "hinges": hinges["nodes"].reshape(-1, 4), "hinge_stiffness": hinges["stiffness"],
+            "hinge_rest_angle": hinges["rest_angle"], "hinge_length": hinges["length"],
+            "hinge_law": hinges["law"],
+            "hinge_limits": np.column_stack([hinges["theta1"], hinges["theta2"]]),
+            "fixed": np.asarray(core.fixed).astype(bool).reshape(-1, 3),
+            "cable_stiffness": cables["stiffness"], "cable_rest_length": cables["rest_length"],
         }
         for array in self._arrays.values():
             array.flags.writeable = False
-        self._arrays["cable_nodes"] = tuple(np.asarray(c, dtype=np.int64)
-                                            for c in core.arrays()["cable_nodes"])
+        self._arrays["cable_nodes"] = tuple(
+            np.split(cables["nodes"].astype(np.int64), np.cumsum(cables["node_count"])[:-1])
+            if len(cables["node_count"]) else ())
         for array in self._arrays["cable_nodes"]:
             array.flags.writeable = False
         self._core = core
         return self
+
+    @property
+    def families(self) -> tuple:
+        """The element families the model holds, in assembly order ("bars", "hinges",
+        "cables", then any others)."""
+        return tuple(self._core.families)
+
+    def family(self, name: str) -> dict:
+        """The columns of element family ``name`` (read-only arrays, one row per element)."""
+        tables = self._core.tables()
+        if name not in tables:
+            raise ValueError(f"name = {name!r} is invalid: the model's families are "
+                             f"{list(tables)}")
+        columns = {k: np.asarray(v) for k, v in tables[name].items()}
+        for array in columns.values():
+            array.flags.writeable = False
+        return columns
 
     @classmethod
     def from_panels(cls, nodes, panels, *, split="N4B5", duplicate_shared_edges=True,
@@ -207,6 +228,8 @@ class Model:
             "hinge_law": [_name(SPRING_LAWS, c) for c in a["hinge_law"]],
             "hinge_limits": a["hinge_limits"], "fixed": a["fixed"],
             "cables": list(zip(a["cable_nodes"], a["cable_stiffness"], a["cable_rest_length"])),
+            "families": {name: self.family(name) for name in self.families
+                         if name not in _BUILTIN_FAMILIES},
         }
         positional = {"nodes": a["nodes"], "bars": a["bars"], "hinges": a["hinges"]}
         for key, value in changes.items():
@@ -274,10 +297,9 @@ class Model:
                                  "node)")
             if not np.isfinite(u).all():
                 raise ValueError("u contains NaN or inf")
-        core = _core.assembly.element_state(self._core, u)
-        # Every field of the core's ElementState, in the order it declares them.
-        state = {k: np.asarray(getattr(core, k)) for k, v in type(core).__dict__.items()
-                 if isinstance(v, property)}
+        # Every family's columns, in the order the core's families add them.
+        state = {k: np.asarray(v)
+                 for k, v in _core.assembly.element_state(self._core, u).items()}
         for key, values in state.items():
             if values.size and not np.isfinite(values).all():
                 i = int(np.flatnonzero(~np.isfinite(values))[0])
@@ -290,6 +312,58 @@ class Model:
         cables = f"{len(self.cable_nodes)} cables, " if len(self.cable_nodes) else ""
         return (f"Model({self.num_nodes} nodes, {len(self.bars)} bars, {len(self.hinges)} hinges, "
                 f"{cables}{int(self.fixed.sum())} supported DOFs)")
+
+
+#: The families every model holds, whose columns the Model's own attributes show.
+_BUILTIN_FAMILIES = ("bars", "hinges", "cables")
+
+
+def family_kinds() -> dict:
+    """The element families a model can hold: ``{name: description}``, in assembly order."""
+    return dict(_core.model.family_kinds())
+
+
+def _builtin_tables(a) -> dict:
+    """The bars', hinges' and cables' columns (the core's tables) from the Model's arrays."""
+    cable_nodes = a["cable_nodes"]
+    return {
+        "bars": {"nodes": a["bars"], "area": a["bar_area"], "rest_length": a["bar_rest_length"],
+                 "law": a["bar_law"], "modulus": a["bar_modulus"]},
+        "hinges": {"nodes": a["hinges"], "stiffness": a["hinge_stiffness"],
+                   "rest_angle": a["hinge_rest_angle"], "length": a["hinge_length"],
+                   "law": a["hinge_law"], "theta1": np.ascontiguousarray(a["hinge_limits"][:, 0]),
+                   "theta2": np.ascontiguousarray(a["hinge_limits"][:, 1])},
+        "cables": {"nodes": (np.concatenate(cable_nodes) if cable_nodes
+                             else np.zeros(0, dtype=np.int64)),
+                   "node_count": np.array([len(c) for c in cable_nodes], dtype=np.int64),
+                   "stiffness": a["cable_stiffness"], "rest_length": a["cable_rest_length"]},
+    }
+
+
+def _tables(families) -> dict:
+    """Further families' columns as the core takes them: integer arrays stay integers (node
+    indices), every other number becomes a float."""
+    if families is None:
+        return {}
+    if not isinstance(families, dict):
+        raise ValueError(f"families = {show(families)} is invalid: must be a dict "
+                         "{name: {column: array}}")
+    tables = {}
+    for name, columns in families.items():
+        if name in _BUILTIN_FAMILIES:
+            raise ValueError(f"families[{name!r}] is invalid: {name} are given by the Model's "
+                             "own arguments")
+        if not isinstance(columns, dict):
+            raise ValueError(f"families[{name!r}] = {show(columns)} is invalid: must be a dict "
+                             "of columns")
+        table = {}
+        for key, value in columns.items():
+            array = np.asarray(value)
+            if array.dtype.kind not in "iu":
+                array = as_float_array(f"families[{name!r}][{key!r}]", value)
+            table[key] = np.ascontiguousarray(array)
+        tables[name] = table
+    return tables
 
 
 def _cables(cables, nodes):

@@ -23,8 +23,11 @@ class PathResult:
         Displacement control: the force the structure exerts on the actuator at each
         imposed DOF, ``-f_int`` (MERLIN2's reported force) [N]. Force control: the support
         reactions ``f_int`` [N].
-    energy_bars, energy_hinges : ndarray, shape (S,)
-        Stored energy by element family [N*mm].
+    families : tuple of str, length F
+        The model's element families ("bars", "hinges", "cables", ...), in assembly order.
+    energies : ndarray, shape (S, F)
+        Stored energy of each family at each step [N*mm]; ``energy_of(name)`` reads one
+        column, ``energy_bars`` and ``energy_hinges`` the first two.
     iterations : ndarray of int, shape (S,)
         Newton iterations of each increment.
     negative_eigenvalues : ndarray of int, shape (S,)
@@ -43,8 +46,8 @@ class PathResult:
     displacement: np.ndarray
     constraint_dofs: np.ndarray
     constraint_force: np.ndarray
-    energy_bars: np.ndarray
-    energy_hinges: np.ndarray
+    families: tuple
+    energies: np.ndarray
     iterations: np.ndarray
     negative_eigenvalues: np.ndarray
     completed: bool
@@ -61,6 +64,8 @@ class PathResult:
             value = getattr(core, field.name)
             if field.name == "constraint_dofs":
                 value = np.asarray(value, dtype=np.int64)
+            elif field.name == "families":
+                value = tuple(value)
             if isinstance(value, np.ndarray):
                 value.flags.writeable = False
             values[field.name] = value
@@ -70,10 +75,30 @@ class PathResult:
     def num_steps(self) -> int:
         return len(self.load_factor)
 
+    def energy_of(self, family: str) -> np.ndarray:
+        """Stored energy of the element family ``family`` per step, shape (S,) [N*mm]."""
+        if family not in self.families:
+            raise ValueError(f"family = {family!r} is invalid: the model's families are "
+                             f"{list(self.families)}")
+        return self.energies[:, self.families.index(family)]
+
+    @property
+    def energy_bars(self) -> np.ndarray:
+        """The bars' stored energy per step, shape (S,) [N*mm]."""
+        return self.energy_of("bars")
+
+    @property
+    def energy_hinges(self) -> np.ndarray:
+        """The hinges' stored energy per step, shape (S,) [N*mm]."""
+        return self.energy_of("hinges")
+
     @property
     def energy(self) -> np.ndarray:
-        """Total stored energy per step [N*mm]."""
-        return self.energy_bars + self.energy_hinges
+        """Total stored energy per step, shape (S,) [N*mm] (the families summed in order)."""
+        total = np.zeros(len(self.load_factor))
+        for k in range(len(self.families)):
+            total = total + self.energies[:, k]
+        return total
 
     @property
     def stable(self) -> np.ndarray:

@@ -96,10 +96,10 @@ ArmState ArmSolver::evaluate(const VectorX& u, const Pulls& pulls, const Vector3
   s.tip_displacement = u.segment<3>(3 * arm.tip_node());
   const auto es = assembly::element_state(*impl_->current, u);
   for (int t = 0; t < 3; ++t) {
-    s.tension[t] = es.cable_tension[t];
-    s.tendon_length[t] = es.cable_length[t];
+    s.tension[t] = es["cable_tension"][t];
+    s.tendon_length[t] = es["cable_length"][t];
   }
-  s.energy = es.bar_energy.sum() + es.hinge_energy.sum() + es.cable_energy.sum();
+  s.energy = es["bar_energy"].sum() + es["hinge_energy"].sum() + es["cable_energy"].sum();
   const int n = arm.n;
   std::vector<Vector3> centroid(static_cast<std::size_t>(2 * arm.modules + 1));
   for (int k = 0; k <= 2 * arm.modules; ++k) {

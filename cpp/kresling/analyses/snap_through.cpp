@@ -83,7 +83,7 @@ SnapThroughResult SnapThroughTest::run(const geometry::Design& design) {
   for (const auto& step : path.steps) {
     r.displacement.push_back(-step.displacement[top_z]);
     r.force.push_back(step.constraint_force.sum());
-    r.energy.push_back(step.energy_bars + step.energy_hinges);
+    r.energy.push_back(step.energy());
     r.iterations.push_back(step.iterations);
   }
   const auto& d = r.displacement;

@@ -52,19 +52,14 @@ class Assembler {
   Workspace* workspace_;
 };
 
-/// Per-element state at displacement u: bar strains and hinge angles (for post-processing).
-struct ElementState {
-  VectorX bar_strain;     ///< Green-Lagrange strain per bar
-  VectorX bar_force;      ///< axial force per bar, A S(E) l / L (tension positive)
-  VectorX bar_stress;     ///< second Piola-Kirchhoff stress S(E) per bar
-  VectorX bar_energy;     ///< stored energy per bar, A L W(E)
-  VectorX hinge_angle;    ///< dihedral angle per hinge [rad]
-  VectorX hinge_moment;   ///< L0 M(theta) per hinge
-  VectorX hinge_energy;   ///< stored energy per hinge
-  VectorX cable_length;   ///< total length of each cable's path [mm]
-  VectorX cable_tension;  ///< tension per cable (0 when slack) [N]
-  VectorX cable_energy;   ///< stored energy per cable
-};
+/// Per-element state at displacement u, family by family in the model's order: bar
+/// strains, forces, stresses and energies; hinge angles, moments and energies; cable lengths,
+/// tensions and energies; and whatever the other families report (for post-processing).
+using model::ElementState;
 ElementState element_state(const model::Model& model, const VectorX& u);
+
+/// The rate of each family's stored energy (in the model's order) at displacement u moving
+/// with velocity v (both one entry per DOF): the family's internal force dotted with v.
+VectorX energy_rates(const model::Model& model, const VectorX& u, const VectorX& v);
 
 }  // namespace kresling::assembly

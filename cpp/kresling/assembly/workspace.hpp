@@ -14,13 +14,14 @@
 /// the assembled matrix, or -1 to leave it out (a fixed or imposed DOF). The tangent is
 /// symmetrised element by element and shifted by `shift` on the diagonal, as MERLIN2 does.
 /// It is stored either whole or as its lower triangle only (what the factorisations read:
-/// half the scatter work). Hinges of zero stiffness contribute nothing and are skipped.
-/// Cables (if the model has any) are assembled after bars and hinges; a model without
-/// cables runs exactly the bar and hinge loops it always did.
+/// half the scatter work). The model's element families (model/element_family.hpp) are
+/// evaluated one after another in the model's order, each through its own part of the slot
+/// map; nothing here knows what a family is.
 ///
 /// The solvers' other per-state data, the symbolic factorisation of the tangent, lives
 /// beside the workspace in the solver that owns both (solvers::TangentSolver).
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -33,21 +34,25 @@ namespace kresling::assembly {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
-/// Stored energy by element family.
+/// Most element families a model may hold.
+constexpr std::size_t kMaxFamilies = 8;
+
+/// Stored energy by element family, in the order of the model's families().
 struct Energies {
-  double bars = 0.0;
-  double hinges = 0.0;
-  double cables = 0.0;
-  double total() const { return bars + hinges + cables; }
+  std::array<double, kMaxFamilies> values{};
+  std::size_t count = 0;
+  double operator[](std::size_t family) const { return values[family]; }
+  /// The sum, family by family in order.
+  double total() const {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < count; ++i) sum += values[i];
+    return sum;
+  }
+  /// As a vector of `count` entries.
+  VectorX vector() const { return Eigen::Map<const VectorX>(values.data(), static_cast<Index>(count)); }
 };
 
-/// Where one entry of an element matrix goes: its slot in the matrix's value array and the
-/// positions (column-major) of the entry and its transpose in the element matrix.
-struct ScatterEntry {
-  int slot;
-  std::uint16_t local;
-  std::uint16_t transposed;
-};
+using model::ScatterEntry;
 
 /// Which part of the symmetric tangent is stored.
 enum class Storage { Full, Lower };
@@ -92,23 +97,25 @@ class Workspace {
   /// The tangent from the last assemble(..., true) through this workspace: size() x size(),
   /// symmetric, whole or its lower triangle (see Storage).
   const SparseMatrix& matrix() const { return matrix_; }
+  /// Add d[dof] to the diagonal of the last assembled tangent at every assembled DOF's row
+  /// (`d` has one entry per DOF): how terms outside the model (a time step's lumped mass)
+  /// enter the tangent without a pattern of their own.
+  void add_to_diagonal(const VectorX& d);
+  /// Multiply the last assembled tangent's values by `factor` (the diagonal shift included).
+  void scale_matrix(double factor);
 
  private:
   friend Energies assemble_unchecked(const model::Model& model, Workspace& workspace,
                                      const VectorX& u, VectorX& force, bool with_matrix);
 
-  std::vector<Index> connectivity_;  // node count, every element's nodes, bars, hinges, cables
+  std::vector<Index> connectivity_;  // see connectivity_of
   std::vector<Index> rows_;
   Index size_ = 0;
   double shift_ = 0.0;
   Storage storage_ = Storage::Full;
   SparseMatrix matrix_;
-  // The stored entries of each element matrix: element e's are [offsets[e], offsets[e+1]).
-  std::vector<ScatterEntry> bar_entries_, hinge_entries_;
-  std::vector<int> bar_offsets_, hinge_offsets_;
-  std::vector<ScatterEntry> cable_entries_;
-  std::vector<int> cable_offsets_;
-  std::vector<std::vector<Index>> cable_dofs_;
+  // The slot map of each family of the model, in the model's order.
+  std::vector<model::FamilySlots> slots_;
   std::vector<int> diagonal_slots_;
 };
 

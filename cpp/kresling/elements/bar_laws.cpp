@@ -1,5 +1,8 @@
 #include "kresling/elements/bar_laws.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace kresling::elements {
 
 StressResponse linear_bar_law(double modulus, double strain) {
@@ -22,6 +25,15 @@ StressResponse ogden_bar_law(double modulus, double s) {
 StressResponse BarLaw::evaluate(double strain, double stretch) const {
   if (kind == BarLawKind::Linear) return linear_bar_law(modulus, strain);
   return ogden_bar_law(modulus, stretch);
+}
+
+BarLawKind bar_law_kind(long long code, const char* name) {
+  if (code != static_cast<long long>(BarLawKind::Linear) &&
+      code != static_cast<long long>(BarLawKind::Ogden)) {
+    throw std::invalid_argument(std::string(name) + " = " + std::to_string(code) +
+                                " is not a bar law code (see kresling.laws.BAR_LAWS)");
+  }
+  return static_cast<BarLawKind>(code);
 }
 
 }  // namespace kresling::elements

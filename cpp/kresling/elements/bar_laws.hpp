@@ -19,6 +19,10 @@ enum class BarLawKind : int {
 };
 
 /// A bar law and its modulus C0 (EA per unit area; the thesis uses C0 = 1e5 kf).
+/// The law of `code` (a BarLawKind's value); throws std::invalid_argument naming `name`
+/// for any other number.
+BarLawKind bar_law_kind(long long code, const char* name);
+
 struct BarLaw {
   BarLawKind kind = BarLawKind::Ogden;
   double modulus = 0.0;

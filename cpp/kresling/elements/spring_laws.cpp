@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace kresling::elements {
 
@@ -65,6 +67,15 @@ SpringResponse SpringLaw::evaluate(double theta, double theta0, double kp) const
     default:
       return enhanced_linear_spring(theta, theta0, kp, theta1, theta2);
   }
+}
+
+SpringLawKind spring_law_kind(long long code, const char* name) {
+  if (code < static_cast<long long>(SpringLawKind::Linear) ||
+      code > static_cast<long long>(SpringLawKind::SuperLinearBend)) {
+    throw std::invalid_argument(std::string(name) + " = " + std::to_string(code) +
+                                " is not a spring law code (see kresling.laws.SPRING_LAWS)");
+  }
+  return static_cast<SpringLawKind>(code);
 }
 
 }  // namespace kresling::elements

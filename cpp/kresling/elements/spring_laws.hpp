@@ -20,6 +20,10 @@ enum class SpringLawKind : int {
 };
 
 /// A spring law with its parameters; limits in radians (EnhancedLinear only).
+/// The law of `code` (a SpringLawKind's value); throws std::invalid_argument naming `name`
+/// for any other number.
+SpringLawKind spring_law_kind(long long code, const char* name);
+
 struct SpringLaw {
   SpringLawKind kind = SpringLawKind::EnhancedLinear;
   double theta1 = 0.0;  ///< lower limit of the linear range, 0 < theta1 < theta0

@@ -1,51 +1,25 @@
 #pragma once
 /// \file model.hpp
-/// A bar-and-hinge model: nodes, bars, rotational-spring hinges, optional sliding cables and
-/// supports. Immutable once built; the constructor validates everything and names the
-/// offending element.
+/// A bar-and-hinge model: nodes, supports and element families (bars, rotational-spring
+/// hinges, sliding cables, and any other registered family; element_family.hpp). Immutable
+/// once built; the constructor validates everything and names the offending element.
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "kresling/core/types.hpp"
-#include "kresling/elements/bar_laws.hpp"
-#include "kresling/elements/spring_laws.hpp"
+#include "kresling/model/bar_family.hpp"
+#include "kresling/model/cable_family.hpp"
+#include "kresling/model/element_family.hpp"
+#include "kresling/model/hinge_family.hpp"
 
 namespace kresling::model {
 
-/// An axial bar between two nodes.
-struct Bar {
-  std::array<Index, 2> nodes{};
-  double area = 1.0;         ///< cross-section A
-  double rest_length = 0.0;  ///< L
-  elements::BarLaw law;      ///< law and modulus C0 (axial stiffness EA = C0 A)
-};
-
-/// A rotational spring about the axis nodes[0] -> nodes[1] with wings nodes[2], nodes[3].
-struct Hinge {
-  std::array<Index, 4> nodes{};
-  double stiffness = 0.0;   ///< kp, moment per radian per unit length
-  double rest_angle = 0.0;  ///< theta0 in [0, 2 pi)
-  double length = 0.0;      ///< L0, multiplies the law (the rest length of the axis)
-  elements::SpringLaw law;
-};
-
-/// A tendon through nodes[0] (anchor), nodes[1..k-2] (frictionless guides) and nodes[k-1]
-/// (anchor): tension only, energy from its total length (elements/cable.hpp).
-struct Cable {
-  std::vector<Index> nodes;  ///< k >= 2 distinct nodes, in the order the cable runs
-  double stiffness = 0.0;    ///< axial rigidity EA [N]
-  double rest_length = 0.0;  ///< L [mm]: the actuation input (pulling shortens it)
-};
-
-/// Most nodes a cable may pass through (its 3k x 3k tangent's entries are indexed in 16 bits).
-constexpr std::size_t kMaxCableNodes = 85;
-
-/// Throw std::invalid_argument (naming hinge `index`) when its nodes are out of range or
-/// repeated, its axis has zero length, or a wing lies on the axis line: the dihedral angle
-/// is undefined there. Model validates every hinge with it; callers that compute angles
-/// before a Model exists (default rest angles) use it too.
+/// check_hinge_geometry with the tolerances scaled by the extent of X: for callers that
+/// compute angles before a Model exists (default rest angles). Model validates every hinge
+/// with the same rule.
 void check_hinge_geometry(const NodeMatrix& X, const std::array<Index, 4>& nodes,
                           std::size_t index);
 
@@ -59,15 +33,36 @@ class Model {
   /// nodes, or a stiffness or rest length that is not positive.
   Model(NodeMatrix nodes, std::vector<Bar> bars, std::vector<Hinge> hinges,
         std::vector<std::uint8_t> fixed, std::vector<Cable> cables = {});
+  /// A model of any families (at most one of each name). They are held in the registry's
+  /// order (family_registry.hpp), unregistered ones after it in the order given; bars,
+  /// hinges and cables are always present (empty when not given). Validates as above and
+  /// with every family's own check.
+  Model(NodeMatrix nodes, std::vector<std::uint8_t> fixed, std::vector<FamilyPtr> families);
 
   Index num_nodes() const { return nodes_.rows(); }
   Index num_dofs() const { return 3 * nodes_.rows(); }
   const NodeMatrix& nodes() const { return nodes_; }
-  const std::vector<Bar>& bars() const { return bars_; }
-  const std::vector<Hinge>& hinges() const { return hinges_; }
   const std::vector<std::uint8_t>& fixed() const { return fixed_; }
-  const std::vector<Cable>& cables() const { return cables_; }
 
+  /// Every family the model holds, in assembly order.
+  const std::vector<FamilyPtr>& families() const { return families_; }
+  /// The family named `name`, or null.
+  const ElementFamily* family(const std::string& name) const;
+  /// The first family of type F, or null.
+  template <typename F>
+  const F* find() const {
+    for (const auto& f : families_) {
+      if (const auto* typed = dynamic_cast<const F*>(f.get())) return typed;
+    }
+    return nullptr;
+  }
+
+  const std::vector<Bar>& bars() const { return bars_->elements(); }
+  const std::vector<Hinge>& hinges() const { return hinges_->elements(); }
+  const std::vector<Cable>& cables() const { return cables_->elements(); }
+
+  /// A copy with the family of `family`'s name replaced by it (or added), validated.
+  Model with_family(FamilyPtr family) const;
   /// A copy with the cables' rest lengths replaced (one per cable, positive): how a tendon
   /// is pulled. Same elements, so an Assembler can rebind to it.
   Model with_cable_rest_lengths(const std::vector<double>& rest_lengths) const;
@@ -76,11 +71,16 @@ class Model {
   NodeMatrix deformed(const VectorX& u) const;
 
  private:
+  void adopt(std::vector<FamilyPtr> families);
+  void validate() const;
+
   NodeMatrix nodes_;
-  std::vector<Bar> bars_;
-  std::vector<Hinge> hinges_;
   std::vector<std::uint8_t> fixed_;
-  std::vector<Cable> cables_;
+  std::vector<FamilyPtr> families_;
+  // The built-in families, also in families_ (never null).
+  const BarFamily* bars_ = nullptr;
+  const HingeFamily* hinges_ = nullptr;
+  const CableFamily* cables_ = nullptr;
 };
 
 }  // namespace kresling::model

@@ -44,8 +44,8 @@ struct PathPoint {
   VectorX velocity;    // du/dt, all DOFs (at the imposed ones, the prescribed motion)
   VectorX force;       // constraint forces (-f_int at the imposed DOFs)
   VectorX force_rate;  // their derivative d/dt
-  Eigen::Vector2d energy = Eigen::Vector2d::Zero();       // bars, hinges
-  Eigen::Vector2d energy_rate = Eigen::Vector2d::Zero();  // d/dt
+  VectorX energy;       // per element family, in the model's order
+  VectorX energy_rate;  // d/dt
   int negative = -1;  // negative eigenvalues of the tangent there
   // Per hinge, which piece of its law applies: -1 below the enhanced linear law's lower
   // limit, 1 above its upper one, 0 in between (and for the other laws, which have no kink).
@@ -141,8 +141,9 @@ VectorX hermite_u(const PathPoint& a, const PathPoint& b, double t) {
 // energies and K. K_ff v_f = -K_fi p is solved with the free tangent factorised last (at
 // p.u or within the Newton tolerance of it: a relative error of up to ~1e-6) and refined
 // with K's products until the constraint forces' rate dF/dt = -(K v)_imposed changes by
-// less than 1e-10 of itself (its rounding: ~3e-12). The energy's rate is f_int . v, the
-// hinges' part sum L0 M(theta) dtheta/dt. Returns false when a value is not finite.
+// less than 1e-10 of itself (its rounding: ~3e-12). Each family's energy rate is its own
+// internal force dotted with v (assembly::energy_rates). Returns false when a value is not
+// finite.
 bool path_derivatives(assembly::Assembler& assembler, assembly::Assembler& full,
                       const TangentSolver& solver, const VectorX& prescribed,
                       const std::vector<Index>& imposed, PathPoint& p) {
@@ -152,7 +153,7 @@ bool path_derivatives(assembly::Assembler& assembler, assembly::Assembler& full,
   for (std::size_t k = 0; k < imposed.size(); ++k) {
     p.force[static_cast<Index>(k)] = -force[imposed[k]];
   }
-  p.energy = Eigen::Vector2d(energies.bars, energies.hinges);
+  p.energy = energies.vector();
   if (!p.force.allFinite() || !p.energy.allFinite()) return false;
   const auto K = full.matrix().selfadjointView<Eigen::Lower>();
   VectorX direction = VectorX::Zero(p.u.size());
@@ -174,23 +175,7 @@ bool path_derivatives(assembly::Assembler& assembler, assembly::Assembler& full,
   }
   p.force_rate = force_rate;
   p.velocity = direction;
-  const model::Model& model = full.model();
-  const NodeMatrix& X = model.nodes();
-  auto at = [&](Index node) -> Vector3 {
-    return X.row(node).transpose() + p.u.segment<3>(3 * node);
-  };
-  double hinges = 0.0;
-  for (const model::Hinge& hinge : model.hinges()) {
-    if (hinge.stiffness == 0.0) continue;
-    const auto& n = hinge.nodes;
-    const elements::DihedralDerivatives d = elements::dihedral_angle_derivatives(
-        at(n[0]), at(n[1]), at(n[2]), at(n[3]), /*with_hessian=*/false);
-    double rate = 0.0;
-    for (int j = 0; j < 4; ++j) rate += d.gradient.segment<3>(3 * j).dot(direction.segment<3>(3 * n[j]));
-    hinges += hinge.length * hinge.law.evaluate(d.angle, hinge.rest_angle, hinge.stiffness).moment *
-              rate;
-  }
-  p.energy_rate = Eigen::Vector2d(force.dot(direction) - hinges, hinges);
+  p.energy_rate = assembly::energy_rates(full.model(), p.u, direction);
   return p.force_rate.allFinite() && p.energy_rate.allFinite();
 }
 
@@ -202,6 +187,7 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
   PathResult result;
   result.constraint_dofs = imposed;
   const model::Model& model = assembler_->model();
+  result.families = family_names(model);
   const double spacing = 1.0 / steps;
   const double smallest = std::ldexp(spacing, -options_.max_bisections);
   const double event_width = kEventWidth * spacing;
@@ -231,8 +217,7 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
     step.load_factor = p.t;
     step.displacement = p.u;
     step.constraint_force = p.force;
-    step.energy_bars = p.energy[0];
-    step.energy_hinges = p.energy[1];
+    step.energies = p.energy;
     step.iterations = p.outcome.iterations;
     step.negative_eigenvalues = p.outcome.negative_eigenvalues;
     return step;
@@ -385,10 +370,8 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
           for (Index i : imposed) step.displacement[i] = start[i] + ts * prescribed[i];
           step.constraint_force =
               hermite<VectorX>(a.t, a.force, a.force_rate, b.t, b.force, b.force_rate, ts);
-          const Eigen::Vector2d e = hermite<Eigen::Vector2d>(a.t, a.energy, a.energy_rate, b.t,
-                                                              b.energy, b.energy_rate, ts);
-          step.energy_bars = e[0];
-          step.energy_hinges = e[1];
+          step.energies = hermite<VectorX>(a.t, a.energy, a.energy_rate, b.t, b.energy,
+                                           b.energy_rate, ts);
           step.iterations = 0;
           step.negative_eigenvalues = b.negative;
         } else {

@@ -10,28 +10,12 @@
 #include "kresling/solvers/increments.hpp"
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/newton.hpp"
+#include "kresling/solvers/path_follower.hpp"
 #include "kresling/solvers/rigid_body.hpp"
 
 namespace kresling::solvers {
 
 namespace {
-
-// Lagrange extrapolation of the free DOFs to path parameter t from the last (order + 1)
-// accepted points (t_i, u_i); imposed DOFs are overwritten by the caller.
-void extrapolate(const std::vector<double>& ts, const std::vector<VectorX>& us, int order,
-                 double t, VectorX& u) {
-  const int points = std::min<int>(order + 1, static_cast<int>(ts.size()));
-  if (points < 2) return;  // nothing to extrapolate from: keep the previous equilibrium
-  const std::size_t first = ts.size() - points;
-  u.setZero();
-  for (std::size_t i = first; i < ts.size(); ++i) {
-    double weight = 1.0;
-    for (std::size_t j = first; j < ts.size(); ++j) {
-      if (j != i) weight *= (t - ts[j]) / (ts[i] - ts[j]);
-    }
-    u += weight * us[i];
-  }
-}
 
 void check_options(const DisplacementControlOptions& o) {
   check_newton(o.newton);
@@ -48,9 +32,6 @@ void check_options(const DisplacementControlOptions& o) {
   }
 }
 
-const char* const kNotFinite =
-    "the converged state's internal force or energy is not finite (an element's law is "
-    "singular there, e.g. a hinge folded flat)";
 
 }  // namespace
 
@@ -124,74 +105,17 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
     // is the fixed increments' own, with both runs' attempts counted.
     fallback_attempts = adaptive.attempted_increments;
   }
-  const VectorX start = u;
-
+  // Fixed increments: the path follower under the prescribed motion from u.
   PathResult result;
   result.attempted_increments = fallback_attempts;
-  result.constraint_dofs = imposed;
-  // The last accepted points of the path, for the extrapolated starting guess.
-  std::vector<double> path_t{0.0};
-  std::vector<VectorX> path_u{u};
-  int previous_negative = 0;  // stability of the last accepted equilibrium
-  auto solve_from = [&](VectorX& trial, double t_new) {
-    return equilibrium_at(trial, t_new, start, prescribed, imposed);
-  };
-  march(steps, options_.max_bisections, result,
-        [&](double, double t_new, std::string& failure) {
-          VectorX trial = u;
-          NewtonOutcome outcome;
-          if (options_.extrapolation > 0) {
-            extrapolate(path_t, path_u, options_.extrapolation, t_new, trial);
-            outcome = solve_from(trial, t_new);
-            // Two cases where the previous equilibrium is the better start (MERLIN2's): past a
-            // limit point of the driven motion (a snap) the extrapolated guess lies beyond the
-            // end of the branch and Newton fails, where from the previous equilibrium it
-            // reaches the branch the structure snaps to; past a bifurcation the guess can land
-            // on an unstable branch where the previous equilibrium leads on along a stable
-            // one. Retry from there (before the increment is halved), and keep the result if
-            // it converged where the guess did not, or is more stable.
-            const bool failed = !accepted(outcome);
-            if (failed || outcome.negative_eigenvalues > previous_negative) {
-              VectorX plain = u;
-              const NewtonOutcome retry = solve_from(plain, t_new);
-              if (accepted(retry) &&
-                  (failed || (retry.negative_eigenvalues >= 0 &&
-                              retry.negative_eigenvalues < outcome.negative_eigenvalues))) {
-                trial = plain;
-                outcome = retry;
-              }
-            }
-          } else {
-            outcome = solve_from(trial, t_new);
-          }
-          if (!accepted(outcome)) {
-            failure = outcome.failure.empty()
-                          ? "Newton needed " + std::to_string(outcome.iterations) + " iterations"
-                          : outcome.failure;
-            return false;
-          }
-          PathStep step = record_step(*assembler_, trial, t_new, outcome, imposed, -1.0);
-          if (!finite_step(step)) {
-            failure = kNotFinite;
-            return false;
-          }
-          u = trial;
-          if (outcome.negative_eigenvalues >= 0) previous_negative = outcome.negative_eigenvalues;
-          result.steps.push_back(std::move(step));
-          path_t.push_back(t_new);
-          path_u.push_back(u);
-          if (path_t.size() > 4) {  // the cubic's four points at most
-            path_t.erase(path_t.begin());
-            path_u.erase(path_u.begin());
-          }
-          return true;
-        },
-        [&] { return options_.stop && options_.stop(result.steps.back()); },
-        [&](int k, double t, const std::string& reason) {
-          return "increment " + std::to_string(k) + " (of " + std::to_string(steps) + ", at " +
-                 format_number(t) + " of the prescribed motion) failed after " +
-                 std::to_string(options_.max_bisections) + " bisections; at full size: " + reason;
-        });
+  DisplacementDrive drive(model, prescribed, u);
+  FollowOptions follow;
+  follow.newton = options_.newton;
+  follow.max_bisections = options_.max_bisections;
+  follow.extrapolation = options_.extrapolation;
+  follow.reject_iterations = options_.reject_iterations;
+  follow.stop = options_.stop;
+  follow_path(drive, *assembler_, *solver_, u, steps, follow, result);
   return result;
 }
 
@@ -232,6 +156,7 @@ PathResult DisplacementControl::solve_merlin2_steps(const VectorX& prescribed, i
                                                     VectorX u) {
   PathResult result;
   result.constraint_dofs = imposed;
+  result.families = family_names(assembler_->model());
   const VectorX increment = prescribed / static_cast<double>(steps);
   const int max_iterations = options_.newton.max_iterations;
   double moved = 0.0;      // fraction of the prescribed motion reached
@@ -260,7 +185,7 @@ PathResult DisplacementControl::solve_merlin2_steps(const VectorX& prescribed, i
     }
     if (!outcome.converged || outcome.iterations >= limit || !finite) {
       last_failure = !outcome.converged ? outcome.failure
-                     : !finite          ? std::string(kNotFinite)
+                     : !finite          ? std::string(kStepNotFinite)
                                         : "Newton needed " + std::to_string(outcome.iterations) +
                                               " iterations";
       ++rejections;

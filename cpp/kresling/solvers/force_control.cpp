@@ -10,6 +10,7 @@
 #include "kresling/solvers/increments.hpp"
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/newton.hpp"
+#include "kresling/solvers/path_follower.hpp"
 #include "kresling/solvers/rigid_body.hpp"
 
 namespace kresling::solvers {
@@ -40,9 +41,6 @@ void check_inputs(const model::Model& model, const VectorX& forces, const Vector
   require_rigid_body_constrained(model, model.fixed());
 }
 
-const char* const kNotFinite =
-    "the converged state's internal force or energy is not finite (an element's law is "
-    "singular there, e.g. a hinge folded flat)";
 
 }  // namespace
 
@@ -57,33 +55,14 @@ PathResult solve_force_control(const model::Model& model, const VectorX& forces,
                                 assembly::Storage::Lower);
   TangentSolver solver(options.newton.cholesky);
   VectorX u = initial.size() ? initial : VectorX::Zero(model.num_dofs());
+  // Load steps: the path follower under lambda * forces, every converged step accepted.
+  LoadControl control(model, forces);
+  FollowOptions follow;
+  follow.newton = options.newton;
+  follow.max_bisections = options.max_bisections;
+  follow.stop = options.stop;
   PathResult result;
-  result.constraint_dofs = fixed_dofs(model);
-  march(steps, options.max_bisections, result,
-        [&](double, double l_new, std::string& failure) {
-          VectorX trial = u;
-          const NewtonOutcome outcome =
-              newton_equilibrium(assembler, solver, trial, l_new * forces, options.newton);
-          if (!outcome.converged) {
-            failure = outcome.failure;
-            return false;
-          }
-          PathStep step = record_step(assembler, trial, l_new, outcome, result.constraint_dofs, 1.0);
-          if (!finite_step(step)) {
-            failure = kNotFinite;
-            return false;
-          }
-          u = trial;
-          result.steps.push_back(std::move(step));
-          return true;
-        },
-        [&] { return options.stop && options.stop(result.steps.back()); },
-        [&](int k, double lambda, const std::string& reason) {
-          return "no equilibrium found beyond load factor " + format_number(lambda) +
-                 " (load step " + std::to_string(k) + " of " + std::to_string(steps) + ", " +
-                 std::to_string(options.max_bisections) +
-                 " bisections; a limit point? use MGDCM); at full size: " + reason;
-        });
+  follow_path(control, assembler, solver, u, steps, follow, result);
   return result;
 }
 
@@ -123,6 +102,7 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
 
   PathResult result;
   result.constraint_dofs = fixed_dofs(model);
+  result.families = family_names(model);
   VectorX force;
   while (static_cast<int>(result.steps.size()) < options.max_increments) {
     ++result.attempted_increments;
@@ -182,7 +162,7 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
       step = record_step(assembler, trial, l_trial, outcome, result.constraint_dofs, 1.0);
       if (!finite_step(step)) {
         outcome.converged = false;
-        outcome.failure = kNotFinite;
+        outcome.failure = kStepNotFinite;
       }
     }
     if (outcome.converged && outcome.iterations <= options.shrink_above_iterations) {

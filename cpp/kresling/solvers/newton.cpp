@@ -32,11 +32,25 @@ double mechanism_scale(const assembly::Assembler& assembler) {
   return std::max((X.colwise().maxCoeff() - X.colwise().minCoeff()).norm(), 1.0);
 }
 
+// Apply the correction du (assembled rows) to u, shortened as `extra` allows.
+void apply_correction(assembly::Assembler& assembler, const VectorX& du, VectorX& u,
+                      ExtraTerms* extra) {
+  if (extra == nullptr) {
+    scatter_add_rows(assembler, du, u);
+    return;
+  }
+  VectorX step = VectorX::Zero(u.size());
+  scatter_add_rows(assembler, du, step);
+  const double fraction = extra->step_limit(u, step);
+  u += (fraction < 1.0 ? fraction : 1.0) * step;
+}
+
 }  // namespace
 
 NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& solver,
                                  VectorX& u, const VectorX& external,
-                                 const NewtonOptions& options, int max_iterations) {
+                                 const NewtonOptions& options, int max_iterations,
+                                 ExtraTerms* extra) {
   NewtonOutcome out;
   const int limit = max_iterations > 0 ? max_iterations : options.max_iterations;
   VectorX force;
@@ -54,18 +68,23 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
       // be, and a new tangent (its assembly and factorisation, most of an iteration's
       // cost) is not needed.
       assembler.assemble(u, force, /*with_matrix=*/false);
+      if (extra) extra->add_force(u, force);
       const VectorX residual = gather_rows(assembler, external - force);
       if (residual.allFinite()) {
         const VectorX du = solver.solve(residual);
         const double size = du.norm();
         if (std::isfinite(size) && size <= tol && last_correction * size <= tol * tol) {
-          scatter_add_rows(assembler, du, u);
+          apply_correction(assembler, du, u, extra);
           out.converged = true;
           return out;
         }
       }
     }
     assembler.assemble(u, force, /*with_matrix=*/true);
+    if (extra) {
+      extra->add_force(u, force);
+      extra->add_tangent(u, assembler.workspace());
+    }
     const VectorX residual = gather_rows(assembler, external - force);
     if (!residual.allFinite()) {
       out.failure =
@@ -92,7 +111,7 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
                     " mm): the free DOFs form a mechanism with no stiffness";
       return out;
     }
-    scatter_add_rows(assembler, du, u);
+    apply_correction(assembler, du, u, extra);
     last_correction = du.norm();
     if (last_correction <= tol) {
       out.converged = true;
@@ -108,10 +127,15 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
   return out;
 }
 
+std::vector<std::string> family_names(const model::Model& model) {
+  std::vector<std::string> names;
+  for (const auto& family : model.families()) names.emplace_back(family->name());
+  return names;
+}
+
 bool finite_step(const PathStep& step) {
   return std::isfinite(step.load_factor) && step.displacement.allFinite() &&
-         step.constraint_force.allFinite() && std::isfinite(step.energy_bars) &&
-         std::isfinite(step.energy_hinges);
+         step.constraint_force.allFinite() && step.energies.allFinite();
 }
 
 PathStep record_step(assembly::Assembler& assembler, const VectorX& u, double load_factor,
@@ -126,8 +150,7 @@ PathStep record_step(assembly::Assembler& assembler, const VectorX& u, double lo
   for (std::size_t k = 0; k < constraint_dofs.size(); ++k) {
     step.constraint_force[static_cast<Index>(k)] = sign * force[constraint_dofs[k]];
   }
-  step.energy_bars = energies.bars;
-  step.energy_hinges = energies.hinges;
+  step.energies = energies.vector();
   step.iterations = outcome.iterations;
   step.negative_eigenvalues = outcome.negative_eigenvalues;
   return step;

@@ -4,12 +4,30 @@
 /// DOFs held where they are.
 
 #include <string>
+#include <vector>
 
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/solvers/path.hpp"
 #include "kresling/solvers/tangent_solver.hpp"
 
 namespace kresling::solvers {
+
+/// Terms a solve adds to the model's own equilibrium (a time step's inertia and damping,
+/// contact barriers): a force at every iterate, a tangent contribution, and a limit on each
+/// correction (a barrier must never be stepped across). Newton calls them at every iterate,
+/// right after assembling the model.
+class ExtraTerms {
+ public:
+  virtual ~ExtraTerms() = default;
+  /// Add the terms' force at u (one entry per DOF, like the internal force) to `force`.
+  virtual void add_force(const VectorX& u, VectorX& force) = 0;
+  /// Add their tangent at u into the tangent just assembled in `workspace` (its pattern:
+  /// Workspace::add_to_diagonal, scale_matrix).
+  virtual void add_tangent(const VectorX& u, assembly::Workspace& workspace) = 0;
+  /// The fraction in (0, 1] of the correction du (one entry per DOF) that may be taken
+  /// from u; 1 takes all of it.
+  virtual double step_limit(const VectorX& /*u*/, const VectorX& /*du*/) { return 1.0; }
+};
 
 struct NewtonOutcome {
   bool converged = false;
@@ -27,14 +45,25 @@ struct NewtonOutcome {
 /// otherwise a full Newton iteration follows. Iterations count applied corrections, as
 /// MERLIN2 counts them.
 /// `max_iterations` overrides options.max_iterations when > 0 (used to reject early).
+/// `extra` (optional) adds its force and tangent at every iterate and may shorten each
+/// correction (then the full correction's size still decides convergence).
 NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& solver,
                                  VectorX& u, const VectorX& external,
-                                 const NewtonOptions& options, int max_iterations = 0);
+                                 const NewtonOptions& options, int max_iterations = 0,
+                                 ExtraTerms* extra = nullptr);
 
 /// Gather the entries of a full-length vector at the assembler's rows.
 VectorX gather_rows(const assembly::Assembler& assembler, const VectorX& full);
 /// Add a row-indexed vector into the full-length vector at the assembler's rows.
 void scatter_add_rows(const assembly::Assembler& assembler, const VectorX& reduced, VectorX& full);
+
+/// The names of the model's element families, in its order (PathResult::families).
+std::vector<std::string> family_names(const model::Model& model);
+
+/// Why a converged increment whose recorded step is not finite (finite_step) is refused.
+inline constexpr const char* kStepNotFinite =
+    "the converged state's internal force or energy is not finite (an element's law is "
+    "singular there, e.g. a hinge folded flat)";
 
 /// Whether a recorded step holds only finite numbers (displacement, constraint forces,
 /// energies). A solver accepts no step that does not: a state where an element's law is

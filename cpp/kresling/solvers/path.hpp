@@ -29,12 +29,20 @@ struct PathStep {
   double load_factor = 0.0;   ///< lambda (force control) or fraction of the prescribed motion
   VectorX displacement;       ///< all DOFs
   VectorX constraint_force;   ///< internal force at the constrained DOFs (see PathResult)
-  double energy_bars = 0.0;
-  double energy_hinges = 0.0;
+  /// Stored energy of each element family, in the order of the model's families()
+  /// (PathResult::families names them) [N mm].
+  VectorX energies;
   int iterations = 0;
   /// Negative eigenvalues of the free tangent factorised in the step's last iteration:
   /// 0 = stable equilibrium; -1 = unknown (the tangent needed an LU factorisation).
   int negative_eigenvalues = -1;
+
+  /// The total stored energy (the families' energies summed in order).
+  double energy() const {
+    double sum = 0.0;
+    for (Index i = 0; i < energies.size(); ++i) sum += energies[i];
+    return sum;
+  }
 };
 
 /// A caller's stopping rule, asked after every accepted step: true ends the path there
@@ -48,6 +56,8 @@ struct PathResult {
   /// docs/model.md, 'Solvers'), the supported DOFs under force control (the support
   /// reactions, f_int).
   std::vector<Index> constraint_dofs;
+  /// The model's element families, as PathStep::energies lists them.
+  std::vector<std::string> families;
   bool completed = false;
   /// Why the path ended early (empty when completed).
   std::string message;

@@ -1,0 +1,96 @@
+#include "kresling/model/bar_family.hpp"
+
+#include <stdexcept>
+
+#include "kresling/elements/bar.hpp"
+
+namespace kresling::model {
+
+std::vector<Index> BarFamily::element_dofs(std::size_t e) const {
+  const auto d = node_dofs(bars_[e].nodes);
+  return {d.begin(), d.end()};
+}
+
+void BarFamily::check(const NodeMatrix& X, double scale) const {
+  for (std::size_t i = 0; i < bars_.size(); ++i) {
+    const Bar& bar = bars_[i];
+    require_element_nodes(*this, i, bar.nodes.data(), 2, X.rows());
+    require_element_positive(*this, i, "area", bar.area);
+    require_element_positive(*this, i, "rest length", bar.rest_length);
+    require_element_positive(*this, i, "modulus", bar.law.modulus);
+    const double l = (X.row(bar.nodes[1]) - X.row(bar.nodes[0])).norm();
+    if (!(l > 1e-12 * scale)) {
+      throw std::invalid_argument(element_name(i) + ": zero length (its two nodes coincide)");
+    }
+  }
+}
+
+double BarFamily::assemble(const NodeMatrix& X, const VectorX& u, AssemblyTarget& target) const {
+  const bool with_matrix = target.values != nullptr;
+  double energy = 0.0;
+  for (std::size_t e = 0; e < bars_.size(); ++e) {
+    const Bar& bar = bars_[e];
+    const auto r = elements::bar_response(position(X, u, bar.nodes[0]), position(X, u, bar.nodes[1]),
+                                          bar.area, bar.rest_length, bar.law, with_matrix);
+    energy += r.energy;
+    add_local_force(r.force, node_dofs(bar.nodes), target.force);
+    if (with_matrix) scatter_local_tangent(r.stiffness, *target.slots, e, target.values);
+  }
+  return energy;
+}
+
+void BarFamily::add_state(const NodeMatrix& x, ElementState& state) const {
+  const auto n = static_cast<Index>(bars_.size());
+  VectorX strain(n), force(n), stress(n), energy(n);
+  for (Index e = 0; e < n; ++e) {
+    const Bar& bar = bars_[e];
+    const Vector3 x1 = x.row(bar.nodes[0]), x2 = x.row(bar.nodes[1]);
+    const double L = bar.rest_length;
+    strain[e] = elements::bar_strain(x1, x2, L);
+    const double stretch = (x2 - x1).norm() / L;
+    // Axial (Cauchy-like) force: S is per reference area along the deformed direction.
+    const elements::StressResponse r = bar.law.evaluate(strain[e], stretch);
+    force[e] = bar.area * r.stress * stretch;
+    stress[e] = r.stress;
+    energy[e] = bar.area * L * r.energy_density;
+  }
+  state.add("bar_strain", strain);
+  state.add("bar_force", force);
+  state.add("bar_stress", stress);
+  state.add("bar_energy", energy);
+}
+
+Table BarFamily::table() const {
+  std::vector<Index> nodes, law;
+  std::vector<double> area, rest, modulus;
+  for (const Bar& b : bars_) {
+    nodes.insert(nodes.end(), b.nodes.begin(), b.nodes.end());
+    area.push_back(b.area);
+    rest.push_back(b.rest_length);
+    law.push_back(static_cast<Index>(b.law.kind));
+    modulus.push_back(b.law.modulus);
+  }
+  return {{"nodes", index_column(nodes, 2)}, {"area", real_column(area)},
+          {"rest_length", real_column(rest)}, {"law", index_column(law)},
+          {"modulus", real_column(modulus)}};
+}
+
+FamilyPtr BarFamily::from_table(const Table& t) {
+  require_known_columns(t, "bars", {"nodes", "area", "rest_length", "law", "modulus"});
+  const Index n = column_rows(t, "bars", "nodes", true, 2);
+  const auto& nodes = require_column(t, "bars", "nodes", true, 2).indices;
+  const auto& area = require_column(t, "bars", "area", false, 1, n).reals;
+  const auto& rest = require_column(t, "bars", "rest_length", false, 1, n).reals;
+  const auto& law = require_column(t, "bars", "law", true, 1, n).indices;
+  const auto& modulus = require_column(t, "bars", "modulus", false, 1, n).reals;
+  std::vector<Bar> bars(static_cast<std::size_t>(n));
+  for (Index i = 0; i < n; ++i) {
+    bars[i].nodes = {nodes[2 * i], nodes[2 * i + 1]};
+    bars[i].area = area[i];
+    bars[i].rest_length = rest[i];
+    bars[i].law = {elements::bar_law_kind(law[i], "bars.law"), modulus[i]};
+  }
+  return std::make_shared<BarFamily>(std::move(bars));
+}
+
+}  // namespace kresling::model

@@ -1,0 +1,64 @@
+#include "kresling/model/element_family.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "kresling/core/check.hpp"
+
+namespace kresling::model {
+
+const VectorX& ElementState::operator[](const std::string& name) const {
+  for (const auto& [key, values] : columns) {
+    if (key == name) return values;
+  }
+  throw std::invalid_argument("element state: no column " + name);
+}
+
+std::string ElementFamily::element_name(std::size_t e) const {
+  std::string kind = name();
+  if (!kind.empty() && kind.back() == 's') kind.pop_back();  // "bars" -> "bar"
+  std::string s = kind + " " + std::to_string(e) + " (nodes";
+  const std::vector<Index> dofs = element_dofs(e);
+  for (std::size_t k = 0; k < dofs.size(); k += 3) {
+    s += (k ? ", " : " ") + std::to_string(dofs[k] / 3);
+  }
+  return s + ")";
+}
+
+std::vector<Index> node_dofs(const std::vector<Index>& nodes) {
+  std::vector<Index> dofs(3 * nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    for (int k = 0; k < 3; ++k) dofs[3 * i + k] = 3 * nodes[i] + k;
+  }
+  return dofs;
+}
+
+void require_element_positive(const ElementFamily& family, std::size_t e, const char* what,
+                              double value, bool allow_zero) {
+  if (std::isfinite(value) && (allow_zero ? value >= 0.0 : value > 0.0)) return;
+  require_positive(family.element_name(e) + ": " + what, value, allow_zero);
+}
+
+void require_element_nodes(const ElementFamily& family, std::size_t e, const Index* nodes,
+                           int count, Index num_nodes) {
+  // The name is built from the element's DOFs, which are only meaningful once its nodes are
+  // in range: list the raw nodes here.
+  auto name = [&] {
+    std::string kind = family.name();
+    if (!kind.empty() && kind.back() == 's') kind.pop_back();
+    std::string s = kind + " " + std::to_string(e) + " (nodes";
+    for (int k = 0; k < count; ++k) s += (k ? ", " : " ") + std::to_string(nodes[k]);
+    return s + ")";
+  };
+  for (int k = 0; k < count; ++k) {
+    if (nodes[k] < 0 || nodes[k] >= num_nodes) {
+      throw std::invalid_argument(name() + ": node " + std::to_string(nodes[k]) +
+                                  " is out of range [0, " + std::to_string(num_nodes) + ")");
+    }
+    for (int j = 0; j < k; ++j) {
+      if (nodes[j] == nodes[k]) throw std::invalid_argument(name() + ": a node appears twice");
+    }
+  }
+}
+
+}  // namespace kresling::model

@@ -1,0 +1,99 @@
+#pragma once
+/// \file path_control.hpp
+/// What a path's parameter t in [0, 1] drives: the load factor (force control), the imposed
+/// DOFs (displacement control), a model parameter (hinge rest angles: folding by crease
+/// actuation), or time. A control says, for any t, which model is solved, which DOFs are
+/// held where it puts them, what external force acts, and which forces a step records; the
+/// path follower (path_follower.hpp) does the stepping for every control alike.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kresling/core/types.hpp"
+#include "kresling/model/model.hpp"
+
+namespace kresling::solvers {
+
+class PathControl {
+ public:
+  virtual ~PathControl() = default;
+
+  /// The model at parameter t. The follower rebinds to it before every attempt when
+  /// changes_model(); the reference stays valid until the next call.
+  virtual const model::Model& model_at(double t) = 0;
+  virtual bool changes_model() const { return false; }
+  /// Put the held DOFs of u where the control prescribes them at t and set `external` (one
+  /// entry per DOF, sized by the caller) to the external force there.
+  virtual void apply(double t, VectorX& u, VectorX& external) = 0;
+  /// DOFs besides the supports that the control holds (the imposed ones), none by default.
+  virtual std::vector<Index> held_dofs() const { return {}; }
+  /// DOFs whose force each step records (PathStep::constraint_force) and its sign: the
+  /// force on the actuator (-f_int, sign -1) or the support reactions (f_int, sign +1).
+  virtual std::vector<Index> recorded_dofs() const = 0;
+  virtual double recorded_sign() const = 0;
+  /// The message when increment k of `steps` fails for good at parameter t.
+  virtual std::string failure_message(int k, int steps, double t, int max_bisections,
+                                      const std::string& reason) const = 0;
+};
+
+/// Force control: external = t * forces on the model, supports' reactions recorded.
+class LoadControl final : public PathControl {
+ public:
+  LoadControl(const model::Model& model, VectorX forces);
+  const model::Model& model_at(double) override { return model_; }
+  void apply(double t, VectorX& u, VectorX& external) override;
+  std::vector<Index> recorded_dofs() const override;
+  double recorded_sign() const override { return 1.0; }
+  std::string failure_message(int k, int steps, double t, int max_bisections,
+                              const std::string& reason) const override;
+
+ private:
+  const model::Model& model_;
+  VectorX forces_;
+};
+
+/// Displacement control: the non-zero entries of `prescribed` are imposed, at
+/// start + t * prescribed; no external force; the actuator's force recorded.
+class DisplacementDrive final : public PathControl {
+ public:
+  DisplacementDrive(const model::Model& model, VectorX prescribed, VectorX start);
+  const model::Model& model_at(double) override { return model_; }
+  void apply(double t, VectorX& u, VectorX& external) override;
+  std::vector<Index> held_dofs() const override { return imposed_; }
+  std::vector<Index> recorded_dofs() const override { return imposed_; }
+  double recorded_sign() const override { return -1.0; }
+  std::string failure_message(int k, int steps, double t, int max_bisections,
+                              const std::string& reason) const override;
+
+ private:
+  const model::Model& model_;
+  VectorX prescribed_, start_;
+  std::vector<Index> imposed_;
+};
+
+/// Crease actuation: the rest angles of `hinges` move linearly from `from` to `to` (one of
+/// each per driven hinge [rad], in [0, 2 pi)); the external force goes from
+/// load_from * forces to load_to * forces; the supports' reactions are recorded.
+class RestAngleControl final : public PathControl {
+ public:
+  RestAngleControl(const model::Model& model, std::vector<Index> hinges, VectorX from, VectorX to,
+                   VectorX forces, double load_from, double load_to);
+  const model::Model& model_at(double t) override;
+  bool changes_model() const override { return true; }
+  void apply(double t, VectorX& u, VectorX& external) override;
+  std::vector<Index> recorded_dofs() const override;
+  double recorded_sign() const override { return 1.0; }
+  std::string failure_message(int k, int steps, double t, int max_bisections,
+                              const std::string& reason) const override;
+
+ private:
+  const model::Model& base_;
+  std::vector<Index> hinges_;
+  VectorX from_, to_, forces_;
+  double load_from_, load_to_;
+  std::vector<model::Hinge> scratch_;  // the base's hinges, rest angles set per t
+  std::optional<model::Model> current_;
+};
+
+}  // namespace kresling::solvers
