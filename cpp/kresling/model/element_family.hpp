@@ -75,6 +75,9 @@ class ElementFamily {
   /// The family's data as columns (family_table.hpp); from_table of its registry entry
   /// rebuilds it.
   virtual Table table() const = 0;
+  /// Mark (set to 1) the DOFs this family ties elastically to the ground, one entry per
+  /// DOF: they block rigid-body motions as supports do (an anchor spring). None by default.
+  virtual void mark_grounded_dofs(std::vector<std::uint8_t>& /*grounded*/) const {}
   /// The name of element e in messages ("bar 3 (nodes 1, 2)").
   std::string element_name(std::size_t e) const;
 };

@@ -9,7 +9,10 @@
 namespace kresling::solvers {
 
 void require_rigid_body_constrained(const model::Model& model,
-                                    const std::vector<std::uint8_t>& held) {
+                                    const std::vector<std::uint8_t>& supported) {
+  // DOFs a family ties to the ground (anchor springs) block rigid motions as supports do.
+  std::vector<std::uint8_t> held = supported;
+  for (const auto& family : model.families()) family->mark_grounded_dofs(held);
   const NodeMatrix& X = model.nodes();
   std::vector<char> has_bar(static_cast<std::size_t>(X.rows()), 0);
   for (const auto& bar : model.bars()) has_bar[bar.nodes[0]] = has_bar[bar.nodes[1]] = 1;

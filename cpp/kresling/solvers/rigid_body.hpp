@@ -14,7 +14,8 @@ namespace kresling::solvers {
 /// Throw std::invalid_argument when the DOFs marked in `held` (one entry per DOF) leave a
 /// zero-stiffness motion that is visible without solving: a rigid-body motion of the whole
 /// model (named: translations along and rotations about x, y, z), or a node with a free DOF
-/// that no bar is attached to.
+/// that no bar is attached to. DOFs an element family ties to the ground
+/// (ElementFamily::mark_grounded_dofs) count as held.
 void require_rigid_body_constrained(const model::Model& model,
                                     const std::vector<std::uint8_t>& held);
 
