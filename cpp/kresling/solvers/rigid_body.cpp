@@ -55,6 +55,14 @@ void require_rigid_body_constrained(const model::Model& model,
     const double s = j < sigma.size() ? sigma[j] : 0.0;
     if (s > 1e-9) continue;
     const Eigen::Matrix<double, 6, 1> v = svd.matrixV().col(j);
+    // A rotation about an axis through every node (a single node, or nodes on one line)
+    // moves nothing: it is no motion of the model.
+    double moved = 0.0;
+    for (Index i = 0; i < X.rows(); ++i) {
+      const Vector3 r = (X.row(i).transpose() - centre) / scale;
+      moved = std::max(moved, (v.head<3>() + v.tail<3>().cross(r)).norm());
+    }
+    if (moved <= 1e-9) continue;
     int dominant = 0;
     v.cwiseAbs().maxCoeff(&dominant);
     free += (count++ ? ", " : "") + std::string(names[dominant]);
