@@ -5,6 +5,7 @@
 #include "kresling/model/bar_family.hpp"
 #include "kresling/model/cable_family.hpp"
 #include "kresling/model/hinge_family.hpp"
+#include "kresling/model/spring_family.hpp"
 
 namespace kresling::model {
 
@@ -16,6 +17,7 @@ const std::vector<FamilyKind>& family_kinds() {
       {"bars", &BarFamily::from_table, "axial bars between two nodes"},
       {"hinges", &HingeFamily::from_table, "rotational springs on the dihedral angle of four nodes"},
       {"cables", &CableFamily::from_table, "tension-only cables sliding through guide nodes"},
+      {"springs", &SpringFamily::from_table, "zero-length springs tying nodes to fixed points"},
   };
   return kinds;
 }
