@@ -64,6 +64,7 @@ PathResult solve_force_control(const model::Model& model, const VectorX& forces,
           VectorX trial = u;
           const NewtonOutcome outcome =
               newton_equilibrium(assembler, solver, trial, l_new * forces, options.newton);
+          result.newton_iterations += outcome.iterations;
           if (!outcome.converged) {
             failure = outcome.failure;
             return false;
@@ -177,6 +178,7 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
         break;
       }
     }
+    result.newton_iterations += outcome.iterations;
     PathStep step;
     if (outcome.converged && outcome.iterations <= options.shrink_above_iterations) {
       step = record_step(assembler, trial, l_trial, outcome, result.constraint_dofs, 1.0);
