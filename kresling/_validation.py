@@ -6,12 +6,18 @@ from __future__ import annotations
 import csv
 import math
 import numbers
+import os
+import stat
 
 import numpy as np
 
 #: The largest integer the C++ core takes (a C ``int``): larger ones are refused here, with
 #: the parameter's name, instead of failing in the binding's type conversion (a TypeError).
 INT_MAX = 2**31 - 1
+
+#: Largest input file (a problem or pattern file) read [bytes]: far above any real one (a
+#: 10,000-vertex FOLD file is under 1 MB), far below what a device or a sparse file offers.
+INPUT_FILE_LIMIT = 256 * 2**20
 
 #: Longest value a message shows (a longer one is cut, with "...").
 _SHOWN = 200
@@ -233,3 +239,34 @@ def csv_records(handle, source):
             raise ValueError(f"{source}, line {reader.line_num}: not a CSV line ({error})") \
                 from None
         yield reader.line_num, cells
+
+
+def _size(count: int) -> str:
+    for unit, factor in (("GiB", 2**30), ("MiB", 2**20), ("KiB", 2**10)):
+        if count >= factor:
+            return f"{count / factor:.3g} {unit}"
+    return f"{count} bytes"
+
+
+def read_input_file(path, limit: int = INPUT_FILE_LIMIT) -> bytes:
+    """The bytes of an input file, refusing what is not a regular file or is over ``limit``.
+
+    A FIFO would block the read forever and a device (``/dev/zero``) or a sparse file of
+    gigabytes would fill the memory, so both are refused before anything is read, with a
+    ValueError naming the file (and its size). A missing or unreadable file is an OSError
+    naming it.
+    """
+    name = os.fspath(path)
+    info = os.stat(name)  # follows links: a link to a regular file is read
+    if not stat.S_ISREG(info.st_mode):
+        kind = ("a directory" if stat.S_ISDIR(info.st_mode) else "a FIFO"
+                if stat.S_ISFIFO(info.st_mode) else "a device or socket")
+        raise ValueError(f"{name}: is {kind}, not a regular file")
+    if info.st_size > limit:
+        raise ValueError(f"{name}: is {_size(info.st_size)}, larger than the {_size(limit)} "
+                         "an input file may have")
+    with open(name, "rb") as handle:
+        data = handle.read(limit + 1)  # a file growing while read is still capped
+    if len(data) > limit:
+        raise ValueError(f"{name}: is larger than the {_size(limit)} an input file may have")
+    return data

@@ -116,7 +116,7 @@ MALFORMED = {
     "not planar": ("v 0 0 0\nv 10 0 0\nv 10 10 1\nv 0 10 0\nf 1 2 3\n f 1 2 3 4\n",
                    r"sheet\.obj:6:2: face 1 is not planar: its corner at vertex \d lies 0\.251 mm "
                    r"off its plane \(tolerance 0\.001 of its 14\.\d mm size; a larger "
-                   r"planarity_tolerance, or none, accepts warped panels\)"),
+                   r"planarity_tolerance accepts it: planarity_tolerance = 0\.018\)"),
 }
 
 

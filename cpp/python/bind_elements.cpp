@@ -44,9 +44,10 @@ void bind_elements(py::module_& m) {
         auto h = hinges.unchecked<2>();
         VectorX out(h.shape(0));
         const NodeMatrix X(x);
+        const double scale = model::node_extent(X);  // once, not per hinge
         for (py::ssize_t i = 0; i < h.shape(0); ++i) {
-          model::check_hinge_geometry(X, {h(i, 0), h(i, 1), h(i, 2), h(i, 3)},
-                                      static_cast<std::size_t>(i));
+          model::check_hinge_geometry_at_scale(X, {h(i, 0), h(i, 1), h(i, 2), h(i, 3)},
+                                               static_cast<std::size_t>(i), scale);
           out[i] = dihedral_angle(x.row(h(i, 0)), x.row(h(i, 1)), x.row(h(i, 2)), x.row(h(i, 3)));
         }
         return out;

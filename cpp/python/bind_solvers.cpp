@@ -74,7 +74,8 @@ void bind_path_result(py::module_& m) {
       .def_readonly("completed", &PathResult::completed)
       .def_readonly("message", &PathResult::message)
       .def_readonly("failed_increment", &PathResult::failed_increment)
-      .def_readonly("attempted_increments", &PathResult::attempted_increments);
+      .def_readonly("attempted_increments", &PathResult::attempted_increments)
+      .def_readonly("newton_iterations", &PathResult::newton_iterations);
 }
 
 // A Python callable `stop(load_factor, displacement) -> bool` as a solver's stopping rule.

@@ -70,6 +70,13 @@ def _check_step(k: float, model) -> None:
                          f"must be >= 0; the thesis's protocol uses 0 to 10")
 
 
+def bend_direction_deg(phi: float) -> float:
+    """Where an arc of eqn 26's angle ``phi`` [rad] bends, in its base frame [deg] from +x
+    in (-180, 180]: towards ``phi - pi/2`` (the shortest tendon)."""
+    towards = (math.degrees(phi) - 90.0) % 360.0
+    return round(towards - 360.0 if towards > 180.0 else towards, 10) + 0.0
+
+
 def run(args) -> int:
     model = _model(args)
     drive = TendonDrive()
@@ -106,11 +113,15 @@ def run(args) -> int:
     print_table([(name, *row) for name, row in result["tendon_lengths"].items()],
                 ("module", "l1 [mm]", "l2 [mm]", "l3 [mm]"))
     print()
-    # The arcs (arc length s, curvature kappa, direction phi): the bending angle s kappa and
-    # phi in degrees beside radians, as people read angles.
-    print_table([(name, s, s * kappa, degrees(s * kappa), phi, degrees(phi))
-                 for name, (s, kappa, phi) in result["arcs"].items()],
-                ("module", "arc [mm]", "bend [rad]", "[deg]", "direction [rad]", "[deg]"))
+    # The arcs (arc length s, curvature kappa, eqn 26's angle phi): the bending angle
+    # s kappa and phi in degrees beside radians, as people read angles, and where the bend
+    # points, which phi is not (it is 90 deg ahead of it).
+    print_table([(name, s, s * kappa, degrees(s * kappa), phi, degrees(phi),
+                  bend_direction_deg(phi)) for name, (s, kappa, phi) in result["arcs"].items()],
+                ("module", "arc [mm]", "bend [rad]", "[deg]", "phi (eqn 26) [rad]", "[deg]",
+                 "bends towards [deg]"))
+    print("(a module bends towards phi - 90 deg in its base frame: 0 deg is +x, tendon 1's "
+          "side; 120 and 240 deg are tendons 2 and 3)")
     print()
     print_table(list(result["motor_counts"].items()), ("motor", "counts"))
     return 0

@@ -49,8 +49,8 @@ def run(args) -> int:
     else:
         rows = [(key, "" if summary[key] is None else summary[key])
                 for key in ("method", "stepping", "nodes", "bars", "hinges", "supported_dofs",
-                            "increments", "newton_iterations", "final_load_factor",
-                            "completed")]
+                            "increments", "newton_iterations", "attempted_increments",
+                            "attempted_newton_iterations", "final_load_factor", "completed")]
         print_table(rows, ("quantity", "value"))
         print(f"\noutputs in {out}: " + ", ".join(Path(p).name for p in written.values()))
     if not simulation.completed:

@@ -21,6 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
+from kresling._validation import read_input_file
 from kresling.io.errors import MISSING, PatternFileError, file_error, key_error, line_error
 from kresling.io.pattern import (ASSIGNMENTS, Pattern, _as_assignments, _as_coordinates,
                                  _as_edges, _as_faces, _as_fold_angles, argument_fail,
@@ -72,7 +73,7 @@ def read_fold(path, *, planarity_tolerance=1e-3) -> Pattern:
         If the file cannot be read (the message names it).
     """
     source = str(path)
-    text = Path(path).read_bytes().decode("utf-8-sig", errors="replace")
+    text = read_input_file(path).decode("utf-8-sig", errors="replace")
     try:
         document = json.loads(text)
     except json.JSONDecodeError as error:

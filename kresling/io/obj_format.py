@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from kresling._validation import read_input_file
 from kresling.io.errors import PatternFileError, file_error, line_error
 from kresling.io.pattern import (Pattern, _as_coordinates, _as_faces, argument_fail,
                                  check_panels, complete_edges)
@@ -53,7 +54,7 @@ def read_obj(path, *, planarity_tolerance=1e-3) -> Pattern:
         If the file cannot be read (the message names it).
     """
     source = str(path)
-    text = Path(path).read_bytes().decode("utf-8-sig", errors="replace")
+    text = read_input_file(path).decode("utf-8-sig", errors="replace")
     vertices = []
     faces = []          # (line, column of "f", [(index, line, column)], vertices so far)
     for keyword, tokens in _statements(text):

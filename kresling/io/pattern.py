@@ -248,6 +248,12 @@ def is_integer(value) -> bool:
     return bool(np.isfinite(value)) and float(value) == int(value)
 
 
+#: Largest coordinate magnitude of a vertex [mm]: far beyond any sheet, and far enough
+#: inside the floating-point range that squared lengths, areas and the hinges' gradients
+#: (products of up to ~6 lengths) stay finite (1e30^6 = 1e180).
+MAX_COORDINATE = 1e30
+
+
 def _as_coordinates(values, name: str, *, count: int | None = None) -> np.ndarray:
     """(N, 3) float64 copy of 2D or 3D coordinates given in memory."""
     try:
@@ -266,6 +272,11 @@ def _as_coordinates(values, name: str, *, count: int | None = None) -> np.ndarra
     if bad.size:
         raise PatternFileError(f"{name}[{bad[0]}]: vertex {bad[0]} has a non-finite coordinate",
                                key=name, index=int(bad[0]))
+    far = np.flatnonzero((np.abs(array) > MAX_COORDINATE).any(axis=1))
+    if far.size:
+        raise PatternFileError(f"{name}[{far[0]}]: vertex {far[0]} has a coordinate of "
+                               f"{np.abs(array[far[0]]).max():.3g} mm, out of range: at most "
+                               f"{MAX_COORDINATE:g} mm", key=name, index=int(far[0]))
     return array
 
 
@@ -433,6 +444,13 @@ def complete_edges(faces, edges: np.ndarray, assignments=None, angles=None):
     return np.array(pairs, dtype=np.int64).reshape(-1, 2), letters, fold
 
 
+def _accepting(ratio: float) -> str:
+    """A tolerance, written with 2 significant digits, at least ``ratio``: what accepts a
+    panel whose worst corner lies ``ratio`` of its diameter off its plane."""
+    exponent = np.floor(np.log10(ratio)) - 1
+    return f"{np.ceil(ratio / 10.0**exponent * (1 + 1e-12)) * 10.0**exponent:.2g}"
+
+
 def check_panels(vertices: np.ndarray, faces, planarity_tolerance,
                  fail: Callable[[int, str], Exception], *, first: int = 0) -> None:
     """Raise ``fail(face, message)`` for the first degenerate or non-planar panel.
@@ -489,8 +507,9 @@ def check_panels(vertices: np.ndarray, faces, planarity_tolerance,
                 problems[index] = (f"face {index} is not planar: its corner at vertex "
                                    f"{faces[index][worst[row]] + first} lies {off:.3g} mm off "
                                    f"its plane (tolerance {planarity_tolerance:g} of its "
-                                   f"{diameter[row]:.3g} mm size; a larger "
-                                   "planarity_tolerance, or none, accepts warped panels)")
+                                   f"{diameter[row]:.3g} mm size; a larger planarity_tolerance "
+                                   f"accepts it: planarity_tolerance = "
+                                   f"{_accepting(off / diameter[row])})")
     if problems:
         index = min(problems)
         raise fail(index, problems[index])

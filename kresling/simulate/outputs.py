@@ -101,7 +101,9 @@ def write_outputs(simulation, directory, *, view=True) -> dict:
     written["summary"] = directory / "summary.json"
     written["summary"].write_text(json.dumps(simulation.summary(), indent=2) + "\n")
 
-    if view:
+    if view and not path.num_steps:  # no increment converged: no path to show
+        logger.warning("view.html not written: the path has no converged increment")
+    elif view:
         try:
             from kresling.view import view_path, write_html
         except ImportError as error:  # plotly missing: the other files still stand

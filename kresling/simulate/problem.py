@@ -26,16 +26,13 @@ from pathlib import Path
 import numpy as np
 
 from kresling import _core
+from kresling._validation import show
 from kresling.io import pattern_from_arrays, read_pattern
 from kresling.model import CreaseLaws, HingeLaw, ManualProperties, SheetMaterial
 from kresling.model.pattern_model import FOLD_FAMILIES
 from kresling.model.panel_elements import CENTRES, SPLITS
 from kresling.laws import BAR_LAWS, SPRING_LAWS
-
-try:  # Python >= 3.11
-    import tomllib
-except ModuleNotFoundError:  # pragma: no cover - older Pythons use the same parser, tomli
-    import tomli as tomllib
+from kresling.simulate.problem_file import read_toml
 
 __all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_problem", "METHODS"]
 
@@ -206,6 +203,44 @@ def _positive(t, key, value, allowed=None):
     return value
 
 
+#: Magnitudes a physical quantity of a problem (a modulus, a length, an area, a stiffness,
+#: a force) may have: far beyond any sheet in mm, N and N/mm^2, and far enough inside the
+#: floating-point range (1e-308 to 1e308) that the model's products of a few of them
+#: (stiffness times length squared, ...) neither overflow nor vanish.
+QUANTITY_RANGE = (1e-30, 1e30)
+
+
+def _in_range(t, key, value, *, zero=False):
+    low, high = QUANTITY_RANGE
+    if not (low <= abs(value) <= high or (zero and value == 0)):
+        t.fail(key, f"= {value!r} is out of range: its magnitude must be in [{low:g}, {high:g}]"
+                    + (" (or 0)" if zero else ""))
+    return value
+
+
+def _quantity(t, key, value, allowed=None):
+    """A positive physical quantity, within QUANTITY_RANGE."""
+    return _in_range(t, key, _positive(t, key, value))
+
+
+def _quantities(t, key, value, allowed=None, *, zero=False):
+    """A number or an array of them (one per element): each > 0 (>= 0 with ``zero``),
+    within QUANTITY_RANGE."""
+    numbers = value if isinstance(value, list) else [value]
+    checked = []
+    for number in numbers:
+        number = _number(t, key, number)
+        if number < 0 or (number == 0 and not zero):
+            where = f"has an entry {number!r} that" if isinstance(value, list) else f"= {number!r}"
+            t.fail(key, f"{where} is invalid: must be {'>= 0' if zero else '> 0'}")
+        checked.append(_in_range(t, key, number, zero=zero))
+    return np.array(checked, dtype=float) if isinstance(value, list) else checked[0]
+
+
+def _stiffnesses(t, key, value, allowed=None):
+    return _quantities(t, key, value, zero=True)
+
+
 def _integer(t, key, value, allowed=None):
     if isinstance(value, bool) or not isinstance(value, int):
         t.fail(key, f"= {value!r} is invalid: must be an integer")
@@ -238,7 +273,7 @@ def _string(t, key, value, allowed=None):
 def _vector3(t, key, value, allowed=None):
     if not isinstance(value, list) or len(value) != 3:
         t.fail(key, f"= {value!r} is invalid: must be 3 numbers [x, y, z]")
-    return tuple(_number(t, key, v) for v in value)
+    return tuple(_in_range(t, key, _number(t, key, v), zero=True) for v in value)
 
 
 def _array_of_tables(t, key, value, allowed=None):
@@ -256,10 +291,18 @@ def _limits(t, key, value, allowed=None):
     return (low, high)
 
 
-def _scalar_or_list(t, key, value, allowed=None):
-    if isinstance(value, list):
-        return np.array([_number(t, key, v) for v in value], dtype=float)
-    return _number(t, key, value)
+def _panels(t, key, value, allowed=None):
+    """Inline panels: a non-empty array of arrays of integers (their ranges are the
+    pattern's to check)."""
+    if not isinstance(value, list) or not value:
+        t.fail(key, f"= {show(value)} is invalid: must be a non-empty array of panels, each "
+                    "an array of vertex indices")
+    for index, panel in enumerate(value):
+        if not isinstance(panel, list) or not all(
+                isinstance(v, int) and not isinstance(v, bool) for v in panel):
+            t.fail(key, f"[{index}] = {show(panel)} is invalid: must be an array of vertex "
+                        "indices (integers)")
+    return value
 
 
 def _node_list(t, count):
@@ -295,13 +338,15 @@ def _read_pattern(t, base, compat):
         pattern = read_pattern(path, planarity_tolerance=tolerance)
     elif t.has("vertices"):
         vertices = t.get("vertices", lambda t_, k, v, a: v)
-        panels = t.get("panels", lambda t_, k, v, a: v, required=True,
+        panels = t.get("panels", _panels, required=True,
                        allowed="a list of panels (lists of vertex indices)")
         try:
             pattern = pattern_from_arrays(np.asarray(vertices, dtype=float), panels,
                                           planarity_tolerance=tolerance)
-        except (TypeError, ValueError) as error:
-            t.fail("vertices", f"does not describe a pattern: {error}")
+        except (TypeError, ValueError, OverflowError) as error:
+            # The pattern calls the panels "faces": name the problem's key.
+            t.fail("panels" if str(error).startswith("faces") else "vertices",
+                   f"does not describe a pattern: {error}")
     else:
         t.fail(None, "needs 'file' (a .fold or .obj file) or 'vertices' and 'panels'")
     t.finish()
@@ -312,21 +357,21 @@ def _read_material(t):
     calibration = t.get("calibration", _string, required=True, choices=("auto", "manual"))
     compat = t.get("merlin2_compat", _boolean, False)
     if calibration == "auto":
-        E = t.get("E", _positive, required=True, allowed="Young's modulus [N/mm^2]")
+        E = t.get("E", _quantity, required=True, allowed="Young's modulus [N/mm^2]")
         nu = t.get("nu", _number, required=True, allowed="Poisson's ratio in (-1, 0.5]")
         if not -1 < nu <= 0.5:
             t.fail("nu", f"= {nu!r} is invalid: must be in (-1, 0.5]")
-        thickness = t.get("thickness", _positive, required=True, allowed="the thickness [mm]")
-        length_scale = t.get("length_scale", _positive, None)
+        thickness = t.get("thickness", _quantity, required=True, allowed="the thickness [mm]")
+        length_scale = t.get("length_scale", _quantity, None)
         material = SheetMaterial(E, nu, thickness, length_scale)
     else:
         material = ManualProperties(
-            bar_modulus=t.get("bar_modulus", _positive, required=True,
+            bar_modulus=t.get("bar_modulus", _quantity, required=True,
                               allowed="the bars' modulus C0 [N/mm^2]"),
-            bar_area=t.get("bar_area", _scalar_or_list, required=True,
+            bar_area=t.get("bar_area", _quantities, required=True,
                            allowed="the bars' area [mm^2] (a number or one per bar)"),
-            fold_stiffness=t.get("fold_stiffness", _scalar_or_list, None),
-            bend_stiffness=t.get("bend_stiffness", _scalar_or_list, None))
+            fold_stiffness=t.get("fold_stiffness", _stiffnesses, None),
+            bend_stiffness=t.get("bend_stiffness", _stiffnesses, None))
     t.finish()
     return material, compat
 
@@ -336,11 +381,11 @@ def _read_laws(t, calibration_auto):
     bar = t.get("bar", _string, "ogden", choices=tuple(sorted(BAR_LAWS)))
     fold = HingeLaw(t.get("fold", _string, "enhanced_linear", choices=laws),
                     t.get("fold_limits_deg", _limits, (45.0, 315.0)),
-                    t.get("fold_stiffness", _positive, None))
+                    t.get("fold_stiffness", _quantity, None))
     bend_default = "super_linear_bend" if calibration_auto else "enhanced_linear"
     bend = HingeLaw(t.get("bend", _string, bend_default, choices=laws),
                     t.get("bend_limits_deg", _limits, (45.0, 315.0)),
-                    t.get("bend_stiffness", _positive, None))
+                    t.get("bend_stiffness", _quantity, None))
     families = {}
     for family in FOLD_FAMILIES:
         if not t.has(family):
@@ -348,7 +393,7 @@ def _read_laws(t, calibration_auto):
         sub = _Table(t.get(family, lambda t_, k, v, a: v), f"{t.name}.{family}", t.source, t.text)
         families[family] = HingeLaw(sub.get("law", _string, fold.law, choices=laws),
                                     sub.get("limits_deg", _limits, fold.limits_deg),
-                                    sub.get("stiffness", _positive, fold.stiffness))
+                                    sub.get("stiffness", _quantity, fold.stiffness))
         sub.finish()
     t.finish()
     return CreaseLaws(bar=bar, fold=fold, bend=bend, families=families)
@@ -384,7 +429,7 @@ def _read_analysis(t, num_nodes):
             sub.fail("nodes", "must name one node")
         settings["stop"] = MonitorStop(node[0], sub.get("axis", _string, required=True,
                                                         choices=tuple(_AXES)),
-                                       sub.get("beyond", _positive, required=True,
+                                       sub.get("beyond", _quantity, required=True,
                                                allowed="a displacement magnitude [mm]"))
         sub.finish()
     t.finish()
@@ -460,11 +505,9 @@ def load_problem(problem) -> Problem:
     Raises
     ------
     ValueError
-        For bad TOML, an unknown or missing key, a bad value, a node out of range, a DOF
-        both supported and driven, or a pattern file that cannot be read; the message names
-        the file, the table and the key.
-    OSError
-        When the problem file cannot be read.
+        For a missing or unreadable file, bad TOML, an unknown or missing key, a bad value,
+        a node out of range, a DOF both supported and driven, or a pattern file that cannot
+        be read; the message names the file, the table and the key.
     """
     if isinstance(problem, Problem):
         return problem
@@ -472,12 +515,8 @@ def load_problem(problem) -> Problem:
         data, source, text, base = problem, "problem", None, Path.cwd()
     else:
         path = Path(problem)
-        text = path.read_text(encoding="utf-8")
         source, base = str(path), path.parent
-        try:
-            data = tomllib.loads(text)
-        except tomllib.TOMLDecodeError as error:
-            raise ValueError(f"{source}: not valid TOML: {error}") from None
+        data, text = read_toml(path)
     root = _Table(data, "", source, text)
     root.where = lambda key: f"{source}: key {key!r}" if key else source
 

@@ -118,6 +118,9 @@ class Simulation:
             "supported_dofs": int(self.model.fixed.sum()),
             "increments": path.num_steps,
             "newton_iterations": int(path.iterations.sum()),
+            # Rejected increments (halved, retried) cost iterations too.
+            "attempted_increments": int(path.attempted_increments),
+            "attempted_newton_iterations": int(path.newton_iterations),
             "final_load_factor": float(path.load_factor[-1]) if path.num_steps else None,
             "completed": bool(path.completed),
             "message": path.message,

@@ -40,6 +40,9 @@ class PathResult:
         1-based number of the attempt that failed (0 if none).
     attempted_increments : int
         Increments tried, including rejected ones.
+    newton_iterations : int
+        Newton iterations of every increment tried, including rejected ones
+        (``iterations`` counts those of the accepted increments only).
     """
 
     load_factor: np.ndarray
@@ -54,6 +57,7 @@ class PathResult:
     message: str
     failed_increment: int
     attempted_increments: int
+    newton_iterations: int
 
     @classmethod
     def _from_core(cls, core) -> "PathResult":

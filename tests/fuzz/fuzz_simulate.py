@@ -13,7 +13,7 @@ from hypothesis import event, given
 from hypothesis import strategies as st
 
 from _fuzz import edgy_floats, finite, fuzz, junk, mostly, path_ok
-from kresling.simulate import load_problem, simulate
+from kresling.simulate import build_problem_model, load_problem, simulate
 
 SHEET = {"vertices": [[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0], [1, 1, 0], [2, 1, 0]],
          "panels": [[0, 1, 4, 3], [1, 2, 5, 4]]}
@@ -148,7 +148,11 @@ def toml(problem) -> str:
        st.lists(st.tuples(st.integers(0, 10**6), st.integers(1, 30)), max_size=2),
        st.lists(st.tuples(st.integers(0, 10**6), st.sampled_from(
            ["", "=", "[", "]", "\n", "\"", "x = 1\n", "[analysis]\n", "1e999", "nan", "-",
-            "steps = 99999999999999999999\n", "\x00", "nodes = [0, 99]\n"])), max_size=3))
+            "steps = 99999999999999999999\n", "\x00", "nodes = [0, 99]\n",
+            "x = " + "[" * 600 + "\n", "y = " + "{a = " * 80 + "1" + "}" * 80 + "\n",
+            "fold_stiffness = 1e300\n", "fold_stiffness = -1\n", "bar_area = 5e-324\n",
+            "panels = 5\n", "panels = [[0, 1, true]]\n", "vertices = [[1e300, 0, 0]]\n",
+            "\ufffd", "\\u00"])), max_size=3))
 def test_load_problem_from_toml(base, cuts, insertions):
     text = toml(BASES[base])
     for position, length in cuts:
@@ -168,3 +172,51 @@ def test_load_problem_from_toml(base, cuts, insertions):
         except OSError:
             return
     assert problem.source.endswith("fuzzed.toml")
+
+
+#: Bytes a garbled or binary file holds: not UTF-8, NUL, a BOM, deep nests.
+BYTES = [b"\xff", b"\xc3(", b"\x00", b"\xef\xbb\xbf", b"[" * 700, b"{a=" * 400, b"\r\n"]
+
+
+@fuzz(60)
+@given(st.sampled_from(range(len(BASES))),
+       st.lists(st.tuples(st.integers(0, 10**6), st.sampled_from(BYTES)), min_size=1,
+                max_size=3))
+def test_load_problem_from_bytes(base, insertions):
+    data = toml(BASES[base]).encode()
+    for position, word in insertions:
+        position %= len(data) + 1
+        data = data[:position] + word + data[position:]
+    with tempfile.TemporaryDirectory() as directory:
+        path = Path(directory) / "fuzzed.toml"
+        path.write_bytes(data)
+        try:
+            load_problem(path)
+        except ValueError as error:
+            named_key(error)
+
+
+@fuzz(15)
+@given(st.integers(5, 400), st.sampled_from(["merlin2", "mean"]),
+       st.sampled_from(["auto", "manual"]), st.floats(0.0, 0.3))
+def test_large_polygon_panels(corners, centre, calibration, warp):
+    """One polygon of up to 400 corners (the N5B8 centre's rule grows with the square of
+    the corners' count), flat or warped a little: a model in seconds, or a named refusal."""
+    angles = np.linspace(0.0, 2 * np.pi, corners, endpoint=False)
+    vertices = [[50 * math.cos(a), 50 * math.sin(a), warp * math.sin(3 * a)] for a in angles]
+    problem = {"pattern": {"vertices": vertices, "panels": [list(range(corners))],
+                           "centre": centre, "planarity_tolerance": 0.5},
+               "material": ({"calibration": "auto", "E": 1e3, "nu": 0.3, "thickness": 0.25}
+                            if calibration == "auto" else
+                            {"calibration": "manual", "bar_modulus": 1e3, "bar_area": 1.0,
+                             "bend_stiffness": 1.0}),
+               "support": [{"node": 0, "fix": "xyz"}, {"node": 1, "fix": "yz"},
+                           {"node": 2, "fix": "z"}],
+               "load": [{"node": corners // 2, "force": [0.0, 0.0, 0.01]}],
+               "analysis": {"method": "force_control", "steps": 1}}
+    try:
+        pm = build_problem_model(problem)
+    except ValueError as error:
+        named_key(error)
+        return
+    finite(pm.model.nodes)

@@ -32,6 +32,13 @@ void check_hinge_geometry(const NodeMatrix& X, const std::array<Index, 4>& nodes
   check_hinge_geometry(X, nodes, index, extent(X));
 }
 
+void check_hinge_geometry_at_scale(const NodeMatrix& X, const std::array<Index, 4>& nodes,
+                                   std::size_t index, double scale) {
+  check_hinge_geometry(X, nodes, index, scale);
+}
+
+double node_extent(const NodeMatrix& X) { return extent(X); }
+
 Model::Model(NodeMatrix nodes, std::vector<Bar> bars, std::vector<Hinge> hinges,
              std::vector<std::uint8_t> fixed, std::vector<Cable> cables)
     : nodes_(std::move(nodes)), fixed_(std::move(fixed)) {

@@ -22,6 +22,12 @@ namespace kresling::model {
 /// with the same rule.
 void check_hinge_geometry(const NodeMatrix& X, const std::array<Index, 4>& nodes,
                           std::size_t index);
+/// The same check at a given length scale (`node_extent(X)`): a caller checking many
+/// hinges computes the scale once (per hinge it costs a pass over every node).
+void check_hinge_geometry_at_scale(const NodeMatrix& X, const std::array<Index, 4>& nodes,
+                                   std::size_t index, double scale);
+/// The length scale of the geometry checks: the diagonal of the nodes' bounding box [mm].
+double node_extent(const NodeMatrix& X);
 
 class Model {
  public:

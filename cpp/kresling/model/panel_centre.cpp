@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 
 #include "kresling/model/octave_arithmetic.hpp"
+#include "kresling/model/polygon_centre_walk.hpp"
 
 namespace kresling::model {
 
@@ -91,8 +92,11 @@ Vector3 polygon_optimal_centre(const std::vector<Vector3>& corners) {
   mean /= static_cast<double>(m);
   std::vector<Vector3> candidates = {
       0.5 * (corners[pairs[shortest].first] + corners[pairs[shortest].second]), mean};
-  // Every crossing of two diagonal lines (exact minimiser for a planar polygon).
-  for (std::size_t p = 0; p < pairs.size(); ++p) {
+  // Every crossing of two diagonal lines (exact minimiser for a planar polygon); beyond
+  // kCrossingCorners corners, where they are too many, the walk to the lowest of them.
+  const bool small = m <= kCrossingCorners;
+  if (!small) candidates.push_back(planar_polygon_centre_walk(corners));
+  for (std::size_t p = 0; small && p < pairs.size(); ++p) {
     for (std::size_t q = p + 1; q < pairs.size(); ++q) {
       Vector3 x;
       if (closest_on_line(corners[pairs[p].first], corners[pairs[p].second],
@@ -146,7 +150,11 @@ Vector3 polygon_optimal_centre(const std::vector<Vector3>& corners) {
     }
     return x;
   };
-  for (const Vector3& start : {best, candidates[0], candidates[1]}) {
+  // A large polygon is refined from the best crossing only (each refinement costs up to
+  // 5000 passes over its diagonals).
+  const std::vector<Vector3> starts =
+      small ? std::vector<Vector3>{best, candidates[0], candidates[1]} : std::vector<Vector3>{best};
+  for (const Vector3& start : starts) {
     const Vector3 x = refine(start);
     const double value = polygon_centre_objective(corners, x);
     if (value < best_value) best = x, best_value = value;

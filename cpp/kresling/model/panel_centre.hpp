@@ -14,9 +14,11 @@
 /// closest (for a planar quad: where the diagonals cross), so a warped quad bends along its
 /// shorter diagonal. The polygon objective is convex; for a planar polygon it is piecewise
 /// linear and its minimum lies where two diagonal lines cross, so every crossing is a
-/// candidate and the best is exact; a warped polygon's minimum is refined from the best
-/// crossing by iteratively reweighted least squares.
+/// candidate and the best is exact (beyond kCrossingCorners corners the lowest crossing is
+/// walked to instead of every one tried); a warped polygon's minimum is refined from the
+/// best crossing by iteratively reweighted least squares.
 
+#include <cstddef>
 #include <vector>
 
 #include "kresling/core/types.hpp"
@@ -29,6 +31,11 @@ Vector3 quad_centre(const Vector3& p0, const Vector3& p1, const Vector3& p2, con
 
 /// The objective the N5B8 centre of a polygon with more than 4 corners minimises at `x`.
 double polygon_centre_objective(const std::vector<Vector3>& corners, const Vector3& x);
+
+/// Largest polygon whose centre is chosen among every crossing of two of its diagonal lines
+/// (D^3 / 2 operations for D diagonals: 8e6 at 24 corners); a larger one walks to the
+/// lowest crossing (polygon_centre_walk.hpp), in O(D log D) per move.
+inline constexpr std::size_t kCrossingCorners = 24;
 
 /// The N5B8 centre of a polygon with more than 4 corners (in order around it).
 Vector3 polygon_optimal_centre(const std::vector<Vector3>& corners);

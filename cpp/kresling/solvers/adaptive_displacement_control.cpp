@@ -193,7 +193,9 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
   const double event_width = kEventWidth * spacing;
   auto sample_at = [&](int k) { return k == steps ? 1.0 : k * spacing; };
   auto newton = [&](VectorX& w, double t) {
-    return equilibrium_at(w, t, start, prescribed, imposed);
+    const NewtonOutcome outcome = equilibrium_at(w, t, start, prescribed, imposed);
+    result.newton_iterations += outcome.iterations;
+    return outcome;
   };
   auto why = [&](const NewtonOutcome& o) {
     return o.failure.empty() ? "Newton needed " + std::to_string(o.iterations) + " iterations"

@@ -90,6 +90,7 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
   VectorX u = initial.size() ? initial : VectorX::Zero(n);
   if (options_.merlin2_steps) return solve_merlin2_steps(prescribed, steps, imposed, u);
   int fallback_attempts = 0;  // of adaptive increments that could not finish the path
+  long long fallback_iterations = 0;
   // Cables are tension-only: their slack kink is not located, so they keep fixed steps.
   if (options_.adaptive && model.cables().empty()) {
     if (!(full_workspace_ && full_workspace_->fits(model))) {
@@ -104,10 +105,12 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
     // start, so that they never complete less of it than fixed increments would: the result
     // is the fixed increments' own, with both runs' attempts counted.
     fallback_attempts = adaptive.attempted_increments;
+    fallback_iterations = adaptive.newton_iterations;
   }
   // Fixed increments: the path follower under the prescribed motion from u.
   PathResult result;
   result.attempted_increments = fallback_attempts;
+  result.newton_iterations = fallback_iterations;
   DisplacementDrive drive(model, prescribed, u);
   FollowOptions follow;
   follow.newton = options_.newton;
@@ -177,6 +180,7 @@ PathResult DisplacementControl::solve_merlin2_steps(const VectorX& prescribed, i
         damping == 1.0 ? newton_equilibrium(*assembler_, *solver_, trial, no_load_,
                                             options_.newton, budget)
                        : damped_newton(*assembler_, *solver_, trial, options_.newton, damping);
+    result.newton_iterations += outcome.iterations;
     PathStep step;
     bool finite = true;
     if (outcome.converged && outcome.iterations < limit) {

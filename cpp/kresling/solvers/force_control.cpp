@@ -157,6 +157,7 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
         break;
       }
     }
+    result.newton_iterations += outcome.iterations;
     PathStep step;
     if (outcome.converged && outcome.iterations <= options.shrink_above_iterations) {
       step = record_step(assembler, trial, l_trial, outcome, result.constraint_dofs, 1.0);

@@ -65,6 +65,9 @@ struct PathResult {
   int failed_increment = 0;
   /// Increments tried, accepted or not.
   int attempted_increments = 0;
+  /// Newton iterations of every increment tried, accepted or not (the steps' `iterations`
+  /// count the accepted ones only).
+  long long newton_iterations = 0;
 };
 
 }  // namespace kresling::solvers

@@ -43,8 +43,10 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
   };
   auto solve_at = [&](VectorX& trial, double t) {
     control.apply(t, trial, external);
-    return newton_equilibrium(assembler, solver, trial, external, options.newton, budget,
-                              options.extra);
+    const NewtonOutcome outcome = newton_equilibrium(assembler, solver, trial, external,
+                                                     options.newton, budget, options.extra);
+    result.newton_iterations += outcome.iterations;
+    return outcome;
   };
   // The last accepted points of the path, for the extrapolated starting guess.
   std::vector<double> path_t{0.0};
