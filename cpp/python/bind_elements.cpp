@@ -86,6 +86,23 @@ CcdOptions ccd_options(double min_distance, double t_max, double conservative_re
   return o;
 }
 
+using Rows4 = Eigen::Matrix<double, 4, 3, Eigen::RowMajor>;
+using FourNodeCcd = TimeOfImpact (*)(const Vector3&, const Vector3&, const Vector3&,
+                                     const Vector3&, const Vector3&, const Vector3&,
+                                     const Vector3&, const Vector3&, const CcdOptions&);
+
+// A four-node CCD kernel on the rows of (4, 3) arrays of start and end positions.
+py::tuple ccd_tuple(FourNodeCcd kernel, const Rows4& start, const Rows4& end,
+                    const CcdOptions& options) {
+  if (!start.allFinite() || !end.allFinite()) {
+    throw std::invalid_argument("start, end: every coordinate must be finite");
+  }
+  const Vector3 a0 = start.row(0), a1 = start.row(1), a2 = start.row(2), a3 = start.row(3);
+  const Vector3 b0 = end.row(0), b1 = end.row(1), b2 = end.row(2), b3 = end.row(3);
+  const auto r = kernel(a0, a1, a2, a3, b0, b1, b2, b3, options);
+  return py::make_tuple(r.impact, r.toi);
+}
+
 // Contact kernels: distances, barriers, the initial stiffness, CCD and the broad phase.
 void bind_contact(py::module_& m) {
   m.def(
@@ -157,40 +174,27 @@ void bind_contact(py::module_& m) {
       py::arg("min_stiffness_scale") = 1e11);
   m.def(
       "point_triangle_ccd",
-      [](const Eigen::Matrix<double, 4, 3, Eigen::RowMajor>& start,
-         const Eigen::Matrix<double, 4, 3, Eigen::RowMajor>& end, double min_distance,
-         double t_max, double conservative_rescaling) {
-        if (!start.allFinite() || !end.allFinite()) {
-          throw std::invalid_argument("start, end: every coordinate must be finite");
-        }
-        const auto a = start.transpose(), b = end.transpose();
-        const auto r = point_triangle_ccd(a.col(0), a.col(1), a.col(2), a.col(3), b.col(0),
-                                          b.col(1), b.col(2), b.col(3),
-                                          ccd_options(min_distance, t_max, conservative_rescaling));
-        return py::make_tuple(r.impact, r.toi);
+      [](const Rows4& start, const Rows4& end, double min_distance, double t_max,
+         double conservative_rescaling) {
+        return ccd_tuple(&point_triangle_ccd, start, end,
+                         ccd_options(min_distance, t_max, conservative_rescaling));
       },
       py::arg("start"), py::arg("end"), py::arg("min_distance") = 0.0, py::arg("t_max") = 1.0,
       py::arg("conservative_rescaling") = 0.9);
   m.def(
       "edge_edge_ccd",
-      [](const Eigen::Matrix<double, 4, 3, Eigen::RowMajor>& start,
-         const Eigen::Matrix<double, 4, 3, Eigen::RowMajor>& end, double min_distance,
-         double t_max, double conservative_rescaling) {
-        if (!start.allFinite() || !end.allFinite()) {
-          throw std::invalid_argument("start, end: every coordinate must be finite");
-        }
-        const auto a = start.transpose(), b = end.transpose();
-        const auto r = edge_edge_ccd(a.col(0), a.col(1), a.col(2), a.col(3), b.col(0), b.col(1),
-                                     b.col(2), b.col(3),
-                                     ccd_options(min_distance, t_max, conservative_rescaling));
-        return py::make_tuple(r.impact, r.toi);
+      [](const Rows4& start, const Rows4& end, double min_distance, double t_max,
+         double conservative_rescaling) {
+        return ccd_tuple(&edge_edge_ccd, start, end,
+                         ccd_options(min_distance, t_max, conservative_rescaling));
       },
       py::arg("start"), py::arg("end"), py::arg("min_distance") = 0.0, py::arg("t_max") = 1.0,
       py::arg("conservative_rescaling") = 0.9);
   m.def("triangle_edges", &triangle_edges, py::arg("triangles"));
   m.def(
       "contact_candidates",
-      [](const Eigen::Ref<const NodeMatrix>& nodes, const Eigen::Ref<const TriangleMatrix>& triangles,
+      [](const Eigen::Ref<const NodeMatrix>& nodes,
+         const Eigen::Ref<const TriangleMatrix>& triangles,
          double distance, std::optional<NodeMatrix> displacement) {
         const EdgeMatrix edges = triangle_edges(triangles);
         check_contact_mesh(nodes, triangles, edges, distance);

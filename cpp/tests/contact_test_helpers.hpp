@@ -44,6 +44,17 @@ inline std::array<Vector3, 4> unstack(const Vector12& v) {
   return {v.segment<3>(0), v.segment<3>(3), v.segment<3>(6), v.segment<3>(9)};
 }
 
+// Squared distances of four stacked nodes (p, t0, t1, t2) and (ea0, ea1, eb0, eb1).
+inline double point_triangle_distance2(const Vector12& y) {
+  const auto v = unstack(y);
+  return elements::point_triangle_distance(v[0], v[1], v[2], v[3], false).value;
+}
+
+inline double edge_edge_distance2(const Vector12& y) {
+  const auto v = unstack(y);
+  return elements::edge_edge_distance(v[0], v[1], v[2], v[3], false).value;
+}
+
 // Central differences of f (returning ScalarDerivatives<N>) about x with step h: the
 // gradient from the values and the Hessian from the gradients.
 template <int N, typename F>

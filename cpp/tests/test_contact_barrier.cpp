@@ -30,16 +30,6 @@ Vector12 random_active_pair(std::mt19937& rng, double d_hat, Distance2&& distanc
   }
 }
 
-double pt_distance2(const Vector12& y) {
-  const auto v = unstack(y);
-  return point_triangle_distance(v[0], v[1], v[2], v[3], false).value;
-}
-
-double ee_distance2(const Vector12& y) {
-  const auto v = unstack(y);
-  return edge_edge_distance(v[0], v[1], v[2], v[3], false).value;
-}
-
 }  // namespace
 
 TEST(ContactBarrier, LogBarrierClosedFormAndDerivatives) {
@@ -81,7 +71,7 @@ TEST(ContactBarrier, PairEnergiesMatchFiniteDifferences) {
   const double d_hat = 0.3, kappa = 7.0;
   int mollified = 0;
   for (int trial = 0; trial < 200; ++trial) {
-    const Vector12 x_pt = random_active_pair(rng, d_hat, pt_distance2);
+    const Vector12 x_pt = random_active_pair(rng, d_hat, point_triangle_distance2);
     const auto pt = [&](const Vector12& y) {
       const auto v = unstack(y);
       return point_triangle_barrier(v[0], v[1], v[2], v[3], d_hat, kappa);
@@ -90,11 +80,12 @@ TEST(ContactBarrier, PairEnergiesMatchFiniteDifferences) {
     EXPECT_LE(relative_error(e_pt.gradient, fd_pt.gradient), kRelTol) << trial;
     EXPECT_LE(relative_error(e_pt.hessian, fd_pt.hessian), kRelTol) << trial;
     // The value is kappa b(s) of the distance kernel.
-    EXPECT_NEAR(e_pt.value, kappa * log_barrier(pt_distance2(x_pt), d_hat * d_hat).value,
+    const double s_pt = point_triangle_distance2(x_pt);
+    EXPECT_NEAR(e_pt.value, kappa * log_barrier(s_pt, d_hat * d_hat).value,
                 1e-14 * e_pt.value);
 
     // Edge-edge with a threshold large enough that about half the pairs are mollified.
-    const Vector12 x_ee = random_active_pair(rng, d_hat, ee_distance2);
+    const Vector12 x_ee = random_active_pair(rng, d_hat, edge_edge_distance2);
     const auto v = unstack(x_ee);
     const double cross2 = cross_squared_norm(v[1] - v[0], v[3] - v[2]).value;
     const double eps_x = cross2 * (trial % 2 == 0 ? 2.0 : 0.5);
@@ -146,7 +137,7 @@ TEST(ContactBarrier, ProjectionIsTheNearestPositiveSemiDefiniteMatrix) {
   const double d_hat = 0.3;
   int indefinite = 0;
   for (int trial = 0; trial < 100; ++trial) {
-    const Vector12 x = random_active_pair(rng, d_hat, pt_distance2);
+    const Vector12 x = random_active_pair(rng, d_hat, point_triangle_distance2);
     const auto v = unstack(x);
     const auto exact = point_triangle_barrier(v[0], v[1], v[2], v[3], d_hat, 1.0);
     const auto projected = point_triangle_barrier(v[0], v[1], v[2], v[3], d_hat, 1.0,

@@ -26,16 +26,6 @@ struct Trajectory {
   Vector12 at(double t) const { return x0 + t * (x1 - x0); }
 };
 
-double pt_distance2(const Vector12& y) {
-  const auto v = unstack(y);
-  return point_triangle_distance(v[0], v[1], v[2], v[3], false).value;
-}
-
-double ee_distance2(const Vector12& y) {
-  const auto v = unstack(y);
-  return edge_edge_distance(v[0], v[1], v[2], v[3], false).value;
-}
-
 // Volume spanned by the four nodes: zero exactly when they are coplanar, which a point
 // passing through a triangle, or an edge through an edge, must be at the crossing.
 double coplanarity(const Vector12& y) {
@@ -175,7 +165,8 @@ TEST(ContactCcd, RandomTrajectoriesNeverPassACrossing) {
     o.min_distance = xi;
     for (int trial = 0; trial < 400; ++trial) {
       for (bool edges : {false, true}) {
-        const std::function<double(const Vector12&)> d2 = edges ? ee_distance2 : pt_distance2;
+        const std::function<double(const Vector12&)> d2 =
+            edges ? edge_edge_distance2 : point_triangle_distance2;
         Trajectory path{stack(random_point(rng), random_point(rng), random_point(rng),
                               random_point(rng)),
                         stack(random_point(rng), random_point(rng), random_point(rng),

@@ -14,11 +14,12 @@
 /// clamping when grad B = 0). The unclamped value is the stiffness at which the barrier's
 /// force best balances the elastic force along it (least squares). kappa_min is the
 /// stiffness at which kappa 4 s0 b''(s0), the barrier's curvature (the Gauss-Newton part of
-/// d2 b(d^2) / dd^2) at the smallest separation IPC considers resolvable, equals c m. IPC minimises the
-/// incremental potential (x - x~)^T M (x - x~) / 2 + h^2 Psi + kappa B, whose Hessian is
-/// M + h^2 K + kappa hess B, so m is a node's mass there; a static problem minimises
-/// Psi + kappa B, and a caller passes a representative diagonal entry of the elastic tangent
-/// K (energy / length^2), which takes M's place in the Newton matrix, as `average_mass`.
+/// d2 b(d^2) / dd^2) at the smallest separation IPC considers resolvable, equals c m. IPC
+/// minimises the incremental potential (x - x~)^T M (x - x~) / 2 + h^2 Psi + kappa B, whose
+/// Hessian is M + h^2 K + kappa hess B, so m is a node's mass there; a static problem
+/// minimises Psi + kappa B, and a caller passes a representative diagonal entry of the
+/// elastic tangent K (energy / length^2), which takes M's place in the Newton matrix, as
+/// `average_mass`.
 
 #include "kresling/core/types.hpp"
 

@@ -50,10 +50,21 @@ TimeOfImpact additive_ccd(Vector12 x, Vector12 dx, int side_a, Distance2&& dista
   }
 }
 
-Vector12 stack(const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d) {
-  Vector12 v;
-  v << a, b, c, d;
-  return v;
+// ACCD for the pair of four nodes moving linearly from `start` to `end`, the first `side_a`
+// on one primitive, with squared distance distance2(a, b, c, d).
+template <typename Distance2>
+TimeOfImpact four_node_ccd(const std::array<const Vector3*, 4>& start,
+                           const std::array<const Vector3*, 4>& end, int side_a,
+                           Distance2&& distance2, const CcdOptions& options) {
+  Vector12 x, dx;
+  for (int i = 0; i < 4; ++i) {
+    x.segment<3>(3 * i) = *start[static_cast<std::size_t>(i)];
+    dx.segment<3>(3 * i) = *end[static_cast<std::size_t>(i)] - *start[static_cast<std::size_t>(i)];
+  }
+  auto of_stack = [&distance2](const Vector12& y) {
+    return distance2(y.segment<3>(0), y.segment<3>(3), y.segment<3>(6), y.segment<3>(9));
+  };
+  return additive_ccd(x, dx, side_a, of_stack, options);
 }
 
 }  // namespace
@@ -63,14 +74,11 @@ TimeOfImpact point_triangle_ccd(const Vector3& p_start, const Vector3& t0_start,
                                 const Vector3& p_end, const Vector3& t0_end,
                                 const Vector3& t1_end, const Vector3& t2_end,
                                 const CcdOptions& options) {
-  const Vector12 x = stack(p_start, t0_start, t1_start, t2_start);
-  const Vector12 dx = stack(p_end, t0_end, t1_end, t2_end) - x;
-  auto distance2 = [](const Vector12& y) {
-    return point_triangle_distance(y.segment<3>(0), y.segment<3>(3), y.segment<3>(6),
-                                   y.segment<3>(9), false)
-        .value;
+  auto distance2 = [](const Vector3& p, const Vector3& t0, const Vector3& t1, const Vector3& t2) {
+    return point_triangle_distance(p, t0, t1, t2, false).value;
   };
-  return additive_ccd(x, dx, 1, distance2, options);
+  return four_node_ccd({&p_start, &t0_start, &t1_start, &t2_start},
+                       {&p_end, &t0_end, &t1_end, &t2_end}, 1, distance2, options);
 }
 
 TimeOfImpact edge_edge_ccd(const Vector3& ea0_start, const Vector3& ea1_start,
@@ -78,14 +86,11 @@ TimeOfImpact edge_edge_ccd(const Vector3& ea0_start, const Vector3& ea1_start,
                            const Vector3& ea0_end, const Vector3& ea1_end,
                            const Vector3& eb0_end, const Vector3& eb1_end,
                            const CcdOptions& options) {
-  const Vector12 x = stack(ea0_start, ea1_start, eb0_start, eb1_start);
-  const Vector12 dx = stack(ea0_end, ea1_end, eb0_end, eb1_end) - x;
-  auto distance2 = [](const Vector12& y) {
-    return edge_edge_distance(y.segment<3>(0), y.segment<3>(3), y.segment<3>(6),
-                              y.segment<3>(9), false)
-        .value;
+  auto distance2 = [](const Vector3& a0, const Vector3& a1, const Vector3& b0, const Vector3& b1) {
+    return edge_edge_distance(a0, a1, b0, b1, false).value;
   };
-  return additive_ccd(x, dx, 2, distance2, options);
+  return four_node_ccd({&ea0_start, &ea1_start, &eb0_start, &eb1_start},
+                       {&ea0_end, &ea1_end, &eb0_end, &eb1_end}, 2, distance2, options);
 }
 
 TimeOfImpact point_plane_ccd(const Vector3& p_start, const Vector3& p_end,

@@ -104,7 +104,8 @@ ScalarDerivatives<N> scatter(const ScalarDerivatives<K>& f, const std::array<int
     g.gradient.template segment<3>(3 * slot[i]) = f.gradient.template segment<3>(3 * i);
     if (!with_hessian) continue;
     for (int j = 0; j < K / 3; ++j) {
-      g.hessian.template block<3, 3>(3 * slot[i], 3 * slot[j]) = f.hessian.template block<3, 3>(3 * i, 3 * j);
+      g.hessian.template block<3, 3>(3 * slot[i], 3 * slot[j]) =
+          f.hessian.template block<3, 3>(3 * i, 3 * j);
     }
   }
   return g;
