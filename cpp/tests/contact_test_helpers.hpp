@@ -1,0 +1,82 @@
+#pragma once
+// Shared by the contact kernel tests: random geometry and finite differences of a scalar
+// with gradient and Hessian.
+//
+// Central differences with step h have truncation error ~h^2 |f'''| / 6 and rounding error
+// ~eps |f| / h; with h = 1e-6 times the geometry's scale both stay below ~1e-9 of the
+// derivative's scale for the smooth, O(1)-conditioned configurations used here, so a
+// relative bound of 1e-6 (on the norm) leaves two or more orders of headroom and still
+// catches any wrong term (those are O(1) relative).
+
+#include <array>
+#include <cmath>
+#include <random>
+
+#include <Eigen/Geometry>
+
+#include "kresling/core/types.hpp"
+#include "kresling/elements/contact_distance.hpp"
+
+namespace kresling::contact_test {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kStep = 1e-6;
+constexpr double kRelTol = 1e-6;
+
+inline Vector3 random_point(std::mt19937& rng, double scale = 1.0) {
+  std::uniform_real_distribution<double> u(-scale, scale);
+  return {u(rng), u(rng), u(rng)};
+}
+
+inline Matrix3 random_rotation(std::mt19937& rng) {
+  const Vector3 axis = random_point(rng).normalized();
+  return Eigen::AngleAxisd(std::uniform_real_distribution<double>(0, 2 * kPi)(rng), axis)
+      .toRotationMatrix();
+}
+
+inline Vector12 stack(const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d) {
+  Vector12 v;
+  v << a, b, c, d;
+  return v;
+}
+
+inline std::array<Vector3, 4> unstack(const Vector12& v) {
+  return {v.segment<3>(0), v.segment<3>(3), v.segment<3>(6), v.segment<3>(9)};
+}
+
+// Squared distances of four stacked nodes (p, t0, t1, t2) and (ea0, ea1, eb0, eb1).
+inline double point_triangle_distance2(const Vector12& y) {
+  const auto v = unstack(y);
+  return elements::point_triangle_distance(v[0], v[1], v[2], v[3], false).value;
+}
+
+inline double edge_edge_distance2(const Vector12& y) {
+  const auto v = unstack(y);
+  return elements::edge_edge_distance(v[0], v[1], v[2], v[3], false).value;
+}
+
+// Central differences of f (returning ScalarDerivatives<N>) about x with step h: the
+// gradient from the values and the Hessian from the gradients.
+template <int N, typename F>
+elements::ScalarDerivatives<N> finite_differences(F&& f, const Eigen::Matrix<double, N, 1>& x,
+                                                  double h) {
+  elements::ScalarDerivatives<N> fd;
+  fd.value = f(x).value;
+  for (int k = 0; k < N; ++k) {
+    Eigen::Matrix<double, N, 1> p = x, q = x;
+    p[k] += h;
+    q[k] -= h;
+    const auto fp = f(p), fq = f(q);
+    fd.gradient[k] = (fp.value - fq.value) / (2 * h);
+    fd.hessian.col(k) = (fp.gradient - fq.gradient) / (2 * h);
+  }
+  return fd;
+}
+
+// Relative error of a derivative against its finite difference, on the norm.
+template <typename A, typename B>
+double relative_error(const A& exact, const B& fd) {
+  return (exact - fd).norm() / std::max(exact.norm(), 1e-300);
+}
+
+}  // namespace kresling::contact_test
