@@ -431,7 +431,7 @@ def animated_figure(panels, rows, names, *, curves=(), x_label="", y_label="", f
     for k in range(len(panels)):
         # A narrow scene (one of two) needs the camera further back to hold a squat model.
         layout["scene" if k == 0 else f"scene{k + 1}"] = scene_layout(
-            points[k], 2.2 if len(panels) == 1 else 2.7)
+            points[k], 2.5 if len(panels) == 1 else 3.0)
     fig.update_layout(
         title=title_layout, template="plotly_white",
         height=height, margin=dict(l=10, r=20, t=top, b=130), uirevision="view",

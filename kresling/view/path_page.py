@@ -124,7 +124,7 @@ def _layout(title, points, names, total, curve):
     scene = scene_layout(points)
     scene["domain"] = dict(x=[0.0, _SCENES_END if curve is not None else 1.0], y=[0.0, 1.0])
     layout = dict(title=dict(text=title, x=0.5, xanchor="center"), template=_template(),
-                  autosize=True, margin=dict(l=10, r=20, t=top, b=130), uirevision="view",
+                  autosize=True, margin=dict(l=10, r=20, t=top, b=100), uirevision="view",
                   legend=dict(orientation="h", x=0.0, y=1.0, yanchor="bottom"),
                   sliders=[slider(names, total, method="skip")],
                   updatemenus=[play_buttons(method="skip")], scene=scene)

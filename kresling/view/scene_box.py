@@ -40,7 +40,7 @@ def box(points_list) -> tuple:
     return low - grow, high + grow
 
 
-def scene_layout(points_list, distance=2.2) -> dict:
+def scene_layout(points_list, distance=2.5) -> dict:
     """Equal scales on x, y, z (``aspectmode="data"``), axes fixed to :func:`box`; the
     camera at least ``distance`` from the centre (in plotly's scene units)."""
     low, high = box(points_list)
@@ -53,7 +53,7 @@ def scene_layout(points_list, distance=2.2) -> dict:
     # plotly scales the box to sides span / (geometric mean of the spans); the camera
     # steps back by the longest side so that a tall or wide model fits.
     longest = float(span.max() / np.exp(np.log(span).mean()))
-    eye = np.array([1.0, 1.0, 0.7]) / np.linalg.norm([1.0, 1.0, 0.7]) * max(1.4 * longest,
+    eye = np.array([1.0, 1.0, 0.7]) / np.linalg.norm([1.0, 1.0, 0.7]) * max(1.6 * longest,
                                                                               distance)
     return dict(aspectmode="data", camera=dict(eye=dict(zip("xyz", rounded(eye, 3)))), **axes)
 

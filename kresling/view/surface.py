@@ -32,7 +32,9 @@ FAMILY_STYLES = {
     "bend": ("#c7c7c7", 2, "dash"),
     "cut": ("#000000", 5, "solid"),
     "boundary": ("#3b3b3b", 4, "solid"),
-    "join": ("#17becf", 4, "solid"),
+    # Thin and light: a FOLD file of a simulation marks every edge inside a panel "J", and on
+    # a large sheet those would swamp the mountain and valley creases.
+    "join": ("#a6dde6", 1.5, "solid"),
     # The families of a Kresling specimen's elements (kresling.model.EDGE_FAMILIES).
     "polygon_edge": ("#6a3d9a", 4, "solid"),
     "polygon_spoke": ("#c7c7c7", 2, "dash"),
