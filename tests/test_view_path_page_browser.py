@@ -11,13 +11,12 @@ from __future__ import annotations
 
 import html
 import json
-import subprocess
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from test_view_pages_browser import CHROMIUM, needs_browser, render
+from test_view_pages_browser import chromium, needs_browser, render
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -58,11 +57,7 @@ def probe(page, hash_, tmp_path):
     copy = page.with_name("_probe_" + page.name)
     copy.write_text(page.read_text(encoding="utf-8").replace("</body>", PROBE + "</body>"),
                     encoding="utf-8")
-    result = subprocess.run(
-        [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
-         "--enable-unsafe-swiftshader", "--no-first-run",
-         f"--user-data-dir={tmp_path / 'chromium-probe'}", "--virtual-time-budget=20000",
-         "--dump-dom", copy.as_uri() + hash_], capture_output=True, text=True, timeout=180)
+    result = chromium(["--dump-dom"], tmp_path, copy.as_uri() + hash_, profile="probe")
     start = result.stdout.find('<pre id="view-check">')
     assert start >= 0, f"no result in the DOM; chromium said: {result.stderr[-2000:]}"
     return json.loads(html.unescape(result.stdout[start:].split(">", 1)[1].split("</pre>")[0]))
