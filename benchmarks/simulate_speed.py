@@ -1,9 +1,12 @@
 """Speed of ``kresling simulate`` on MERLIN2 v1.1's own example problems.
 
 For each example under tests/data/merlin2_examples/ (the problem file and MERLIN2's run of
-it under GNU Octave on a 2-core machine of this project's size), prints the model's size,
-MERLIN2's path-analysis wall time as it recorded it (meta.txt), our time for the same path
-(model building included; outputs not written) and the ratio. With ``--octave DIR`` where
+it under GNU Octave on a 2-core machine of this project's size), and the Miura-ori sheet of
+examples/miura_bending, prints the model's size, MERLIN2's path-analysis wall time as it
+recorded it (meta.txt), our time for the same path (model building included; outputs not
+written) and the ratio; then, side by side, the time to write every output of the run
+(history.csv, displacements.csv, path.fold, summary.json, view.html) against the solve's,
+and the files' sizes. With ``--octave DIR`` where
 DIR holds MERLIN2 v1.1's source and ``octave-cli`` is installed, MERLIN2 is also timed live,
 side by side in this run (its model building and path analysis, no plotting).
 
@@ -24,6 +27,8 @@ from kresling.simulate import load_problem, simulate
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "tests" / "data" / "merlin2_examples"
+#: Further problems timed with their outputs (no MERLIN2 run of their own).
+MORE = [ROOT / "examples" / "miura_bending" / "problem.toml"]
 
 
 def recorded_seconds(case: Path) -> float:
@@ -119,6 +124,37 @@ def rows(repeat: int, octave):
             yield label, sim, recorded, live, seconds, reference / seconds
 
 
+def outputs(problem, repeat: int):
+    """(increments, solve s, outputs s, {file: bytes}), each time the best of ``repeat``, measured
+    alternately in one run. The first write packs plotly's JavaScript once (about 0.3 s;
+    kept in a cache file), so one write is made before the timed ones."""
+    solve, write = float("inf"), float("inf")
+    with tempfile.TemporaryDirectory() as tmp:
+        simulate(problem, progress=False).write(Path(tmp) / "warm")
+        for k in range(repeat):
+            start = time.perf_counter()
+            sim = simulate(problem, progress=False)
+            solve = min(solve, time.perf_counter() - start)
+            start = time.perf_counter()
+            written = sim.write(Path(tmp) / str(k))
+            write = min(write, time.perf_counter() - start)
+        sizes = {name: path.stat().st_size for name, path in written.items()}
+    return sim.path.num_steps, solve, write, sizes
+
+
+def print_outputs(repeat: int):
+    print(f"\n{'example':<26} {'incr':>5} {'solve s':>8} {'outputs s':>9} {'ratio':>6} "
+          f"{'view MB':>7} {'fold MB':>7} {'csv MB':>7}")
+    for problem in sorted(EXAMPLES.glob("*/problem.toml")) + MORE:
+        steps, solve, write, sizes = outputs(problem, repeat)
+        csv = (sizes["history"] + sizes["displacements"]) / 1e6
+        print(f"{problem.parent.name:<26} {steps:>5} {solve:>8.4f} {write:>9.4f} "
+              f"{write / solve:>6.2f} {sizes.get('view', 0) / 1e6:>7.3f} "
+              f"{sizes['fold'] / 1e6:>7.3f} {csv:>7.3f}")
+    print("\nsolve s: simulate() (model and path); outputs s: Simulation.write() of every "
+          "file; ratio: outputs over solve (goal: <= 1).")
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=5)
@@ -136,6 +172,7 @@ def main(argv=None):
           "timed now (with --octave); ratio: MERLIN2 (live if timed) over ours. 'cubic': the "
           "same increments, each Newton solve started from a cubic extrapolation of the path; "
           "'adaptive': the same samples, the path between them in adaptive increments.")
+    print_outputs(args.repeat)
 
 
 if __name__ == "__main__":

@@ -12,7 +12,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sp
 
 from kresling import _core
 from kresling._validation import as_bool, as_finite_real, as_float_array
@@ -149,6 +148,8 @@ def assemble(model, u=None, *, stiffness=True, shift=0.0, workspace=None) -> Ass
                          "beyond what a float holds)")
     matrix = None
     if K is not None:
+        import scipy.sparse as sp  # here: a command that assembles no matrix needs no scipy
+
         data, indices, indptr, shape = K
         matrix = sp.csc_matrix((np.asarray(data), np.asarray(indices), np.asarray(indptr)),
                                shape=tuple(shape))

@@ -340,7 +340,8 @@ def test_kresling_view_of_a_fold_file(folding, tmp_path):
     result = run_kresling("view", str(path), "-o", "sheet.html", "--frame", "2", cwd=tmp_path)
     assert result.returncode == 0 and result.stderr == ""
     page = (tmp_path / "sheet.html").read_text(encoding="utf-8")
-    assert "var start = 2;" in page and "<title>sheet.fold" in page
+    # The page's title names the file's folder too (a simulation's path.fold is named by it).
+    assert "var start = 2;" in page and f"<title>{path.parent.name}/sheet.fold: 9 vertices" in page
     assert page.count(get_plotlyjs()[:200]) == 1 and not external_urls(page)
     result = run_kresling("view", str(path), "-o", "far.html", "--frame", "12", cwd=tmp_path)
     assert result.returncode == 0

@@ -186,3 +186,18 @@ def test_the_console_check_sees_an_error(tmp_path):
     errors, picture = render(page, "", tmp_path, "broken")
     assert any(e.startswith("Uncaught ReferenceError: notAFunction") for e in errors)
     assert "[console.error] told" in errors and "[unhandledrejection] rejected" in errors
+
+
+@needs_browser
+@pytest.mark.parametrize("size", [(1200, 900), (1920, 1080)])
+@pytest.mark.parametrize("kind", ["bending", "fold"])
+def test_the_page_fills_common_windows(pages, kind, size, tmp_path, monkeypatch):
+    # The plot's height follows the window (no fixed 650 or 700 px): its lowest ink (the
+    # slider's ticks) lies in the window's bottom third at both sizes. (Headless Chromium's
+    # viewport is some 140 px shorter than its window.)
+    monkeypatch.setitem(globals(), "_WINDOW", size)
+    page, first, _ = pages[kind]
+    errors, picture = render(page, first, tmp_path, f"{kind}{size[0]}")
+    assert errors == []
+    ink = np.flatnonzero((picture < 200).any(axis=(1, 2)))
+    assert ink.max() > 0.67 * size[1], (size, ink.max())

@@ -19,8 +19,14 @@ _COMMANDS = ("design", "bend", "snap", "simulate", "view", "sweep", "explore", "
              "manipulator", "arm", "reproduce")
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The top-level parser with every subcommand registered."""
+def build_parser(only=None) -> argparse.ArgumentParser:
+    """The top-level parser with every subcommand registered (``only``: that one alone).
+
+    A command's module imports what its options need (the sweep's metrics, the arm's and
+    the manipulator's defaults, and through them the sweeps, the arm and the manipulator
+    packages); running one command registers that command alone, so that it imports only
+    what it uses.
+    """
     from kresling import __version__
 
     parser = argparse.ArgumentParser(
@@ -30,14 +36,22 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"kresling {__version__}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
     subparsers.required = True
-    for name in _COMMANDS:
+    for name in _COMMANDS if only is None else (only,):
         importlib.import_module(f"kresling.cli.{name}").register(subparsers)
     return parser
 
 
+def _command(argv):
+    """The subcommand ``argv`` names (the first argument that is not an option: the
+    top-level options take no value), or None (then every command is registered, for
+    ``--help``, ``--version`` and the message naming the commands there are)."""
+    first = next((a for a in argv if not a.startswith("-")), None)
+    return first if first in _COMMANDS else None
+
+
 def main(argv=None) -> int:
     """Entry point of the ``kresling`` script; returns the exit status."""
-    parser = build_parser()
+    parser = build_parser(_command(sys.argv[1:] if argv is None else argv))
     args = parser.parse_args(argv)
     try:
         return int(args.func(args) or 0)

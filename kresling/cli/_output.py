@@ -47,10 +47,36 @@ def print_json(obj, infinite_as_text=False) -> None:
     print(json.dumps(_plain(obj, infinite_as_text), indent=2, allow_nan=False))
 
 
+#: A number below this fraction of the largest one in its row or its column prints as 0:
+#: the table shows 10 significant digits, so it is rounding noise there (a coordinate of
+#: -5.7e-16 mm beside ones of 100 mm).
+NOISE = 1e-12
+
+
+def _is_number(cell) -> bool:
+    return isinstance(cell, (float, np.floating)) and math.isfinite(cell)
+
+
+def _cleaned(rows) -> list:
+    """``rows`` with the numbers below :data:`NOISE` of their row's or column's largest
+    magnitude set to 0.0."""
+    rows = [list(row) for row in rows]
+    columns = max((len(r) for r in rows), default=0)
+    column_scale = [max((abs(float(r[i])) for r in rows if i < len(r) and _is_number(r[i])),
+                        default=0.0) for i in range(columns)]
+    for row in rows:
+        row_scale = max((abs(float(c)) for c in row if _is_number(c)), default=0.0)
+        for i, cell in enumerate(row):
+            if _is_number(cell) and abs(float(cell)) < NOISE * max(row_scale, column_scale[i]):
+                row[i] = 0.0
+    return rows
+
+
 def print_table(rows, headers) -> None:
     """Print ``rows`` (sequences of cells) under ``headers``, columns aligned (no rows: the
-    headers alone)."""
-    cells = [[_format(c) for c in row] for row in rows]
+    headers alone). Floats get 10 significant digits; one below 1e-12 of the largest float
+    in its row or column prints as 0 (rounding noise at that precision)."""
+    cells = [[_format(c) for c in row] for row in _cleaned(rows)]
     widths = [max([len(h)] + [len(r[i]) for r in cells]) for i, h in enumerate(headers)]
     print("  ".join(h.ljust(w) for h, w in zip(headers, widths)).rstrip())
     print("  ".join("-" * w for w in widths))

@@ -27,6 +27,9 @@ def register(subparsers) -> None:
     parser.add_argument("--json", action="store_true",
                         help="print the summary as one JSON object")
     parser.add_argument("--no-view", action="store_true", help="do not write view.html")
+    parser.add_argument("--every", type=int, metavar="K",
+                        help="keep every K-th increment in the output files (the last "
+                             "always; default: the problem's [output] every, else 1)")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.set_defaults(func=run)
 
@@ -39,9 +42,12 @@ def run(args) -> int:
     problem = Path(args.problem)
     out = Path(args.out) if args.out else problem.with_suffix("")
     check_output_folder("--out", out)   # before the run, not after
+    if args.every is not None and args.every < 1:
+        raise ValueError(f"--every = {args.every} is invalid: must be an integer >= 1 (keep "
+                         "every K-th increment, the last always)")
     with log_to_stderr("kresling.simulate", "simulate"):
         simulation = simulate(problem, progress=False if args.quiet else None)
-        written = simulation.write(out, view=not args.no_view)
+        written = simulation.write(out, view=not args.no_view, every=args.every)
     summary = simulation.summary()
     summary["outputs"] = {name: str(path) for name, path in written.items()}
     if args.json:

@@ -326,16 +326,27 @@ def write_fold_document(path, document: dict) -> Path:
     return path
 
 
+#: One encoder for every value (json.dumps with an option builds one per call: with the
+#: ABC checks of Mapping on every number, that was most of writing a long path's frames).
+_ENCODE = json.JSONEncoder(allow_nan=False).encode
+_SCALARS = (str, int, float, type(None))
+
+
 def _dumps(value, indent: str = "") -> str:
     """JSON with one line per vertex, edge and face: lists of scalars are not broken up."""
     inner = indent + " "
     if isinstance(value, Mapping) and value:
         items = [f"{inner}{json.dumps(str(k))}: {_dumps(v, inner)}" for k, v in value.items()]
         return "{\n" + ",\n".join(items) + "\n" + indent + "}"
-    if isinstance(value, (list, tuple)) and any(isinstance(v, (Mapping, list, tuple))
-                                                for v in value):
+    if isinstance(value, list) and value and all(
+            type(v) is list and all(type(x) in (float, int) for x in v) for v in value):
+        # Rows of numbers (coordinates, frames): encoded at once, then one row per line.
+        text = _ENCODE(value)[1:-1].replace("], [", "],\n" + inner + "[")
+        return "[\n" + inner + text + "\n" + indent + "]"
+    if isinstance(value, (list, tuple)) and any(
+            not isinstance(v, _SCALARS) and isinstance(v, (Mapping, list, tuple)) for v in value):
         return "[\n" + ",\n".join(inner + _dumps(v, inner) for v in value) + "\n" + indent + "]"
-    return json.dumps(value, allow_nan=False)
+    return _ENCODE(value)
 
 
 def fold_angles(faces, edges, coordinates) -> np.ndarray:

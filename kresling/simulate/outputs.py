@@ -10,10 +10,11 @@ from pathlib import Path
 
 import numpy as np
 
+from kresling._validation import as_integer
 from kresling.io import write_fold
 from kresling.model.pattern_model import FAMILY_OF_ASSIGNMENT
 
-__all__ = ["write_outputs", "path_fold_edges"]
+__all__ = ["write_outputs", "path_fold_edges", "kept_rows", "view_title", "LARGE_OUTPUT"]
 
 logger = logging.getLogger(__name__)
 
@@ -55,41 +56,81 @@ def path_fold_edges(pattern_model):
     return np.array(edges, dtype=np.int64).reshape(-1, 2), [letters.get(e, "U") for e in edges]
 
 
-def write_outputs(simulation, directory, *, view=True) -> dict:
+#: Outputs larger than this are announced (with their size and how to thin them) before
+#: they are written [bytes].
+LARGE_OUTPUT = 100e6
+
+#: Characters per value of displacements.csv and path.fold, as estimated for the warning
+#: (a double's shortest repr, 17-19 characters, and its separator).
+_CHARACTERS_PER_VALUE = 20
+
+
+def kept_rows(num_steps: int, every: int) -> np.ndarray:
+    """The increments (0-based rows) the files keep: every ``every``-th, the last always."""
+    if num_steps == 0:
+        return np.zeros(0, dtype=np.int64)
+    return np.unique(np.append(np.arange(every - 1, num_steps, every), num_steps - 1))
+
+
+def _warn_if_large(simulation, rows, every):
+    values = 2 * len(rows) * 3 * simulation.model.num_nodes   # displacements.csv, path.fold
+    size = values * _CHARACTERS_PER_VALUE
+    if size > LARGE_OUTPUT:
+        logger.warning("%s: writing about %.3g MB of outputs (%d increments of %d nodes); "
+                       "[output] every = k in the problem file, or --every k, keeps every "
+                       "k-th increment (now %d)", simulation.problem.source, size / 1e6,
+                       len(rows), simulation.model.num_nodes, every)
+
+
+def write_outputs(simulation, directory, *, view=True, every=None) -> dict:
     """Write a simulation's files into ``directory`` (created if needed).
 
-    - ``history.csv``: one row per converged increment (see
+    - ``history.csv``: one row per kept increment (see
       :meth:`Simulation.history_columns`);
-    - ``displacements.csv``: one row per increment, the 3N displacements ``x0, y0, z0, x1,
-      ...`` [mm] of every node (pattern vertices, then N5B8 centre nodes);
+    - ``displacements.csv``: one row per kept increment, the 3N displacements ``x0, y0, z0,
+      x1, ...`` [mm] of every node (pattern vertices, then N5B8 centre nodes);
     - ``path.fold``: the model's triangles with the reference state as key frame and one
-      frame per increment;
-    - ``summary.json``: sizes, outcome and message;
-    - ``view.html``: an interactive view of the path (when ``view`` and plotly is installed).
+      frame per kept increment;
+    - ``summary.json``: sizes, outcome and message (of the whole run);
+    - ``view.html``: an interactive view of the path, the curve of
+      :func:`kresling.simulate.curve.path_curve` (when ``view`` and plotly is installed).
+
+    Parameters
+    ----------
+    simulation : Simulation
+    directory : str or os.PathLike
+    view : bool, default True
+    every : int, optional
+        Keep every ``every``-th increment in the files (the last always); default: the
+        problem's ``[output] every`` (1: every increment).
 
     Returns
     -------
     dict
         Paths written, by name.
     """
+    every = simulation.problem.output.every if every is None else \
+        as_integer("every", every, minimum=1)
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
+    path = simulation.path
+    rows = kept_rows(path.num_steps, every)
+    _warn_if_large(simulation, rows, every)
     written = {}
     columns = simulation.history_columns()
     names = list(columns)
-    rows = zip(*(np.asarray(columns[n]).tolist() for n in names))
+    kept = {n: np.asarray(columns[n])[rows] for n in names}
     written["history"] = directory / "history.csv"
-    _write_csv(written["history"], names, rows)
+    _write_csv(written["history"], names, zip(*(kept[n].tolist() for n in names)))
 
-    path = simulation.path
     model = simulation.model
+    displacement = np.asarray(path.displacement)[rows]
     header = [f"{axis}{node}" for node in range(model.num_nodes) for axis in "xyz"]
     written["displacements"] = directory / "displacements.csv"
-    _write_csv(written["displacements"], header,
-               (np.asarray(u).tolist() for u in path.displacement))
+    _write_csv(written["displacements"], header, displacement.tolist())
 
     edges, assignment = path_fold_edges(simulation.pattern_model)
-    frames = [model.nodes + u.reshape(-1, 3) for u in path.displacement]
+    frames = model.nodes[None] + displacement.reshape(len(rows), model.num_nodes, 3)
     written["fold"] = directory / "path.fold"
     write_fold(written["fold"], model.nodes, [tuple(t) for t in
                                               simulation.pattern_model.elements.triangles],
@@ -104,12 +145,42 @@ def write_outputs(simulation, directory, *, view=True) -> dict:
     if view and not path.num_steps:  # no increment converged: no path to show
         logger.warning("view.html not written: the path has no converged increment")
     elif view:
-        try:
-            from kresling.view import view_path, write_html
-        except ImportError as error:  # plotly missing: the other files still stand
-            logger.warning("view.html not written: %s", error)
-        else:
-            figure = view_path(simulation.pattern_model, path,
-                               title=Path(simulation.problem.source).name)
-            written["view"] = write_html(figure, directory / "view.html")
+        written.update(_write_view(simulation, directory, rows, columns))
     return written
+
+
+class _Kept:
+    """A path's kept rows, as the view reads a path."""
+
+    def __init__(self, path, rows):
+        self.displacement = np.asarray(path.displacement)[rows]
+        self.load_factor = np.asarray(path.load_factor)[rows]
+        self.completed, self.message = path.completed, path.message
+
+
+def _write_view(simulation, directory, rows, columns) -> dict:
+    from kresling.simulate.curve import path_curve
+    from kresling.view import write_path_page
+
+    curve = None
+    if len(rows):   # (a path without increments: the page says there is nothing to show)
+        x, y, x_label, y_label = path_curve(simulation, columns)
+        curve = (np.asarray(x)[rows], np.asarray(y)[rows], x_label, y_label)
+    try:
+        page = write_path_page(simulation.pattern_model, _Kept(simulation.path, rows),
+                               directory / "view.html", curve=curve, increments=rows + 1,
+                               total=simulation.path.num_steps, title=view_title(simulation))
+    except ImportError as error:  # plotly missing: the other files still stand
+        logger.warning("view.html not written: %s", error)
+        return {}
+    return {"view": page}
+
+
+def view_title(simulation) -> str:
+    """The view's title: the problem, the method and how far the path went."""
+    source = Path(simulation.problem.source)
+    where = f"{source.parent.name}/{source.name}" if source.parent.name else source.name
+    model = simulation.model
+    method = simulation.problem.analysis.method.replace("_", " ")
+    return (f"kresling simulate {where}: {method}, {simulation.path.num_steps} increments"
+            f"<br>{model.num_nodes} nodes, {len(model.bars)} bars, {len(model.hinges)} hinges")

@@ -32,6 +32,7 @@ from kresling.model import CreaseLaws, HingeLaw, ManualProperties, SheetMaterial
 from kresling.model.pattern_model import FOLD_FAMILIES
 from kresling.model.panel_elements import CENTRES, SPLITS
 from kresling.laws import BAR_LAWS, SPRING_LAWS
+from kresling.simulate.output_table import Output, read_output
 from kresling.simulate.problem_file import read_toml
 
 __all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_problem", "METHODS"]
@@ -129,6 +130,8 @@ class Problem:
     analysis: Analysis
     source: str = "problem"
     centre: str = "merlin2"
+    #: The [output] table: increments kept in the files, the view's curve.
+    output: Output = Output()
 
 
 class _Table:
@@ -535,8 +538,12 @@ def load_problem(problem) -> Problem:
     t_analysis = _Table(root.get("analysis", lambda t, k, v, a: v, required=True,
                                  allowed="a table with the method"), "analysis", source, text)
     analysis = _read_analysis(t_analysis, count)
+    driven = {(node, axis) for load in loads if load.kind == "displacement"
+              for node in load.nodes for axis, value in zip("xyz", load.vector) if value}
+    output = read_output(_Table(root.get("output", lambda t, k, v, a: v, {}), "output", source,
+                                text), count, analysis.method, driven)
     root.finish()
     result = Problem(pattern, split, material, compat, laws, supports, loads, analysis, source,
-                     centre)
+                     centre, output)
     _check_consistency(result, t_analysis)
     return result

@@ -99,12 +99,13 @@ class Simulation:
         columns["iterations"] = path.iterations
         return columns
 
-    def write(self, directory, *, view=True) -> dict:
-        """Write history.csv, displacements.csv, path.fold (and view.html) into
-        ``directory``; returns the paths written by name."""
+    def write(self, directory, *, view=True, every=None) -> dict:
+        """Write history.csv, displacements.csv, path.fold, summary.json (and view.html)
+        into ``directory``, keeping every ``every``-th increment (the last always; default:
+        the problem's ``[output] every``); returns the paths written by name."""
         from kresling.simulate.outputs import write_outputs
 
-        return write_outputs(self, directory, view=view)
+        return write_outputs(self, directory, view=view, every=every)
 
     def summary(self) -> dict:
         path = self.path

@@ -11,6 +11,10 @@
 - :func:`view_fold`: any FOLD (or OBJ) file, its frames animated;
 - :func:`write_html`: one self-contained page that works offline and opens at
   ``#frame=K``; :func:`check_writable` checks its path before a long computation;
+- :func:`write_path_page`: a path's page (as ``write_html(view_path(...))``) written
+  straight from its arrays, without plotly's Python: frames as compressed binary, plotly's
+  JavaScript compressed, under 2 MB for MERLIN2's examples (``kresling simulate``'s
+  view.html);
 - :mod:`kresling.view.explorer`: the design explorer page (sliders over n, lambda and Lc,
   the cell in both states, its flat pattern, the K_B-ratio and snap-force maps);
 - :class:`ExplorerWidget`: the same explorer in Jupyter, every design recomputed live by
@@ -30,14 +34,28 @@ Examples
 'data'
 """
 
-from kresling.view.explorer_widget import ExplorerWidget
-from kresling.view.fields import FIELDS, element_energy
-from kresling.view.figure import view_model, view_path
-from kresling.view.fold import view_fold
-from kresling.view.html import check_writable, write_html
-from kresling.view.specimens import view_bending, view_snap_through
-from kresling.view.surface import FAMILY_STYLES
+from importlib import import_module
 
 __all__ = ["view_model", "view_path", "view_bending", "view_snap_through", "view_fold",
-           "write_html", "check_writable", "FIELDS", "FAMILY_STYLES", "element_energy",
-           "ExplorerWidget"]
+           "write_html", "write_path_page", "check_writable", "FIELDS", "FAMILY_STYLES",
+           "element_energy", "ExplorerWidget"]
+
+#: Where each name lives. The modules are imported when a name is first used, so that a
+#: writer that needs no plotly objects (write_path_page) does not import plotly's.
+_HOME = {"ExplorerWidget": "explorer_widget", "FIELDS": "fields", "element_energy": "fields",
+         "view_model": "figure", "view_path": "figure", "view_fold": "fold",
+         "check_writable": "html", "write_html": "html", "write_path_page": "path_page",
+         "view_bending": "specimens", "view_snap_through": "specimens",
+         "FAMILY_STYLES": "surface"}
+
+
+def __getattr__(name):
+    if name not in _HOME:
+        raise AttributeError(f"module 'kresling.view' has no attribute {name!r}")
+    value = getattr(import_module(f"kresling.view.{_HOME[name]}"), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))

@@ -14,6 +14,9 @@ from kresling._validation import as_integer
 __all__ = ["select_rows", "default_curve", "check_curve", "slider", "play_buttons",
            "frame_name", "FRAME_DURATION_MS"]
 
+#: Colour of a title's line that says a run stopped before the end of its travel.
+PARTIAL_COLOUR = "#c00000"
+
 #: Time each frame is shown when playing [ms].
 FRAME_DURATION_MS = 60
 
@@ -89,7 +92,8 @@ def _animate_args(names, duration):
                     "transition": {"duration": 0}, "fromcurrent": True}]
 
 
-def slider(names, num_steps: int, active: int = 0, prefix: str = "increment ") -> dict:
+def slider(names, num_steps: int, active: int = 0, prefix: str = "increment ",
+           method: str = "animate") -> dict:
     """A slider with one step per frame, labelled by increment.
 
     Parameters
@@ -102,18 +106,27 @@ def slider(names, num_steps: int, active: int = 0, prefix: str = "increment ") -
         Index of the step shown first.
     prefix : str, default "increment "
         What the frames are (a FOLD file's: "frame ").
+    method : {"animate", "skip"}
+        "animate": each step shows its figure frame; "skip": the step only moves the
+        slider, and the page's own script draws the frame.
     """
     return dict(
         active=int(active), x=0.04, len=0.92, y=0.0, yanchor="top", pad=dict(t=36, b=6),
         currentvalue=dict(prefix=prefix, suffix=f" / {num_steps}", visible=True,
                           xanchor="left", font=dict(size=14)),
         transition=dict(duration=0),
-        steps=[dict(label=name, method="animate", args=_animate_args([name], 0))
+        steps=[dict(label=name, method=method, args=_animate_args([name], 0))
                for name in names])
 
 
-def play_buttons() -> dict:
-    """Play and pause buttons (play runs from the current frame)."""
+def play_buttons(method: str = "animate") -> dict:
+    """Play and pause buttons (play runs from the current frame); with ``method="skip"``
+    the page's own script plays (the buttons' first argument says "play" or "pause")."""
+    if method == "skip":
+        return dict(type="buttons", direction="left", showactive=False, x=0.04, y=0.0,
+                    xanchor="right", yanchor="top", pad=dict(t=44, r=8),
+                    buttons=[dict(label="▶ play", method="skip", args=["play"]),
+                             dict(label="❚❚ pause", method="skip", args=["pause"])])
     return dict(
         type="buttons", direction="left", showactive=False, x=0.04, y=0.0, xanchor="right",
         yanchor="top", pad=dict(t=44, r=8),

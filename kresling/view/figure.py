@@ -11,11 +11,12 @@ import plotly.graph_objects as go
 
 from kresling._validation import as_float_array
 
-from kresling.view.animation import (check_curve, default_curve, frame_name, play_buttons,
-                                     select_rows, slider)
+from kresling.view.animation import (PARTIAL_COLOUR, check_curve, default_curve, frame_name,
+                                     play_buttons, select_rows, slider)
 from kresling.view.fields import FIELDS, check_field, edge_values, field_edges, \
     significant_decimals
 from kresling.view.inputs import view_inputs
+from kresling.view.scene_box import box, check_path, describe, node_points, scene_layout
 from kresling.view.surface import (crease_groups, family_style, line_trace, mesh_trace,
                                    polyline_order, rounded, segments_xyz)
 from kresling.view.symbols import subscripted
@@ -24,8 +25,6 @@ __all__ = ["view_model", "view_path", "PathPanel", "PathCurve", "animated_figure
 
 _FIELD_WIDTH = 7  # px
 
-#: Colour of a title's line that says a run stopped before the end of its travel.
-PARTIAL_COLOUR = "#c00000"
 
 
 class _Scene:
@@ -101,46 +100,14 @@ class _Scene:
                             legendgroup="field", showlegend=self.show_legend)
 
 
-def _describe(model):
-    return (f"{len(model.nodes)} nodes, {len(model.bars)} bars, {len(model.hinges)} hinges")
-
-
-def _points(model, u):
-    return np.asarray(model.nodes, dtype=float) + np.asarray(u, dtype=float).reshape(-1, 3)
-
-
-def _box(points_list):
-    """Corners of the box around every frame's nodes, padded by 3 % of its largest side."""
-    stacked = np.vstack(points_list)
-    low, high = stacked.min(axis=0), stacked.max(axis=0)
-    pad = 0.03 * max(float((high - low).max()), 1e-9)
-    return low - pad, high + pad
-
-
 def _box_trace(points_list, scene="scene"):
     """Two invisible points at the box's corners: with ``aspectmode="data"`` the scene's
     scale then stays the same in every frame (the view holds still while playing)."""
-    low, high = _box(points_list)
+    low, high = box(points_list)
     return go.Scatter3d(x=rounded([low[0], high[0]], 4), y=rounded([low[1], high[1]], 4),
                         z=rounded([low[2], high[2]], 4), mode="markers",
                         marker=dict(size=1, opacity=0), hoverinfo="skip", showlegend=False,
                         name="extent", scene=scene)
-
-
-def _scene_layout(points_list, distance=2.2):
-    """Equal scales on x, y, z (``aspectmode="data"``), axes fixed to the box of every
-    frame; the camera at least ``distance`` from the centre (in plotly's scene units)."""
-    low, high = _box(points_list)
-    axes = {}
-    for k, a in enumerate("xyz"):
-        axes[f"{a}axis"] = dict(title=dict(text=f"{a} [mm]"),
-                                range=rounded([low[k], high[k]], 4))
-    # plotly scales the box to sides span / (geometric mean of the spans); the camera
-    # steps back by the longest side so that a tall or wide model fits.
-    span = np.maximum(high - low, 1e-12)
-    longest = float(span.max() / np.exp(np.log(span).mean()))
-    eye = np.array([1.0, 1.0, 0.7]) / np.linalg.norm([1.0, 1.0, 0.7]) * max(1.4 * longest, distance)
-    return dict(aspectmode="data", camera=dict(eye=dict(zip("xyz", rounded(eye, 3)))), **axes)
 
 
 def _check_u(model, name, u):
@@ -198,15 +165,15 @@ def view_model(model, u=None, *, triangles=None, hinge_family=None, field=None,
     inputs = view_inputs(model, triangles=triangles, hinge_family=hinge_family)
     model = inputs.model
     u = np.zeros(3 * len(model.nodes)) if u is None else _check_u(model, "u", u)
-    points = _points(model, u)
+    points = node_points(model, u)
     values = edge_values(model, field, u) if field is not None else None
     scene = _Scene(inputs, field, values)
     fig = go.Figure(scene.traces(points, values) + [_box_trace([points])])
-    default = f"Bar-and-hinge model: {_describe(model)}" + \
+    default = f"Bar-and-hinge model: {describe(model)}" + \
         (", displaced" if np.any(u) else ", reference state")
     fig.update_layout(
         title=dict(text=subscripted(title or default), x=0.5, xanchor="center"),
-        scene=_scene_layout([points]), template="plotly_white", height=650,
+        scene=scene_layout([points]), template="plotly_white", height=650,
         margin=dict(l=10, r=10, t=90, b=10), uirevision="view",
         legend=dict(orientation="h", x=0.0, y=1.0, yanchor="bottom"))
     return fig
@@ -266,7 +233,7 @@ def view_path(model, path, *, triangles=None, hinge_family=None, field=None, cur
     check_field(field)
     inputs = view_inputs(model, triangles=triangles, hinge_family=hinge_family)
     model = inputs.model
-    displacement = _check_path(model, path)
+    displacement = check_path(model, path)
     num_steps = len(displacement)
     curves = []
     x_label = y_label = ""
@@ -275,7 +242,7 @@ def view_path(model, path, *, triangles=None, hinge_family=None, field=None, cur
                                              else default_curve(model, path), num_steps)
         curves = [PathCurve(x, y, "path", "#444444")]
     rows = select_rows(num_steps, frame_stride, max_frames)
-    default = f"Equilibrium path of a bar-and-hinge model ({_describe(model)}), " \
+    default = f"Equilibrium path of a bar-and-hinge model ({describe(model)}), " \
               f"{num_steps} increments"
     if field is not None:
         default += f": {FIELDS[field].label}"
@@ -288,17 +255,6 @@ def view_path(model, path, *, triangles=None, hinge_family=None, field=None, cur
     return animated_figure([PathPanel(inputs, displacement)], rows,
                            [frame_name(r) for r in rows], curves=curves, x_label=x_label,
                            y_label=y_label, field=field, title=shown, total=num_steps)
-
-
-def _check_path(model, path) -> np.ndarray:
-    """The path's displacement as (S, 3N), or a ValueError naming what is wrong."""
-    displacement = np.asarray(path.displacement, dtype=float)
-    if len(displacement) == 0:
-        raise ValueError("path has no increments: nothing to show")
-    if displacement.ndim != 2 or displacement.shape[1] != 3 * len(model.nodes):
-        raise ValueError(f"path.displacement has shape {displacement.shape}: must be "
-                         f"(S, {3 * len(model.nodes)}) for this model")
-    return displacement
 
 
 @dataclass(frozen=True)
@@ -397,7 +353,7 @@ def animated_figure(panels, rows, names, *, curves=(), x_label="", y_label="", f
     for panel in panels:
         model = panel.inputs.model
         last = len(panel.displacement) - 1
-        points.append([_points(model, panel.displacement[min(r, last)]) for r in rows])
+        points.append([node_points(model, panel.displacement[min(r, last)]) for r in rows])
         if field is not None:
             edges = field_edges(model, field)
             values.append([edge_values(model, field, panel.displacement[min(r, last)],
@@ -474,8 +430,8 @@ def animated_figure(panels, rows, names, *, curves=(), x_label="", y_label="", f
     layout = {}
     for k in range(len(panels)):
         # A narrow scene (one of two) needs the camera further back to hold a squat model.
-        layout["scene" if k == 0 else f"scene{k + 1}"] = _scene_layout(
-            points[k], 2.2 if len(panels) == 1 else 2.7)
+        layout["scene" if k == 0 else f"scene{k + 1}"] = scene_layout(
+            points[k], 2.5 if len(panels) == 1 else 3.0)
     fig.update_layout(
         title=title_layout, template="plotly_white",
         height=height, margin=dict(l=10, r=20, t=top, b=130), uirevision="view",

@@ -68,7 +68,7 @@ def view_fold(pattern, *, max_frames=200, title=None):
     max_frames : int, default 200
         At most this many frames (evenly spaced, the key frame and the last included).
     title : str, optional
-        Default: the file's name, its size and its number of frames.
+        Default: the file's folder and name, its size and its number of frames.
 
     Returns
     -------
@@ -96,7 +96,10 @@ def view_fold(pattern, *, max_frames=200, title=None):
     sheet = _Sheet(nodes=vertices, hinges=np.column_stack([edges, edges]), bars=edges)
     families = [ASSIGNMENT_FAMILIES.get(a, a) for a in pattern.edges_assignment]
     inputs = view_inputs(sheet, triangles=fan_triangles(pattern.faces), hinge_family=families)
-    name = Path(pattern.source).name if pattern.source else "crease pattern"
+    # The folder too: a simulation's path.fold is named by the folder it was written to.
+    source = Path(pattern.source) if pattern.source else None
+    name = "crease pattern" if source is None else \
+        f"{source.parent.name}/{source.name}" if source.parent.name else source.name
     size = f"{len(vertices)} vertices, {len(pattern.faces)} panels, {len(edges)} edges"
     frames = pattern.frames
     if not frames:

@@ -20,6 +20,8 @@ __all__ = ["write_html", "check_writable", "DIV_ID"]
 
 #: The id of the figure's element in the page.
 DIV_ID = "kresling-view"
+#: The plot's height on the page (CSS): the window's, at least 560 px.
+PAGE_HEIGHT = "max(100vh, 560px)"
 
 # Run once the figure is drawn ({plot_id} is the figure's element). NAMES: the frames'
 # names (increments), in slider order; START: the increment to show when the address has
@@ -94,9 +96,15 @@ def write_html(figure, path, *, initial_frame=None) -> Path:
         _show_frame(fig, index)
     script = _HASH_SCRIPT.replace("__NAMES__", json.dumps(names)) \
         .replace("__START__", json.dumps(start))
+    # The page's plot fills the window (a fixed height cropped the 3D scenes' bottom on
+    # short windows and left them small on tall ones); the figure's own height stays for
+    # notebooks.
+    fig.layout.height = None
+    fig.layout.autosize = True
     page = fig.to_html(include_plotlyjs=True, full_html=True, div_id=DIV_ID,
-                       post_script=script, auto_play=False,
+                       post_script=script, auto_play=False, default_height=PAGE_HEIGHT,
                        config={"responsive": True, "displaylogo": False})
+    page = page.replace("<body>", "<body style=\"margin: 0\">", 1)
     title = fig.layout.title.text or "kresling view"
     page = page.replace("<head>", f"<head>\n    <title>{_html.escape(_plain(title))}</title>",
                         1)

@@ -13,9 +13,9 @@ from __future__ import annotations
 from collections import deque
 
 import numpy as np
-import plotly.graph_objects as go
 
-__all__ = ["DECIMALS", "FAMILY_STYLES", "triangles_from_hinges", "orient_triangles",
+__all__ = ["DECIMALS", "FAMILY_STYLES", "PANEL_COLOUR", "MESH_LIGHTING",
+           "triangles_from_hinges", "orient_triangles",
            "crease_groups", "boundary_edges", "rounded", "segments_xyz", "polyline_order",
            "polyline_xyz", "mesh_trace", "line_trace", "family_style"]
 
@@ -32,7 +32,9 @@ FAMILY_STYLES = {
     "bend": ("#c7c7c7", 2, "dash"),
     "cut": ("#000000", 5, "solid"),
     "boundary": ("#3b3b3b", 4, "solid"),
-    "join": ("#17becf", 4, "solid"),
+    # Thin and light: a FOLD file of a simulation marks every edge inside a panel "J", and on
+    # a large sheet those would swamp the mountain and valley creases.
+    "join": ("#a6dde6", 1.5, "solid"),
     # The families of a Kresling specimen's elements (kresling.model.EDGE_FAMILIES).
     "polygon_edge": ("#6a3d9a", 4, "solid"),
     "polygon_spoke": ("#c7c7c7", 2, "dash"),
@@ -41,6 +43,8 @@ OTHER_COLOURS = ("#ff7f0e", "#2ca02c", "#8c564b", "#e377c2", "#17becf", "#bcbd22
 
 #: Colour of the panels.
 PANEL_COLOUR = "#e9dcc0"
+#: How the panels are lit (plotly's Mesh3d ``lighting``).
+MESH_LIGHTING = dict(ambient=0.55, diffuse=0.7, specular=0.05, roughness=0.9, fresnel=0.05)
 
 
 def family_style(family: str, others: list) -> tuple:
@@ -325,13 +329,15 @@ def mesh_trace(points, triangles, *, coordinates_only: bool = False, scene: str 
     -------
     plotly.graph_objects.Mesh3d
     """
+    import plotly.graph_objects as go  # here: the compact page uses this module without it
+
     x, y, z = (rounded(points[:, k]) for k in range(3))
     if coordinates_only:
         return go.Mesh3d(x=x, y=y, z=z)
     return go.Mesh3d(
         x=x, y=y, z=z, i=triangles[:, 0].tolist(), j=triangles[:, 1].tolist(),
         k=triangles[:, 2].tolist(), color=PANEL_COLOUR, flatshading=True, opacity=1.0,
-        lighting=dict(ambient=0.55, diffuse=0.7, specular=0.05, roughness=0.9, fresnel=0.05),
+        lighting=MESH_LIGHTING,
         lightposition=dict(x=25000, y=50000, z=100000), name="panels", showlegend=True,
         hoverinfo="skip", scene=scene)
 
@@ -359,6 +365,8 @@ def line_trace(points, edges, *, name: str, colour, width: float, dash: str = "s
     -------
     plotly.graph_objects.Scatter3d
     """
+    import plotly.graph_objects as go  # as in mesh_trace
+
     x, y, z = polyline_xyz(points, polyline_order(edges) if order is None else order)
     if coordinates_only:
         return go.Scatter3d(x=x, y=y, z=z)

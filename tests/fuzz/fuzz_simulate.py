@@ -30,7 +30,8 @@ BASES = [
      "support": [{"nodes": [0, 3], "fix": "xyz"}, {"node": 1, "fix": "yz"},
                  {"node": 4, "fix": "z"}],
      "load": [{"nodes": [2, 5], "displacement": [0.0, 0.0, 0.2]}],
-     "analysis": {"method": "displacement_control", "steps": 3}},
+     "analysis": {"method": "displacement_control", "steps": 3},
+     "output": {"every": 2, "curve": {"x": "u_2_z", "y": "reaction_2_z"}}},
     {"pattern": dict(SHEET),
      "material": {"calibration": "auto", "E": 1000.0, "nu": 0.3, "thickness": 0.25},
      "support": [{"nodes": [0, 3], "fix": "xyz"}, {"node": 1, "fix": "z"}],
@@ -44,12 +45,14 @@ KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices"
         "merlin2_compat", "bar", "fold", "bend", "fold_limits_deg", "valley", "mountain",
         "node", "nodes", "fix", "force", "displacement", "method", "steps", "tolerance",
         "max_iterations", "initial_load_factor", "max_increments", "max_load_factor", "stop",
-        "axis", "beyond", "law", "limits_deg", "stiffness", "unknown_key"]
+        "axis", "beyond", "law", "limits_deg", "stiffness", "output", "every", "curve", "x",
+        "y", "unknown_key"]
 values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_001, 10**6]),
                    st.sampled_from(
     ["xyz", "z", "w", "N5B8", "N4B5", "auto", "manual", "linear", "mgdcm", "force_control",
      "displacement_control", [0.0, 0.0, 1.0], [1e308, 0, 0], [0, 0, float("nan")], [0, 99],
-     [[0, 1, 2]], [-1], {"node": 0, "fix": "xyz"}, [{"node": 7, "fix": "x"}]]))
+     [[0, 1, 2]], [-1], {"node": 0, "fix": "xyz"}, [{"node": 7, "fix": "x"}], "u_2_z",
+     "reaction_5_z", "energy_total", {"x": "step", "y": "load_factor"}, {"x": "u_9_q"}]))
 
 
 def mutate(problem, edits):
@@ -95,6 +98,10 @@ def run(problem):
     finite(simulation.model.nodes)
     for values in simulation.history_columns().values():
         finite(values)
+    if simulation.path.num_steps:   # every output, the view too, of what the path holds
+        with tempfile.TemporaryDirectory() as folder:
+            written = simulation.write(folder)
+            assert written["view"].stat().st_size > 0
 
 
 @fuzz(150)

@@ -1,0 +1,97 @@
+"""The curve a simulation's view plots beside its scene.
+
+By default: under displacement control, the drive's reaction against the driven
+displacement (one driven DOF: its ``reaction_<node>_<axis>`` column of history.csv against
+its displacement; several: the sum of their reactions weighted by their share of the
+motion, the force that does the drive's work over the driven displacement of the largest
+component); under force control and MGDCM, the load factor against the monitored
+displacement (``[analysis.stop]``), else against the displacement that grows largest.
+``[output] curve = { x = "...", y = "..." }`` names any two quantities instead: a column of
+history.csv (``step``, ``load_factor``, ``reaction_<node>_<axis>``, ``energy_bars``, ...,
+``iterations``) or ``u_<node>_<axis>``, the displacement of any node [mm].
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+
+__all__ = ["path_curve", "quantity"]
+
+_AXES = "xyz"
+_DISPLACEMENT = re.compile(r"u_(\d+)_([xyz])")
+_UNITS = {"step": "-", "load_factor": "-", "iterations": "-"}
+
+
+def quantity(simulation, name, columns) -> tuple:
+    """``(values (S,), label)`` of a named quantity: a history column or ``u_<node>_<axis>``.
+
+    Raises
+    ------
+    ValueError
+        For a name that is neither, listing the columns there are.
+    """
+    match = _DISPLACEMENT.fullmatch(name)
+    if match:
+        node, axis = int(match.group(1)), match.group(2)
+        dof = 3 * node + _AXES.index(axis)
+        return (np.asarray(simulation.path.displacement)[:, dof],
+                f"u{axis} of node {node} [mm]")
+    if name not in columns:
+        raise ValueError(f"{simulation.problem.source}: [output] key 'curve' names {name!r}, "
+                         f"which is not a quantity of this run: allowed are "
+                         f"{sorted(columns)} and u_<node>_<axis>")
+    unit = "N" if name.startswith("reaction_") else "N*mm" if name.startswith("energy_") \
+        else _UNITS.get(name, "mm")
+    return np.asarray(columns[name], dtype=float), f"{name} [{unit}]"
+
+
+def _drive(simulation):
+    """Driven displacement of the largest prescribed component [mm] and the reaction that
+    does the drive's work over it [N], with labels."""
+    path = simulation.path
+    dofs = np.asarray(path.constraint_dofs, dtype=np.int64)
+    motion = np.zeros(3 * simulation.model.num_nodes)
+    for load in simulation.problem.loads:
+        for node in load.nodes:
+            motion[3 * node:3 * node + 3] += load.vector
+    share = motion[dofs]
+    lead = int(np.argmax(np.abs(share)))
+    node, axis = divmod(int(dofs[lead]), 3)
+    x = np.asarray(path.displacement)[:, dofs[lead]]
+    reactions = np.asarray(path.constraint_force, dtype=float).reshape(len(x), len(dofs))
+    if len(dofs) == 1:
+        return x, reactions[:, 0], f"u{_AXES[axis]} of node {node} [mm]", \
+            f"reaction_{node}_{_AXES[axis]} [N]"
+    y = reactions @ (share / share[lead])  # work-conjugate to x: sum r_k du_k = y dx
+    return x, y, f"u{_AXES[axis]} of node {node} [mm]", \
+        f"drive's reaction over {len(dofs)} driven DOFs [N]"
+
+
+def path_curve(simulation, columns) -> tuple:
+    """``(x, y, x_label, y_label)`` of the view's curve, one value per increment.
+
+    Parameters
+    ----------
+    simulation : kresling.simulate.Simulation
+    columns : dict
+        ``simulation.history_columns()``.
+    """
+    named = simulation.problem.output.curve
+    if named is not None:
+        (x, x_label), (y, y_label) = (quantity(simulation, n, columns) for n in named)
+        return x, y, x_label, y_label
+    analysis = simulation.problem.analysis
+    if analysis.method == "displacement_control":
+        return _drive(simulation)
+    load_factor = np.asarray(simulation.path.load_factor, dtype=float)
+    stop = analysis.stop
+    if stop is not None:
+        u = np.asarray(simulation.path.displacement)[:, stop.dof]
+        return u, load_factor, f"u{stop.axis} of node {stop.node} [mm]", "load factor [-]"
+    u = np.asarray(simulation.path.displacement, dtype=float)
+    dof = int(np.argmax(np.abs(u).max(axis=0)))
+    node, axis = divmod(dof, 3)
+    return u[:, dof], load_factor, f"u{_AXES[axis]} of node {node} [mm] (moves most)", \
+        "load factor [-]"

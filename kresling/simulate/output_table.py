@@ -1,0 +1,79 @@
+"""The ``[output]`` table of a problem file: which increments the output files keep, and
+the curve the view plots.
+
+``every = k`` keeps every k-th increment (and the last) in history.csv, displacements.csv,
+path.fold and view.html; ``curve = { x = "...", y = "..." }`` names the view's curve (see
+:mod:`kresling.simulate.curve`).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+__all__ = ["Output", "read_output"]
+
+#: The quantities a curve may name: history.csv's columns and any node's displacement.
+_NAMED = re.compile(r"step|load_factor|iterations|energy_(?:bars|folds|bends|total)|"
+                    r"(u|reaction)_(\d+)_([xyz])")
+
+
+@dataclass(frozen=True)
+class Output:
+    """What a run writes: every ``every``-th increment (the last always), and the view's
+    curve ``(x, y)`` named by quantity (None: the method's default)."""
+
+    every: int = 1
+    curve: tuple | None = None
+
+
+def read_output(table, num_nodes, method, driven) -> Output:
+    """The ``[output]`` table (a problem reader's table, see kresling.simulate.problem).
+
+    Parameters
+    ----------
+    table : the problem reader's table of ``[output]``
+    num_nodes : int
+    method : str
+        The analysis method (reaction columns exist under displacement control only).
+    driven : set of (int, str)
+        The driven (node, axis) pairs.
+    """
+    every = table.get("every", _every, 1)
+    curve = table.get("curve", lambda t, k, v, a: v)
+    if curve is not None:
+        if not isinstance(curve, dict) or set(curve) != {"x", "y"}:
+            table.fail("curve", f"= {curve!r} is invalid: must be a table with exactly the "
+                                'keys x and y, e.g. { x = "u_24_z", y = "reaction_24_z" }')
+        for axis in ("x", "y"):
+            _check_quantity(table, axis, curve[axis], num_nodes, method, driven)
+        curve = (curve["x"], curve["y"])
+    table.finish()
+    return Output(every=every, curve=curve)
+
+
+def _check_quantity(table, axis, name, num_nodes, method, driven):
+    allowed = ("must be step, load_factor, iterations, energy_bars, energy_folds, "
+               "energy_bends, energy_total, u_<node>_<axis> or (displacement control) "
+               "reaction_<node>_<axis> of a driven DOF")
+    match = _NAMED.fullmatch(name) if isinstance(name, str) else None
+    if match is None:
+        table.fail("curve", f"{axis} = {name!r} is invalid: {allowed}")
+    if match.group(1) is None:
+        return
+    node, where = int(match.group(2)), (int(match.group(2)), match.group(3))
+    if node >= num_nodes:
+        table.fail("curve", f"{axis} = {name!r} names node {node}, out of range: nodes are "
+                            f"numbered 0 to {num_nodes - 1}")
+    if match.group(1) == "reaction" and (method != "displacement_control" or
+                                         where not in driven):
+        table.fail("curve", f"{axis} = {name!r} is invalid: a reaction is a column of a "
+                            "driven DOF under displacement control (driven: "
+                            f"{[f'reaction_{n}_{a}' for n, a in sorted(driven)]})")
+
+
+def _every(table, key, value, allowed=None):
+    if isinstance(value, bool) or not isinstance(value, int) or value < 1:
+        table.fail(key, f"= {value!r} is invalid: must be an integer >= 1 (keep every k-th "
+                        "increment, the last always)")
+    return value

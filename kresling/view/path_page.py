@@ -1,0 +1,243 @@
+"""A path's animated page written straight from its arrays: the figure of the first frame
+as plain JSON, every frame's node positions as one compressed binary block, and a small
+script that updates the panels, the crease lines and the curve's marker from them.
+
+:func:`kresling.view.view_path` builds a plotly figure with one frame object per increment,
+which a notebook needs; for a page that is most of the cost (the figure objects are
+validated value by value) and most of the size (every frame repeats every coordinate as
+decimal text). Here nothing of plotly's Python is imported: the page holds plotly's
+JavaScript once, deflated (:mod:`kresling.view.plotly_js`), the positions as 16-bit
+integers on the scene's box (1/65535 of the box's side along each axis: 1 micrometre on a
+65 mm sheet, far below a pixel), differenced twice along the path (a smooth path then
+leaves small numbers that deflate well) and deflated. The page looks and behaves as
+:func:`kresling.view.write_html` of :func:`kresling.view.view_path`: the same scene and
+curve, a slider "increment K / S", play/pause, ``#frame=K``.
+"""
+
+from __future__ import annotations
+
+import html as _html
+import json
+import re
+import zlib
+from pathlib import Path
+
+import numpy as np
+
+from kresling._validation import as_integer
+from kresling.view.animation import (FRAME_DURATION_MS, PARTIAL_COLOUR, check_curve,
+                                     default_curve, play_buttons, select_rows, slider)
+from kresling.view.fields import significant_decimals
+from kresling.view.inputs import view_inputs
+from kresling.view.page_script import PAGE_SCRIPT
+from kresling.view.plotly_js import DECODE_JS, encode85, packed_plotly_js, plotly_js_path
+from kresling.view.scene_box import box, check_path, describe, node_points, scene_layout
+from kresling.view.surface import (MESH_LIGHTING, PANEL_COLOUR, crease_groups, family_style,
+                                   polyline_order, rounded)
+from kresling.view.symbols import subscripted
+
+__all__ = ["write_path_page", "encode_frames"]
+
+_LEVELS = 65535          # the positions' 16-bit grid on each side of the box
+_MARKER_COLOUR = "#d62728"
+_SCENES_END = 0.56       # the scene's share of the width (the curve's axes start 0.14 on)
+
+
+def encode_frames(points, low, high) -> bytes:
+    """Node positions of every frame as the page reads them.
+
+    Parameters
+    ----------
+    points : ndarray, shape (F, N, 3)
+        Positions [mm].
+    low, high : ndarray, shape (3,)
+        The box holding every position [mm].
+
+    Returns
+    -------
+    bytes
+        zlib-deflated: the low bytes, then the high bytes, of the 16-bit grid values
+        ``round((p - low) / (high - low) * 65535)``, frame-major, each differenced twice
+        along the frames modulo 2**16 (the page sums them back).
+    """
+    span = np.maximum(np.asarray(high, dtype=float) - low, 1e-300)
+    grid = np.rint((np.asarray(points, dtype=float) - low) / span * _LEVELS)
+    values = np.clip(grid, 0, _LEVELS).astype(np.int64).reshape(len(points), -1)
+    for _ in range(2):  # differences along the path (the first frame stays as it is)
+        values = np.diff(values, axis=0, prepend=np.zeros((1, values.shape[1]), np.int64))
+    words = (values % 65536).astype("<u2").ravel()
+    planes = words.view(np.uint8).reshape(-1, 2).T   # low bytes, then high bytes
+    return zlib.compress(np.ascontiguousarray(planes).tobytes(), 6)
+
+
+def _scene(inputs):
+    """The crease lines by family: (family, style, polyline order) each."""
+    groups = crease_groups(inputs.model.hinges, inputs.hinge_family, inputs.triangles)
+    others = []
+    return [(family, family_style(family, others), polyline_order(edges))
+            for family, edges in groups.items()]
+
+
+def _traces(inputs, lines, low, high, curve):
+    """The figure's traces: panels, crease lines, the box, the curve and its marker (the
+    coordinates of the 3D traces are filled in by the page)."""
+    tri = inputs.triangles
+    data = []
+    if len(tri):
+        data.append(dict(type="mesh3d", i=tri[:, 0].tolist(), j=tri[:, 1].tolist(),
+                         k=tri[:, 2].tolist(), color=PANEL_COLOUR, flatshading=True,
+                         opacity=1.0, lighting=MESH_LIGHTING,
+                         lightposition=dict(x=25000, y=50000, z=100000), name="panels",
+                         showlegend=True, hoverinfo="skip", legendgroup="panels",
+                         scene="scene"))
+    for family, (colour, width, dash), _ in lines:
+        data.append(dict(type="scatter3d", mode="lines", name=family,
+                         line=dict(color=colour, width=width, dash=dash), hoverinfo="name",
+                         connectgaps=False, legendgroup=family, scene="scene"))
+    data.append(dict(type="scatter3d", x=rounded([low[0], high[0]], 4),
+                     y=rounded([low[1], high[1]], 4), z=rounded([low[2], high[2]], 4),
+                     mode="markers", marker=dict(size=1, opacity=0), hoverinfo="skip",
+                     showlegend=False, name="extent", scene="scene"))
+    if curve is not None:
+        x, y, x_label, y_label = curve
+        data.append(dict(type="scatter", x=x, y=y, mode="lines", name="path",
+                         line=dict(color="#444444", width=2), showlegend=False,
+                         xaxis="x", yaxis="y",
+                         hovertemplate=f"{x_label}: %{{x}}<br>{y_label}: %{{y}}<extra></extra>"))
+        data.append(dict(type="scatter", x=x[:1], y=y[:1], mode="markers",
+                         name="increment shown", showlegend=False, cliponaxis=False,
+                         xaxis="x", yaxis="y",
+                         marker=dict(color=_MARKER_COLOUR, size=12,
+                                     line=dict(color="white", width=1.5)),
+                         hovertemplate="shown: %{x}, %{y}<extra></extra>"))
+    return data
+
+
+def _template():
+    path = plotly_js_path().parent / "templates" / "plotly_white.json"
+    return json.loads(path.read_text(encoding="utf-8"))
+
+
+def _layout(title, points, names, total, curve):
+    # Two title lines above the legend; each further line pushes the plots down.
+    top = 100 + 30 * max(0, title.count("<br>") - 1)
+    scene = scene_layout(points)
+    scene["domain"] = dict(x=[0.0, _SCENES_END if curve is not None else 1.0], y=[0.0, 1.0])
+    layout = dict(title=dict(text=title, x=0.5, xanchor="center"), template=_template(),
+                  autosize=True, margin=dict(l=10, r=20, t=top, b=100), uirevision="view",
+                  legend=dict(orientation="h", x=0.0, y=1.0, yanchor="bottom"),
+                  sliders=[slider(names, total, method="skip")],
+                  updatemenus=[play_buttons(method="skip")], scene=scene)
+    if curve is not None:
+        layout["xaxis"] = dict(domain=[round(_SCENES_END + 0.14, 4), 1.0], anchor="y",
+                               title=dict(text=curve[2]))
+        layout["yaxis"] = dict(domain=[0.0, 1.0], anchor="x", title=dict(text=curve[3]))
+    return layout
+
+
+def _curve(model, path, curve, num_steps):
+    if curve is False:
+        return None
+    x, y, x_label, y_label = check_curve(curve if curve is not None
+                                         else default_curve(model, path), num_steps)
+    return (rounded(x, significant_decimals(x, 10)), rounded(y, significant_decimals(y, 10)),
+            subscripted(x_label), subscripted(y_label))
+
+
+def write_path_page(model, path, file, *, triangles=None, hinge_family=None, curve=None,
+                    frame_stride=None, max_frames=200, title=None, increments=None,
+                    total=None) -> Path:
+    """Write a path's animated view as one offline page, straight from its arrays.
+
+    The page shows what ``write_html(view_path(model, path, ...), file)`` shows (without
+    a field's colours): the folded surface at one increment beside the curve, whose marker
+    follows the slider. Its node positions are held to 1/65535 of the scene's box along
+    each axis; the curve keeps every value to 10 significant digits of its largest one.
+
+    Parameters
+    ----------
+    model : kresling.model.Model or an object with ``.model`` and ``.hinge_family``
+        As in :func:`kresling.view.view_model`.
+    path : kresling.solvers.PathResult or an object with ``displacement`` (S, 3N)
+        ``displacement`` [mm] (and ``load_factor`` for the default curve); ``completed``
+        False and ``message`` add a red "PARTIAL" line under the title.
+    file : str or os.PathLike
+        The page to write (parent folders are created).
+    triangles, hinge_family, curve, frame_stride, max_frames, title
+        As in :func:`kresling.view.view_path`.
+    increments : array_like of int, shape (S,), optional
+        The increment number of each row of the path (a path thinned to every k-th
+        increment), ascending: the frames' names and ``#frame=K``. Default: 1 to S.
+    total : int, optional
+        The run's increments, shown as "increment K / total". Default: the last increment.
+
+    Returns
+    -------
+    pathlib.Path
+        ``file``.
+
+    Raises
+    ------
+    ValueError
+        As :func:`kresling.view.view_path`.
+    ImportError
+        When plotly (whose JavaScript the page holds) is not installed.
+    """
+    inputs = view_inputs(model, triangles=triangles, hinge_family=hinge_family)
+    model = inputs.model
+    displacement = check_path(model, path)
+    num_steps = len(displacement)
+    shown_curve = _curve(model, path, curve, num_steps)
+    rows = select_rows(num_steps, frame_stride, max_frames)
+    numbers = _increments(increments, num_steps)
+    names = [str(numbers[r]) for r in rows]
+    total = int(numbers[-1]) if total is None else as_integer("total", total, minimum=1)
+    points = np.stack([node_points(model, displacement[r]) for r in rows])
+    low, high = box(list(points))
+    lines = _scene(inputs)
+    shown = subscripted(title or f"Equilibrium path of a bar-and-hinge model "
+                                 f"({describe(model)}), {total} increments")
+    if getattr(path, "completed", True) is False:
+        reason = getattr(path, "message", "") or "no reason given"
+        shown += (f'<br><span style="color:{PARTIAL_COLOUR}"><b>PARTIAL: the solver stopped '
+                  f"after {total} increments</b> ({_html.escape(reason)})</span>")
+    spec = dict(data=_traces(inputs, lines, low, high, shown_curve),
+                layout=_layout(shown, list(points), names, total, shown_curve),
+                config=dict(responsive=True, displaylogo=False),
+                frames=dict(names=names, rows=[int(r) for r in rows], nodes=len(model.nodes),
+                            low=low.tolist(), span=(high - low).tolist(),
+                            mesh=bool(len(inputs.triangles)),
+                            orders=[order.tolist() for _, _, order in lines],
+                            curve=shown_curve is not None, duration=FRAME_DURATION_MS))
+    return _write(Path(file), shown, spec, encode85(encode_frames(points, low, high)))
+
+
+def _increments(increments, num_steps):
+    if increments is None:
+        return np.arange(1, num_steps + 1)
+    numbers = np.asarray(increments)
+    if numbers.shape != (num_steps,) or not np.issubdtype(numbers.dtype, np.integer) or \
+            (num_steps > 1 and np.any(np.diff(numbers) <= 0)) or numbers.min() < 1:
+        raise ValueError(f"increments has shape {numbers.shape}: must be {num_steps} "
+                         "ascending integers >= 1, one per row of the path")
+    return numbers
+
+
+def _write(file: Path, title: str, spec: dict, frames: str) -> Path:
+    plain = re.sub(r"<[^>]+>", " ", title).strip()
+    figure = json.dumps(spec, separators=(",", ":")).replace("</", "<\\/")
+    page = "".join([
+        '<!DOCTYPE html>\n<html>\n<head>\n<meta charset="utf-8">\n',
+        f"<title>{_html.escape(plain)}</title>\n",
+        "<style>html, body { margin: 0; } #kresling-view { width: 100%; height: 100vh; "
+        "min-height: 520px; }</style>\n</head>\n<body>\n",
+        '<div id="kresling-view"></div>\n',
+        f'<script type="text/plain" id="kresling-plotly">{packed_plotly_js()}</script>\n',
+        f'<script type="application/json" id="kresling-figure">{figure}</script>\n',
+        f'<script type="text/plain" id="kresling-frames">{frames}</script>\n',
+        f"<script>{DECODE_JS}{PAGE_SCRIPT}</script>\n</body>\n</html>\n"])
+    file.parent.mkdir(parents=True, exist_ok=True)
+    part = file.with_name(file.name + ".part")
+    part.write_text(page, encoding="utf-8")
+    part.replace(file)
+    return file
