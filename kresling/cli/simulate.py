@@ -13,8 +13,9 @@ def register(subparsers) -> None:
         help="simulate any crease pattern (FOLD or OBJ) from a TOML problem file",
         description="Build the bar-and-hinge model of the pattern a problem file names "
                     "(panel split, material calibration, hinge laws), apply its supports and "
-                    "loads, follow the equilibrium path (displacement control, force control "
-                    "or MGDCM) and write history.csv, displacements.csv, path.fold, "
+                    "loads, follow the equilibrium path (displacement control, force control, "
+                    "MGDCM, or folding by crease actuation with [[actuation]] tables and "
+                    "method = \"fold\") and write history.csv, displacements.csv, path.fold, "
                     "summary.json and view.html. Node indices are 0-based in the pattern's "
                     "vertex order; N5B8 centre nodes follow the vertices. Exits 0 when the "
                     "path ran to its end, 1 when it stopped early (the files still hold "
@@ -57,6 +58,9 @@ def run(args) -> int:
                 for key in ("method", "stepping", "nodes", "bars", "hinges", "supported_dofs",
                             "increments", "newton_iterations", "attempted_increments",
                             "attempted_newton_iterations", "final_load_factor", "completed")]
+        for key, value in summary.get("fold", {}).items():
+            if key != "worst":
+                rows.append((f"fold: {key.replace('_', ' ')}", value))
         print_table(rows, ("quantity", "value"))
         print(f"\noutputs in {out}: " + ", ".join(Path(p).name for p in written.values()))
     if not simulation.completed:

@@ -33,12 +33,13 @@ from kresling.model.pattern_model import FOLD_FAMILIES
 from kresling.model.panel_elements import CENTRES, SPLITS
 from kresling.laws import BAR_LAWS, SPRING_LAWS
 from kresling.simulate.output_table import Output, read_output
+from kresling.simulate.problem_actuation import read_actuations, read_springs
 from kresling.simulate.problem_file import read_toml
 
 __all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_problem", "METHODS"]
 
 #: Analysis methods and what each needs.
-METHODS = ("displacement_control", "force_control", "mgdcm")
+METHODS = ("displacement_control", "force_control", "mgdcm", "fold")
 #: How displacement control steps between its samples.
 INCREMENTS = ("fixed", "adaptive")
 #: Displacement control with fixed increments: each Newton solve's start, by the order of its
@@ -132,6 +133,10 @@ class Problem:
     centre: str = "merlin2"
     #: The [output] table: increments kept in the files, the view's curve.
     output: Output = Output()
+    #: Crease actuation (``[[actuation]]``, with ``method = "fold"``): Actuation entries.
+    actuations: tuple = ()
+    #: Zero-length springs to fixed points (``[[spring]]``): Spring entries.
+    springs: tuple = ()
 
 
 class _Table:
@@ -407,9 +412,10 @@ def _read_analysis(t, num_nodes):
     settings = {"method": method,
                 "tolerance": t.get("tolerance", _positive, 1e-6),
                 "max_iterations": t.get("max_iterations", _count, 50)}
-    if method in ("displacement_control", "force_control"):
+    if method in ("displacement_control", "force_control", "fold"):
         settings["steps"] = t.get("steps", _count, required=True,
-                                  allowed="the number of increments (an integer >= 1)")
+                                  allowed="the number of increments (an integer >= 1)"
+                                  + (" per stage" if method == "fold" else ""))
     if method == "displacement_control":
         settings["increments"] = t.get("increments", _string, "fixed",
                                        choices=INCREMENTS)
@@ -417,13 +423,15 @@ def _read_analysis(t, num_nodes):
             t.fail("predictor", "applies to fixed increments only: adaptive increments start "
                                 "each Newton solve from their own cubic Hermite curves")
         settings["predictor"] = t.get("predictor", _string, "previous", choices=PREDICTORS)
+    elif method == "fold":
+        settings["predictor"] = t.get("predictor", _string, "previous", choices=PREDICTORS)
     else:
         settings["initial_load_factor"] = t.get("initial_load_factor", _number, 0.01)
         if settings["initial_load_factor"] == 0:
             t.fail("initial_load_factor", "= 0 is invalid: must be non-zero (its sign sets "
                                           "the loading direction)")
         settings["max_increments"] = t.get("max_increments", _count, 100)
-    if method != "displacement_control":
+    if method not in ("displacement_control", "fold"):
         settings["max_load_factor"] = t.get("max_load_factor", _positive, math.inf)
     if t.has("stop"):
         sub = _Table(t.get("stop", lambda t_, k, v, a: v), "analysis.stop", t.source, t.text)
@@ -474,6 +482,21 @@ def node_count(pattern, split):
 def _check_consistency(problem, t_analysis):
     method = problem.analysis.method
     kinds = {load.kind for load in problem.loads}
+    if (method == "fold") != bool(problem.actuations):
+        if method == "fold":
+            raise ValueError(f"{problem.source}: [[actuation]] is missing: method = 'fold' "
+                             "drives the creases it names")
+        raise ValueError(f"{problem.source}: [[actuation]] drives creases only with "
+                         f"[analysis] method = 'fold' (given: {method!r})")
+    if method == "fold":
+        if kinds - {"force"}:
+            t_analysis.fail("method", "= 'fold' takes force loads only (they ramp with the "
+                                      "first stage); a prescribed displacement is not one")
+        stages = sorted({a.stage for a in problem.actuations})
+        if stages != list(range(1, len(stages) + 1)):
+            raise ValueError(f"{problem.source}: [[actuation]] stages are {stages}: must be "
+                             "numbered 1, 2, ... without a gap")
+        return
     if not problem.loads:
         raise ValueError(f"{problem.source}: [[load]] is missing: at least one load is needed")
     wanted = "displacement" if method == "displacement_control" else "force"
@@ -542,8 +565,15 @@ def load_problem(problem) -> Problem:
               for node in load.nodes for axis, value in zip("xyz", load.vector) if value}
     output = read_output(_Table(root.get("output", lambda t, k, v, a: v, {}), "output", source,
                                 text), count, analysis.method, driven)
+    actuations = read_actuations(
+        root.get("actuation", _array_of_tables, []),
+        lambda entry, i: _Table(entry, "actuation", source, text, occurrence=i),
+        _number, _integer, _string, pattern.num_vertices)
+    springs = read_springs(root.get("spring", _array_of_tables, []),
+                           lambda entry, i: _Table(entry, "spring", source, text, occurrence=i),
+                           _number, lambda t: _node_list(t, count), _vector3)
     root.finish()
     result = Problem(pattern, split, material, compat, laws, supports, loads, analysis, source,
-                     centre, output)
+                     centre, output, actuations, springs)
     _check_consistency(result, t_analysis)
     return result

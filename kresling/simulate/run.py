@@ -3,6 +3,7 @@ the path."""
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import sys
 from dataclasses import dataclass
@@ -10,10 +11,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling.model import PatternModel, build_pattern_model
+from kresling.model.fold_angles import fold_angles_deg
+from kresling.simulate.actuation import FoldPlan, fold_plan
 from kresling.simulate.element_histories import ElementHistories, element_histories
 from kresling.simulate.problem import _AXES, PREDICTORS, Problem, load_problem, node_count
 from kresling.solvers import (PathResult, solve_displacement_control, solve_force_control,
-                              solve_mgdcm)
+                              solve_fold, solve_mgdcm)
 
 __all__ = ["Simulation", "PathState", "simulate", "build_problem_model"]
 
@@ -59,12 +62,15 @@ class Simulation:
     driven_dofs : ndarray of int
         Displacement control: the driven DOFs (``path.constraint_dofs``); otherwise the
         DOFs that carry a force.
+    fold : FoldPlan or None
+        ``method = "fold"``: the stages, the driven hinges and their targets.
     """
 
     problem: Problem
     pattern_model: PatternModel
     path: PathResult
     driven_dofs: np.ndarray
+    fold: FoldPlan | None = None
 
     @property
     def model(self):
@@ -86,7 +92,12 @@ class Simulation:
         """
         path = self.path
         columns = {"step": np.arange(1, path.num_steps + 1), "load_factor": path.load_factor}
-        if self.problem.analysis.method == "displacement_control":
+        if self.problem.analysis.method == "fold":
+            # load_factor runs over (k - 1, k] in stage k.
+            stage = np.maximum(np.ceil(path.load_factor - 1e-12), 1).astype(int)
+            columns["stage"] = stage
+            columns["fold_fraction"] = path.load_factor - (stage - 1)
+        elif self.problem.analysis.method == "displacement_control":
             for k, dof in enumerate(path.constraint_dofs):
                 columns[f"reaction_{dof // 3}_{'xyz'[dof % 3]}"] = path.constraint_force[:, k]
         else:
@@ -94,6 +105,13 @@ class Simulation:
             if stop is not None:
                 columns[f"u_{stop.node}_{stop.axis}"] = path.displacement[:, stop.dof]
         energies = self.element_histories().energy_by_family()
+        # The model's other families (cables, springs, ...) that it holds any of: their
+        # energies as the solver recorded them, and in the total.
+        for name in path.families:
+            if name not in ("bars", "hinges") and self.model.family(name)["nodes"].size:
+                energies[name] = path.energy_of(name)
+                energies["total"] = energies["total"] + energies[name]
+        energies["total"] = energies.pop("total")
         for name, values in energies.items():
             columns[f"energy_{name}"] = values
         columns["iterations"] = path.iterations
@@ -107,8 +125,29 @@ class Simulation:
 
         return write_outputs(self, directory, view=view, every=every)
 
+    def fold_report(self) -> dict:
+        """``method = "fold"``: how far the driven creases got. ``short_of_target`` counts
+        the creases more than 1 deg from their target fold angle at the end (held at their
+        law's limit, by the structure, or by a path that stopped), ``worst`` names the
+        farthest; ``left_branch`` counts those folded the other way from their target."""
+        plan = self.fold
+        if plan is None or not self.path.num_steps or not plan.hinges.size:
+            return {}
+        final = fold_angles_deg(self.pattern_model, self.path.displacement[-1], plan.signs)
+        reached = final[plan.hinges]
+        miss = np.abs(reached - plan.target_deg)
+        worst = int(np.argmax(miss))
+        other_way = (np.sign(reached) * np.sign(plan.target_deg) < 0) & (np.abs(reached) > 1.0)
+        return {"creases_driven": int(plan.hinges.size),
+                "short_of_target": int(np.count_nonzero(miss > 1.0)),
+                "worst": {"hinge": int(plan.hinges[worst]),
+                          "target_deg": float(plan.target_deg[worst]),
+                          "fold_angle_deg": float(reached[worst])},
+                "left_branch": int(np.count_nonzero(other_way))}
+
     def summary(self) -> dict:
         path = self.path
+        extra = {"fold": self.fold_report()} if self.fold is not None else {}
         return {
             "source": self.problem.source,
             "method": self.problem.analysis.method,
@@ -125,12 +164,17 @@ class Simulation:
             "final_load_factor": float(path.load_factor[-1]) if path.num_steps else None,
             "completed": bool(path.completed),
             "message": path.message,
+            **extra,
         }
 
 
 def stepping(problem) -> str:
     """How the problem's path is stepped, in words (the summary's record of it)."""
     analysis = problem.analysis
+    if analysis.method == "fold":
+        start = ("the previous equilibrium" if analysis.predictor == "previous"
+                 else f"a {analysis.predictor} extrapolation")
+        return f"equal increments of the creases' rest angles, each started from {start}"
     if analysis.method == "mgdcm":
         return "MGDCM (generalized displacement control)"
     if analysis.method == "force_control":
@@ -155,11 +199,23 @@ def build_problem_model(problem) -> PatternModel:
         for axis in support.axes:
             fixed[support.node, _AXES[axis]] = True
     try:
-        return build_pattern_model(problem.pattern, material=problem.material,
-                                   split=problem.split, centre=problem.centre, laws=problem.laws,
-                                   fixed=fixed, merlin2_compat=problem.merlin2_compat)
+        pm = build_pattern_model(problem.pattern, material=problem.material,
+                                 split=problem.split, centre=problem.centre, laws=problem.laws,
+                                 fixed=fixed, merlin2_compat=problem.merlin2_compat)
     except ValueError as error:  # a value the model cannot take: name the problem's key
         raise ValueError(f"{problem.source}: {_where(str(error))}: {error}") from None
+    if not problem.springs:
+        return pm
+    nodes = pm.model.nodes
+    springs = {"nodes": np.array([s.node for s in problem.springs], dtype=np.int64),
+               "stiffness": np.array([s.stiffness for s in problem.springs], dtype=float),
+               "anchor": np.array([nodes[s.node] if s.anchor is None else s.anchor
+                                   for s in problem.springs], dtype=float)}
+    try:
+        model = pm.model.replace(families={"springs": springs})
+    except ValueError as error:
+        raise ValueError(f"{problem.source}: [[spring]]: {error}") from None
+    return dataclasses.replace(pm, model=model)
 
 
 #: The problem file's key of each material parameter the model's messages name.
@@ -246,6 +302,10 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
                 merlin2_steps=problem.merlin2_compat and not adaptive and order == 0, **common)
         elif analysis.method == "force_control":
             path = solve_force_control(model, vector, analysis.steps, **common)
+        elif analysis.method == "fold":
+            plan = fold_plan(problem, pm)
+            path = solve_fold(model, plan.stages, analysis.steps, forces=vector,
+                              extrapolation=PREDICTORS.index(analysis.predictor), **common)
         else:
             monitor = analysis.stop
             path = solve_mgdcm(model, vector, initial_load_factor=analysis.initial_load_factor,
@@ -264,7 +324,8 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
                        path.num_steps, path.message)
     driven = (path.constraint_dofs if analysis.method == "displacement_control"
               else np.flatnonzero(vector))
-    return Simulation(problem, pm, path, np.asarray(driven, dtype=np.int64))
+    return Simulation(problem, pm, path, np.asarray(driven, dtype=np.int64),
+                      plan if analysis.method == "fold" else None)
 
 
 class _Bar:

@@ -1,0 +1,64 @@
+"""Fold angles in FOLD's convention and the hinges' rest angles, both ways.
+
+A hinge of the model measures the dihedral angle ``theta`` in [0, 2 pi) about its axis
+``a -> b`` (pi: flat). A FOLD file states fold angles ``rho`` in [-180, 180] degrees:
+positive for a valley, which brings together the sides of the two faces that their vertex
+order faces (counter-clockwise seen from that side), negative for a mountain, 0 flat. The
+two meet through one sign per hinge, ``rho = sigma (pi - theta)``, where ``sigma`` says
+whether the hinge's own orientation agrees with the faces' (docs/folding.md).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["hinge_fold_signs", "fold_angles_deg", "rest_angles_for"]
+
+
+def _newell_normal(points):
+    return np.cross(points, np.roll(points, -1, axis=0)).sum(axis=0)
+
+
+def hinge_fold_signs(pattern_model) -> np.ndarray:
+    """The sign ``sigma`` of each hinge (``rho = sigma (pi - theta)``), shape (H,).
+
+    Found in the reference configuration from the panel that holds the hinge's second wing:
+    +1 where that panel's normal (by its vertex order) points the way of
+    ``(b - a) x (b - d)``, -1 otherwise.
+    """
+    elements = pattern_model.elements
+    X = np.asarray(pattern_model.model.nodes, dtype=float)
+    panels_of = {}  # node -> the panels it belongs to (a centre node: its own panel)
+    normals = []
+    for p, panel in enumerate(elements.panels):
+        normals.append(_newell_normal(X[list(panel)]))
+        members = list(panel) + ([int(elements.panel_centre[p])]
+                                 if elements.panel_centre[p] >= 0 else [])
+        for node in members:
+            panels_of.setdefault(int(node), set()).add(p)
+    hinges = np.asarray(pattern_model.model.hinges, dtype=np.int64)
+    signs = np.ones(len(hinges))
+    for h, (a, b, _, d) in enumerate(hinges):
+        shared = panels_of.get(int(a), set()) & panels_of.get(int(b), set()) & \
+            panels_of.get(int(d), set())
+        if not shared:
+            continue  # a hinge of no panel (a model built by hand): theta's own orientation
+        n = np.cross(X[b] - X[a], X[b] - X[d])
+        signs[h] = 1.0 if np.dot(normals[min(shared)], n) >= 0 else -1.0
+    return signs
+
+
+def fold_angles_deg(pattern_model, u=None, signs=None) -> np.ndarray:
+    """Each hinge's fold angle at displacement ``u`` [deg], FOLD's convention, shape (H,)."""
+    if signs is None:
+        signs = hinge_fold_signs(pattern_model)
+    theta = pattern_model.model.element_state(u)["hinge_angle"]
+    return np.degrees(signs * (np.pi - theta))
+
+
+def rest_angles_for(fold_angle_deg, signs) -> np.ndarray:
+    """The rest angles [rad] in [0, 2 pi) that put hinges of ``signs`` at the fold angles
+    ``fold_angle_deg`` [deg] (a fold of -180 or 180 deg, folded flat, is taken to within 1e-9
+    rad of it: 2 pi itself is no rest angle)."""
+    theta = np.pi - np.asarray(signs, dtype=float) * np.radians(fold_angle_deg)
+    return np.clip(theta, 0.0, np.nextafter(2 * np.pi, 0) - 1e-9)

@@ -1,0 +1,98 @@
+"""A problem's ``[[actuation]]`` entries as the fold solver's stages: which hinges each
+stage drives and to which rest angles (docs/folding.md)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from kresling.model.fold_angles import hinge_fold_signs, rest_angles_for
+
+__all__ = ["FoldPlan", "fold_plan"]
+
+_FOLD_FAMILIES = ("mountain", "valley", "flat", "unassigned", "join")
+
+
+@dataclass(frozen=True)
+class FoldPlan:
+    """The stages of a fold.
+
+    Attributes
+    ----------
+    stages : tuple of (ndarray of int, ndarray)
+        Per stage, the driven hinges and their target rest angles [rad].
+    hinges : ndarray of int, shape (K,)
+        Every driven hinge, in the order first driven.
+    target_deg : ndarray, shape (K,)
+        The last target fold angle of each [deg], FOLD's convention.
+    signs : ndarray, shape (H,)
+        Every hinge's sign between fold angle and dihedral angle
+        (:func:`kresling.model.fold_angles.hinge_fold_signs`).
+    """
+
+    stages: tuple
+    hinges: np.ndarray
+    target_deg: np.ndarray
+    signs: np.ndarray
+
+
+def _fold_hinge_of_edge(pattern_model) -> dict:
+    """(u, v), u < v -> the model hinge on that crease."""
+    folds = pattern_model.elements.folds
+    out = {}
+    for h, (family, element) in enumerate(zip(pattern_model.hinge_family,
+                                               pattern_model.hinge_element)):
+        if family != "bend":
+            a, b = int(folds[element][0]), int(folds[element][1])
+            out[(min(a, b), max(a, b))] = h
+    return out
+
+
+def fold_plan(problem, pattern_model) -> FoldPlan:
+    """The problem's actuation as stages; a ValueError names an entry that drives no hinge
+    (an edge that is no crease, a family with no member, no fold angle in the file)."""
+    by_edge = _fold_hinge_of_edge(pattern_model)
+    pattern = problem.pattern
+    file_angle = {(int(min(u, v)), int(max(u, v))): float(a)
+                  for (u, v), a in zip(pattern.edges, pattern.edges_fold_angle)}
+    signs = hinge_fold_signs(pattern_model)
+    stages, order, last = [], [], {}
+    for stage in range(1, max(a.stage for a in problem.actuations) + 1):
+        targets = {}
+        for i, entry in enumerate(problem.actuations):
+            if entry.stage != stage:
+                continue
+            where = f"{problem.source}: actuation[{i}]"
+            if entry.edges is not None:
+                edges = entry.edges
+                missing = [e for e in edges if e not in by_edge]
+                if missing:
+                    raise ValueError(f"{where} key 'edges': {list(missing[0])} is not a crease "
+                                     "with a hinge (a boundary, a cut, or no edge at all)")
+            else:
+                wanted = _FOLD_FAMILIES if entry.family == "fold" else (entry.family,)
+                edges = [e for e, h in by_edge.items() if pattern_model.hinge_family[h] in wanted]
+                if not edges:
+                    raise ValueError(f"{where} key 'family': the pattern has no "
+                                     f"{entry.family!r} crease")
+            for edge in edges:
+                angle = entry.fold_angle_deg
+                if angle is None:
+                    angle = file_angle.get(edge, np.nan)
+                    if not np.isfinite(angle):
+                        raise ValueError(f"{where} key 'fold_angle_deg': = \"file\" but the "
+                                         f"pattern gives crease {list(edge)} no "
+                                         "edges_foldAngle")
+                targets[by_edge[edge]] = angle  # a later entry of the stage overrides
+        if not targets:
+            continue
+        hinges = np.array(sorted(targets), dtype=np.int64)
+        angles = np.array([targets[h] for h in hinges])
+        stages.append((hinges, rest_angles_for(angles, signs[hinges])))
+        for h, a in zip(hinges, angles):
+            if h not in last:
+                order.append(int(h))
+            last[int(h)] = float(a)
+    hinges = np.array(order, dtype=np.int64)
+    return FoldPlan(tuple(stages), hinges, np.array([last[h] for h in order]), signs)

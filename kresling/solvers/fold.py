@@ -1,0 +1,141 @@
+"""Folding by crease actuation: hinges' rest angles driven to targets, in stages.
+
+:func:`solve_fold` is the solver (rest angles in radians, any :class:`Model`); :func:`fold`
+is the verb for a crease pattern's model, with targets as fold angles in FOLD's convention
+(degrees, + valley, - mountain). Each increment is a Newton solve of the model with its
+supports and loads; no perturbing force is needed. docs/folding.md explains the convention
+and how a flat pattern leaves its flat state.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from kresling import _core
+from kresling._validation import as_integer, as_positive_real, as_real
+from kresling.model.fold_angles import fold_angles_deg, hinge_fold_signs, rest_angles_for
+from kresling.solvers._inputs import cholesky_choice, dof_vector
+from kresling.solvers.path import PathResult
+
+__all__ = ["solve_fold", "fold", "FoldResult"]
+
+
+def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterations=50,
+               max_bisections=10, extrapolation=0, shift=1e-8, initial=None, stop=None,
+               cholesky="auto") -> PathResult:
+    """Drive hinges' rest angles to targets, stage after stage, and follow the equilibrium.
+
+    Parameters
+    ----------
+    model : kresling.model.Model
+    stages : sequence of (hinges, targets)
+        Each stage: hinge indices (K,) and their target rest angles (K,) [rad, in
+        [0, 2 pi)]. A stage's rest angles move linearly from where the stages before it left
+        them (the model's own for the first) to its targets, in ``steps`` equal increments.
+    steps : int
+        Increments per stage, 1 to 100 000.
+    forces : array_like, shape (3N,) or (N, 3), optional
+        External load [N], ramped from 0 to full over the first stage and held after it.
+    extrapolation : {0, 1, 2, 3}
+        Each increment's start: the previous equilibrium, or a linear, quadratic or cubic
+        extrapolation along the path.
+    stop : callable, optional
+        ``stop(fraction, displacement) -> bool`` after every accepted increment (``fraction``
+        of the current stage); True ends the fold there.
+
+    Returns
+    -------
+    PathResult
+        ``load_factor`` runs from 0 to the number of stages: stage k is (k - 1, k];
+        ``constraint_force`` holds the support reactions [N].
+    """
+    o = _core.solvers.FoldOptions()
+    o.cholesky = cholesky_choice(cholesky)
+    o.tolerance = as_positive_real("tolerance", tolerance)
+    o.max_iterations = as_integer("max_iterations", max_iterations, minimum=1)
+    o.max_bisections = as_integer("max_bisections", max_bisections, minimum=0)
+    o.extrapolation = as_integer("extrapolation", extrapolation, minimum=0, maximum=3)
+    o.shift = as_real("shift", shift)
+    if stop is not None and not callable(stop):
+        raise ValueError(f"stop = {stop!r} is invalid: must be None or a callable")
+    o.stop = stop
+    core_stages = []
+    for k, stage in enumerate(stages):
+        try:
+            hinges, targets = stage
+        except (TypeError, ValueError):
+            raise ValueError(f"stages[{k}] must be (hinges, targets)") from None
+        hinges = np.asarray(hinges, dtype=np.int64).ravel()
+        targets = np.asarray(targets, dtype=float).ravel()
+        core_stages.append((hinges.tolist(), targets))
+    load = np.zeros(model.num_dofs) if forces is None else dof_vector(model, "forces", forces)
+    core = _core.solvers.fold(model._core, core_stages, as_integer("steps", steps, minimum=1),
+                              load, o, dof_vector(model, "initial", initial, allow_none=True))
+    return PathResult._from_core(core)
+
+
+@dataclass(frozen=True)
+class FoldResult:
+    """A crease pattern folded by :func:`fold`.
+
+    Attributes
+    ----------
+    path : PathResult
+        ``load_factor``: the fold fraction (0 to 1).
+    hinges : ndarray of int, shape (K,)
+        The driven hinges.
+    target_deg : ndarray, shape (K,)
+        Their target fold angles [deg], FOLD's convention.
+    fold_angle_deg : ndarray, shape (S, H)
+        Every hinge's fold angle at every increment [deg].
+    """
+
+    path: PathResult
+    hinges: np.ndarray
+    target_deg: np.ndarray
+    fold_angle_deg: np.ndarray
+
+    @property
+    def completed(self) -> bool:
+        return self.path.completed
+
+
+def fold(pattern_model, targets, steps, **options) -> FoldResult:
+    """Fold a crease pattern's model to fold angles, in ``steps`` increments.
+
+    Parameters
+    ----------
+    pattern_model : kresling.model.PatternModel
+    targets : dict or array_like
+        ``{hinge: fold angle [deg]}``, or one angle per hinge (H,) with NaN for the hinges
+        left free; FOLD's convention: + valley, - mountain, 0 flat, within [-180, 180].
+    steps : int
+    **options
+        As :func:`solve_fold` (``forces``, ``tolerance``, ``extrapolation``, ...).
+
+    Returns
+    -------
+    FoldResult
+    """
+    num_hinges = len(pattern_model.model.hinges)
+    if isinstance(targets, dict):
+        hinges = np.array(sorted(targets), dtype=np.int64)
+        angles = np.array([targets[h] for h in sorted(targets)], dtype=float)
+    else:
+        values = np.asarray(targets, dtype=float).ravel()
+        if values.shape != (num_hinges,):
+            raise ValueError(f"targets has {values.size} entries: must be a dict or one per "
+                             f"hinge ({num_hinges})")
+        hinges = np.flatnonzero(~np.isnan(values))
+        angles = values[hinges]
+    if hinges.size and (hinges.min() < 0 or hinges.max() >= num_hinges):
+        raise ValueError(f"targets: hinge {int(hinges.max())} is out of range [0, {num_hinges})")
+    if not np.all(np.isfinite(angles)) or np.any(np.abs(angles) > 180.0):
+        raise ValueError("targets: fold angles must be finite and within [-180, 180] deg")
+    signs = hinge_fold_signs(pattern_model)
+    path = solve_fold(pattern_model.model, [(hinges, rest_angles_for(angles, signs[hinges]))],
+                      steps, **options)
+    folded = np.array([fold_angles_deg(pattern_model, u, signs) for u in path.displacement])
+    return FoldResult(path, hinges, angles, folded.reshape(-1, num_hinges))
