@@ -178,9 +178,10 @@ def _angle(element, letter) -> float:
         return 0.0
     if letter not in ("M", "V"):
         return float("nan")
-    opacity = _fraction(element.values.get("opacity"))
-    # svgelements folds stroke-opacity into the stroke colour's alpha.
-    opacity *= element.stroke.alpha / 255.0
+    # Read from the attributes (and style), not from the colour: svgelements rounds the
+    # stroke's alpha to 8 bits.
+    opacity = _fraction(element.values.get("opacity")) * \
+        _fraction(element.values.get("stroke-opacity"))
     return (-180.0 if letter == "M" else 180.0) * opacity
 
 
