@@ -29,7 +29,7 @@ from pathlib import Path
 
 import numpy as np
 
-from kresling.io.errors import file_error
+from kresling.io.errors import PatternFileError, file_error
 from kresling.io.pattern import Pattern, check_panels, complete_edges
 from kresling.io.planar_graph import faces_from_edges, planarize
 from kresling.io.units import mm_per_unit
@@ -96,7 +96,11 @@ def read_svg(path, *, planarity_tolerance=1e-3, unit=None, scale=None,
     factor = MM_PER_PX if unit is None else mm_per_unit(unit, scale)
     segments = segments * factor
     segments[..., 1] *= -1.0                       # SVG's y points down
-    size = float(np.linalg.norm(np.ptp(segments.reshape(-1, 2), axis=0)))
+    with np.errstate(over="ignore", invalid="ignore"):
+        size = float(np.linalg.norm(np.ptp(segments.reshape(-1, 2), axis=0)))
+    if not np.isfinite(segments).all() or not np.isfinite(size):
+        raise file_error(source, "a stroke has a coordinate that is not a finite number (after "
+                                 "its transforms)")
     if size == 0.0:
         raise file_error(source, "the strokes have no extent: every point coincides")
     points, edges, origin = planarize(segments, snap_tolerance * size)
@@ -140,6 +144,20 @@ def _strokes(path, source):
         raise file_error(source, f"not a valid SVG file: {error}") from None
     except Exception as error:  # the XML parser's errors (ParseError and others)
         raise file_error(source, f"not a valid SVG file: {error}") from None
+    if not isinstance(document, svgelements.SVG):
+        raise file_error(source, "not a valid SVG file: its root element is not <svg>")
+    try:
+        return _collect(document, source)
+    except PatternFileError:
+        raise
+    except (ValueError, TypeError, AttributeError, IndexError, ZeroDivisionError,
+            OverflowError) as error:  # svgelements' errors on values it cannot use
+        raise file_error(source, f"not a valid SVG file: {error}") from None
+
+
+def _collect(document, source):
+    import svgelements
+
     segments, letters, angles, ignored = [], [], [], {}
     for element in document.elements():
         if not isinstance(element, svgelements.Shape) or element.stroke is None or \
