@@ -114,24 +114,6 @@ def _per_element(name, value, count, needed=None):
     return array
 
 
-def _per_element(name, value, count, needed=None):
-    """One value per element; ``needed`` elements (default all) make a missing one an
-    error."""
-    if value is None:
-        needed = count if needed is None else needed
-        if needed:
-            raise ValueError(f"{name} is missing: the pattern has {needed} such elements")
-        return np.zeros(count)
-    array = np.asarray(value, dtype=float)
-    if array.ndim == 0:
-        array = np.full(count, float(array))
-    if array.shape != (count,):
-        raise ValueError(f"{name} has shape {array.shape}: must be a number or ({count},)")
-    if not (np.isfinite(array) & (array >= 0)).all():
-        raise ValueError(f"{name} has a negative or non-finite entry")
-    return array
-
-
 def _fold_assignments(pattern, elements: PanelElements):
     """The assignment of each fold element's axis ("U" without assignments)."""
     edges = getattr(pattern, "edges", None)
