@@ -52,10 +52,10 @@ def register(subparsers) -> None:
                         help="with --from: the unit of the file's coordinates (mm, cm, m, in, "
                              "pt, um, nm, or unit with --scale), replacing the file's own")
     parser.add_argument("--scale", type=float,
-                        help="with --from and --unit unit: mm per unit")
+                        help="with --from and --unit unit: [mm] per unit")
     parser.add_argument("--frame", type=int, default=0,
-                        help="with --from a FOLD file: the frame to convert (default 0, the "
-                             "key frame)")
+                        help="with --from a FOLD file: the index of the frame to convert "
+                             "(default 0, the key frame)")
     parser.add_argument("--process", default="laminate", metavar="{laminate,paper}",
                         help="fabrication process (default laminate); any other name is "
                              "rejected with the list of processes")

@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from kresling.io import write_fold
-from kresling.io.fold_angles import fold_angle_frames
+from kresling.io.frame_angles import fold_angle_frames
 from kresling.model.pattern_model import FAMILY_OF_ASSIGNMENT
 
 __all__ = ["write_outputs", "path_fold_edges", "oriented_triangles"]
