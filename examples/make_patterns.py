@@ -139,23 +139,29 @@ def kresling_simulation_cell(fabrication_fold, n):
     """The cell as the thesis models it, from the fabrication FOLD's extended frame.
 
     Facets as in :func:`folded_cell`; the bottom and top polygons added as panels (outward
-    normals), their sides assigned "J" (join: the tabs glued to the polygon), the mountain
-    creases "C" (cut through, as in the thesis's specimens: the bar stays, no hinge), the
-    valleys "V". Returns the Pattern (extended state, the contracted one as frame 1).
+    normals), their sides folds (the tabs glued to the polygon: a crease of stiffness kf,
+    assigned "M" or "V" by the sign of its fold angle), the mountain creases "C" (cut
+    through, as in the thesis's specimens: the faces still share both ends of each cut, so
+    the bar stays and there is no hinge), the valleys "V". Returns the Pattern (extended
+    state, the contracted one as frame 1).
     """
     frames, facets, fabricated = folded_cell(fabrication_fold, "extended")
     bottom, top = list(range(n)), list(range(n, 2 * n))
     panels = facets + [bottom[::-1], top]
     assignment = {}
     for (u, v), letter in fabricated.items():
-        if (u < n) == (v < n):        # a polygon side
-            assignment[(u, v)] = "J"
+        if (u < n) == (v < n):        # a polygon side: its letter follows its fold angle
+            assignment[(u, v)] = "U"
         else:                         # a crease of the strip (the seam is a mountain)
             assignment[(u, v)] = {"M": "C", "V": "V"}[letter]
     edges = sorted(assignment)
     pattern = pattern_from_arrays(frames["extended"], panels, edges=edges,
                                   edges_assignment=[assignment[e] for e in edges])
     angles = np.degrees(fold_angles(pattern.faces, pattern.edges, pattern.vertices))
+    letters = [("V" if angle > 0 else "M") if letter == "U" else letter
+               for letter, angle in zip(pattern.edges_assignment, angles)]
+    pattern = pattern_from_arrays(pattern.vertices, pattern.faces, edges=pattern.edges,
+                                  edges_assignment=letters)
     return pattern, angles, frames["contracted"]
 
 
@@ -276,7 +282,7 @@ def main(out=HERE):
         frame_title=["extended (rest state of the simulation)", "contracted"],
         metadata={"file_title": "Kresling cell n=10 lam=0.9 Lc=15 mm R=30 mm for simulation: "
                                 "facets of cell_n10_laminate.fold, seam closed, end "
-                                "polygons added; mountains cut (C), polygon sides joined (J)"}))
+                                "polygons added; mountains cut (C), polygon sides folds (M/V)"}))
     problem = folder / "problem.toml"
     problem.write_text(kresling_problem(pattern, design), encoding="utf-8")
     written.append(problem)

@@ -126,7 +126,8 @@ def test_written_document_keys(tmp_path):
     assert document["file_creator"] == "kresling"
     assert document["frame_unit"] == "cm" and document["file_title"] == "square"
     assert document["frame_classes"] == ["creasePattern"]
-    assert document["vertices_coords"] == SQUARE                  # 2D: every z is 0
+    # 2D (every z is 0), written in the file's unit: the mm given are 1/10 of a cm.
+    assert document["vertices_coords"] == [[x / 10 for x in p] for p in SQUARE]
     assert document["faces_vertices"] == TRIANGLES
     assert document["edges_vertices"] == [[0, 2], [0, 1], [1, 2], [2, 3], [3, 0]]
     assert document["edges_assignment"] == ["V", "B", "B", "B", "B"]
@@ -230,9 +231,10 @@ MALFORMED = {
                r"sheet\.fold:3:3: not valid JSON: Expecting ',' delimiter"),
     "empty file": ("", r"sheet\.fold:1:1: not valid JSON"),
     "top level": ("[1, 2]", r"sheet\.fold: not a FOLD document: the top level is a JSON array"),
-    "no faces": (_valid(faces_vertices=None),
+    "no faces": (_valid(faces_vertices=None, edges_vertices=None, edges_assignment=None,
+                        edges_foldAngle=None),
                  r"sheet\.fold: key 'faces_vertices' is missing: a FOLD file needs "
-                 r"vertices_coords and faces_vertices \(this one has edges only"),
+                 r"faces_vertices, or edges_vertices to derive them from"),
     "no vertices": (_valid(vertices_coords=None), r"sheet\.fold: key 'vertices_coords' is "
                                                   r"missing"),
     "vertex type": (_valid(vertices_coords=[[0, 0], [1, 0], [1, 1], [1, 1], [1, "a"]]),
@@ -355,7 +357,9 @@ def test_pattern_from_arrays_names_the_argument():
 
 
 def test_io_imports_nothing_from_the_package_but_validation():
-    """kresling.io is the bottom layer: numpy, the standard library, kresling._validation."""
+    """kresling.io is the bottom layer: numpy, the standard library, kresling._validation,
+    and two declared dependencies where a format needs them (scipy's k-d tree for snapping
+    and coincident vertices, svgelements for SVG)."""
     package = Path(kresling.__file__).parent / "io"
     for module in package.glob("*.py"):
         tree = ast.parse(module.read_text())
@@ -365,7 +369,8 @@ def test_io_imports_nothing_from_the_package_but_validation():
             for name in names:
                 top = name.split(".")[0]
                 assert top in {"kresling", "numpy", "__future__", "json", "re", "logging",
-                               "numbers", "collections", "dataclasses", "typing", "pathlib"}, \
+                               "numbers", "collections", "dataclasses", "typing", "pathlib",
+                               "math", "scipy", "svgelements"}, \
                     (module.name, name)
                 if top == "kresling":
                     assert name == "kresling._validation" or name.startswith("kresling.io"), \

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from kresling.io import (PatternFileError, pattern_from_arrays, read_fold, read_obj,
@@ -180,6 +180,11 @@ def convex_panels(draw):
 @given(panels=convex_panels(), reverse=st.booleans())
 def test_random_convex_panels_round_trip_through_obj_and_fold(tmp_path_factory, panels, reverse):
     vertices, faces = panels
+    # Separate panels drawn at one place share points that are not one vertex: the readers
+    # refuse such coincident vertices (test_io_svg_and_units.py), so they are not drawn.
+    points = np.asarray(vertices)
+    gaps = np.linalg.norm(points[:, None] - points[None], axis=-1) + np.eye(len(points)) * 1e9
+    assume(gaps.min() > 1e-6 * np.linalg.norm(np.ptp(points, axis=0)))
     if reverse:
         faces = [face[::-1] for face in faces]
     expected = pattern_from_arrays(vertices, faces)

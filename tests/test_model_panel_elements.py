@@ -104,7 +104,7 @@ def test_unknown_split():
         build_panel_elements(SQUARE, [[0, 1, 2, 3]], split="N3B3")
 
 
-def test_assignments_set_families_and_a_cut_keeps_its_bar():
+def test_assignments_set_families_and_a_cut_separates_its_faces():
     vertices = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [2, 0, 0], [2, 1, 0]], float)
     faces = [[0, 1, 2], [0, 2, 3], [1, 4, 5], [1, 5, 2]]
     edges = [[0, 1], [1, 2], [2, 3], [3, 0], [0, 2], [1, 4], [4, 5], [5, 2], [1, 5]]
@@ -113,10 +113,16 @@ def test_assignments_set_families_and_a_cut_keeps_its_bar():
     pm = build_pattern_model(pattern, split="N4B5",
                              material=ManualProperties(bar_modulus=1e3, bar_area=1.0,
                                                        fold_stiffness=0.1))
-    families = dict(zip(map(tuple, pm.model.hinges[:, :2].tolist()), pm.hinge_family))
-    assert families == {(0, 2): "mountain", (1, 5): "valley"}  # no hinge on the cut 1-2
+    # The cut 1-2 runs from boundary to boundary (FOLD 1.2: faces separated along it): the
+    # right-hand faces get copies of its ends, 6 (of 1) and 7 (of 2), and no hinge joins
+    # the two halves.
+    assert pm.model.num_nodes == 8
+    np.testing.assert_array_equal(pm.model.nodes[6:], vertices[[1, 2]])
+    families = dict(zip(map(tuple, np.sort(pm.model.hinges[:, :2], axis=1).tolist()),
+                        pm.hinge_family))
+    assert families == {(0, 2): "mountain", (5, 6): "valley"}
     bars = dict(zip(map(tuple, np.sort(pm.model.bars, axis=1).tolist()), pm.bar_family))
-    assert bars[(1, 2)] == "cut"
+    assert bars[(1, 2)] == bars[(6, 7)] == "cut"          # each side of the cut
     assert sorted(set(pm.bar_family)) == ["boundary", "cut", "fold"]
 
 

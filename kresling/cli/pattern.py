@@ -1,5 +1,6 @@
 """``kresling pattern``: the cut file (SVG, DXF), crease pattern (FOLD) or preview (PNG) of a
-cell or a two-cell module."""
+cell or a two-cell module; or, with ``--from``, any crease pattern file (FOLD, SVG, OBJ)
+converted to a FOLD file in mm with FOLD's assignments."""
 
 from __future__ import annotations
 
@@ -27,15 +28,34 @@ _PARAMETERS = (
 def register(subparsers) -> None:
     parser = subparsers.add_parser(
         "pattern",
-        help="cut file / crease pattern of a cell (SVG, DXF, FOLD, PNG)",
+        help="cut file / crease pattern of a cell (SVG, DXF, FOLD, PNG), or a pattern "
+             "file converted to FOLD",
         description="Write the flat pattern of a generalized Kresling cell at true scale "
                     "(mm) for the thesis's paper or PET-laminate process. The format comes "
                     "from the output file's extension: .svg and .dxf (cut files, one layer "
                     "per cut pass), .fold (crease pattern with both stable states), .png "
                     "(preview). Laminate cut files are drawn from the inside of the cell, "
-                    "as the plotter sees the sheet.",
+                    "as the plotter sees the sheet. With --from FILE (.fold, .svg in Origami "
+                    "Simulator's colours, or .obj) no design is needed: the pattern is "
+                    "converted to a FOLD file (-o FILE.fold) in mm, with FOLD's "
+                    "assignments (an SVG's facet creases become joins, J).",
     )
     add_design_arguments(parser)
+    # With --from the design is not needed: the three design variables are checked in run.
+    for action in parser._actions:
+        if action.dest in ("n", "lam", "Lc"):
+            action.required = False
+    parser.add_argument("--from", dest="source", metavar="FILE",
+                        help="convert this crease pattern (.fold, .svg, .obj) to the FOLD "
+                             "file -o names, instead of drawing a cell")
+    parser.add_argument("--unit", metavar="UNIT",
+                        help="with --from: the unit of the file's coordinates (mm, cm, m, in, "
+                             "pt, um, nm, or unit with --scale), replacing the file's own")
+    parser.add_argument("--scale", type=float,
+                        help="with --from and --unit unit: [mm] per unit")
+    parser.add_argument("--frame", type=int, default=0,
+                        help="with --from a FOLD file: the index of the frame to convert "
+                             "(default 0, the key frame)")
     parser.add_argument("--process", default="laminate", metavar="{laminate,paper}",
                         help="fabrication process (default laminate); any other name is "
                              "rejected with the list of processes")
@@ -57,7 +77,43 @@ def register(subparsers) -> None:
     parser.set_defaults(func=run)
 
 
+def convert(args) -> int:
+    """``--from``: read any crease pattern, write it as FOLD (mm, FOLD's letters)."""
+    from pathlib import Path
+
+    from kresling.io import as_fold_assignments, read_pattern, write_fold
+
+    if Path(args.output).suffix.lower() != ".fold":
+        raise ValueError(f"--output = {args.output!r} is invalid with --from: a pattern file "
+                         "is converted to FOLD (.fold)")
+    check_output_file("--output", args.output)
+    pattern = read_pattern(args.source, unit=args.unit, scale=args.scale, frame=args.frame)
+    if Path(args.source).suffix.lower() == ".svg":
+        pattern = as_fold_assignments(pattern)
+    write_fold(args.output, pattern, frame_title=Path(args.source).name,
+               metadata={"file_title": f"crease pattern converted from {Path(args.source).name}"})
+    summary = {"file": args.output, "format": "FOLD", "from": args.source,
+               "vertices": pattern.num_vertices, "faces": pattern.num_faces,
+               "edges": pattern.num_edges, "frames": len(pattern.frames)}
+    if args.json:
+        print_json(summary)
+    else:
+        print(f"wrote {args.output} (FOLD, mm: {pattern.num_vertices} vertices, "
+              f"{pattern.num_faces} faces, {pattern.num_edges} edges from {args.source})")
+    return 0
+
+
 def run(args) -> int:
+    if args.source is not None:
+        return convert(args)
+    missing = [f"--{name}" for name in ("n", "lam", "Lc") if getattr(args, name) is None]
+    if missing:
+        raise ValueError(f"{', '.join(missing)} {'is' if len(missing) == 1 else 'are'} "
+                         "missing: the cell's design is needed (or --from FILE to convert a "
+                         "crease pattern file)")
+    for option in ("unit", "scale"):
+        if getattr(args, option) is not None:
+            raise ValueError(f"--{option} applies only with --from")
     from kresling.fabrication import FORMATS, cut_sheet, module_sheet, write_pattern
     from kresling.fabrication.export import file_format, write_sheet
     from kresling.fabrication.svg import MARGIN

@@ -3,8 +3,8 @@
 FOLD (Demaine, Ku, Lang; specification 1.1 and 1.2) stores the pattern in the *key frame*:
 ``vertices_coords`` (2D or 3D), ``edges_vertices``, ``edges_assignment``,
 ``edges_foldAngle`` and ``faces_vertices`` (0-based indices); further configurations of the
-same vertices go in ``file_frames``. Lengths are in the file's ``frame_unit`` (this package
-writes and assumes mm). Fold angles are in degrees in [-180, 180]: positive for a valley,
+same vertices go in ``file_frames``. Lengths are in the file's ``frame_unit``: the reader
+(:mod:`kresling.io.fold_reading`) converts them to mm, this writer writes mm. Fold angles are in degrees in [-180, 180]: positive for a valley,
 negative for a mountain, 0 flat; with faces counter-clockwise about +z in the flat pattern,
 a valley folds the faces' +z sides towards each other.
 
@@ -21,11 +21,10 @@ from pathlib import Path
 
 import numpy as np
 
-from kresling._validation import read_input_file
-from kresling.io.errors import MISSING, PatternFileError, file_error, key_error, line_error
-from kresling.io.pattern import (ASSIGNMENTS, Pattern, _as_assignments, _as_coordinates,
-                                 _as_edges, _as_faces, _as_fold_angles, argument_fail,
-                                 check_panels, complete_edges, is_number, pattern_from_arrays)
+from kresling.io.fold_reading import pattern_from_fold, read_fold
+from kresling.io.pattern import (ASSIGNMENTS, Pattern, _as_coordinates, argument_fail,
+                                 pattern_from_arrays)
+from kresling.io.units import mm_per_unit
 
 __all__ = ["ASSIGNMENTS", "fold_angles", "fold_document", "pattern_from_fold", "read_fold",
            "write_fold", "write_fold_document"]
@@ -36,158 +35,12 @@ logger = logging.getLogger(__name__)
 GEOMETRY_KEYS = ("vertices_coords", "faces_vertices", "edges_vertices", "edges_assignment",
                  "edges_foldAngle", "file_frames")
 
-_REQUIRED = "a FOLD file needs vertices_coords and faces_vertices"
-
-
-# -- reading -------------------------------------------------------------------------------
-
-def read_fold(path, *, planarity_tolerance=1e-3) -> Pattern:
-    """Read a FOLD file (spec 1.1 or 1.2) as a :class:`~kresling.io.Pattern`.
-
-    Parameters
-    ----------
-    path : str or Path
-    planarity_tolerance : float or None, default 1e-3
-        Largest distance of a panel's corner from its best-fit plane, as a fraction of the
-        panel's diameter; ``None`` skips the check.
-
-    Returns
-    -------
-    Pattern
-        ``vertices`` from the key frame's ``vertices_coords`` [mm] (2D gets ``z = 0``),
-        ``faces`` from ``faces_vertices``; ``edges`` are ``edges_vertices`` in file order,
-        then the faces' sides missing from it (``"B"`` on one face, else ``"U"``);
-        assignments are upper-cased; ``edges_foldAngle`` [degrees, valley positive] with
-        NaN for ``null`` and for derived edges; ``frames`` are the ``vertices_coords`` of
-        ``file_frames`` that have them (shape (N, 3) each). Other keys are ignored.
-
-    Raises
-    ------
-    ValueError
-        Bad content, naming the file and the element: ``FILE:LINE:COL: not valid JSON: ...``,
-        ``FILE: key 'faces_vertices' is missing: ...``,
-        ``FILE: key 'vertices_coords'[4] = [1, 'a'] is invalid: must be 2 or 3 numbers``,
-        ``FILE: key 'faces_vertices'[3]: face 3 has vertex 40 out of range [0, 39]``,
-        ``FILE: face 7 is not planar: ...``.
-    OSError
-        If the file cannot be read (the message names it).
-    """
-    source = str(path)
-    text = read_input_file(path).decode("utf-8-sig", errors="replace")
-    try:
-        document = json.loads(text)
-    except json.JSONDecodeError as error:
-        raise line_error(source, error.lineno, error.colno,
-                         f"not valid JSON: {error.msg}") from None
-    except RecursionError:
-        raise file_error(source, "not valid JSON: nested too deeply") from None
-    return pattern_from_fold(document, source=source, planarity_tolerance=planarity_tolerance)
-
-
-def pattern_from_fold(document, *, source: str = "", planarity_tolerance=1e-3) -> Pattern:
-    """A :class:`~kresling.io.Pattern` from a FOLD document already parsed (a ``dict``).
-
-    As :func:`read_fold`, which calls it; ``source`` names the document in messages and
-    becomes the pattern's ``source``.
-    """
-    source = str(source)
-    if not isinstance(document, Mapping):
-        raise file_error(source or "FOLD document",
-                         f"not a FOLD document: the top level is a JSON {_json_type(document)}, "
-                         "must be an object")
-    fail = _key_fail(source)
-    for key in ("vertices_coords", "faces_vertices"):
-        if key not in document:
-            hint = (" (this one has edges only: panels must be given as faces)"
-                    if key == "faces_vertices" and "edges_vertices" in document else "")
-            raise key_error(source, key, f"is missing: {_REQUIRED}{hint}")
-    vertices = _fold_coordinates(document["vertices_coords"], fail("vertices_coords"))
-    count = len(vertices)
-    faces = _as_faces(_json_list(document["faces_vertices"], fail("faces_vertices")), count,
-                      fail("faces_vertices"))
-    edges = np.zeros((0, 2), dtype=np.int64)
-    if "edges_vertices" in document:
-        edges = _as_edges(_json_list(document["edges_vertices"], fail("edges_vertices")), count,
-                          fail("edges_vertices"))
-    assignments = angles = None
-    for key in ("edges_assignment", "edges_foldAngle"):
-        if key in document and "edges_vertices" not in document:
-            raise key_error(source, key, "is given without edges_vertices: it has one entry "
-                                         "per edge of edges_vertices")
-    if "edges_assignment" in document:
-        assignments = _as_assignments(
-            _json_list(document["edges_assignment"], fail("edges_assignment")), len(edges),
-            fail("edges_assignment"))
-    if "edges_foldAngle" in document:
-        angles = _as_fold_angles(
-            _json_list(document["edges_foldAngle"], fail("edges_foldAngle")), len(edges),
-            fail("edges_foldAngle"))
-    frames = []
-    if "file_frames" in document:
-        for k, frame in enumerate(_json_list(document["file_frames"], fail("file_frames"))):
-            if not isinstance(frame, Mapping):
-                raise fail("file_frames")(k, "must be an object (a frame)", value=frame)
-            if "vertices_coords" in frame:
-                frames.append(_fold_coordinates(frame["vertices_coords"],
-                                                _frame_fail(source, k), count=count))
-    check_panels(vertices, faces, planarity_tolerance,
-                 lambda index, message: _face_error(source, index, message))
-    edges, assignments, angles = complete_edges(faces, edges, assignments, angles)
-    return Pattern(vertices, faces, edges, assignments, angles, tuple(frames), source)
-
-
-def _json_type(value) -> str:
-    names = {dict: "object", list: "array", str: "string", bool: "boolean", type(None): "null"}
-    return names.get(type(value), "number")
-
-
-def _key_fail(source: str):
-    def for_key(key: str):
-        return lambda index, message, value=MISSING: key_error(source, key, message, index,
-                                                               value=value)
-    return for_key
-
-
-def _frame_fail(source: str, frame: int):
-    def fail(index, message, value=MISSING):
-        sub = "['vertices_coords']" + (f"[{index}]" if index is not None else "")
-        return key_error(source, "file_frames", message, frame, value=value, sub=sub)
-    return fail
-
-
-def _face_error(source: str, index: int, message: str) -> PatternFileError:
-    error = file_error(source, message)
-    error.key, error.index = "faces_vertices", index
-    return error
-
-
-def _json_list(value, fail) -> list:
-    if not isinstance(value, list):
-        raise fail(None, f"must be a JSON array, not {_json_type(value)}", value=value)
-    return value
-
-
-def _fold_coordinates(values, fail, *, count: int | None = None) -> np.ndarray:
-    """(N, 3) coordinates from a FOLD ``vertices_coords`` list (2D entries get z = 0)."""
-    values = _json_list(values, fail)
-    array = np.zeros((len(values), 3))
-    for index, entry in enumerate(values):
-        if not (isinstance(entry, list) and len(entry) in (2, 3)
-                and all(is_number(x) for x in entry)):
-            raise fail(index, "must be 2 or 3 numbers", value=entry)
-        array[index, :len(entry)] = entry
-        if not np.isfinite(array[index]).all():
-            raise fail(index, f"vertex {index} has a non-finite coordinate")
-    if count is not None and len(values) != count:
-        raise fail(None, f"has {len(values)} {'vertex' if len(values) == 1 else 'vertices'}: "
-                         f"must have {count}, one per vertex of the key frame")
-    return array
-
 
 # -- writing -------------------------------------------------------------------------------
 
 def write_fold(path, pattern_or_vertices, faces=None, *, edges=None, edges_assignment=None,
-               edges_fold_angle=None, frames=None, frame_title=None, metadata=None) -> Path:
+               edges_fold_angle=None, frames=None, frame_title=None, frame_fold_angles=None,
+               metadata=None) -> Path:
     """Write a pattern, and optionally further configurations of it, as a FOLD file.
 
     Parameters
@@ -213,10 +66,14 @@ def write_fold(path, pattern_or_vertices, faces=None, *, edges=None, edges_assig
     frame_title : str or sequence of str, optional
         The key frame's title, or one title per frame, key frame first (default ``""`` and
         ``"frame 1"``, ``"frame 2"``, ...).
+    frame_fold_angles : sequence of array_like, each of shape (E,), optional
+        Fold angles [degrees, valley positive, NaN unknown] of each frame, written as the
+        frame's ``edges_foldAngle``.
     metadata : dict, optional
-        More top-level properties, written last: ``frame_unit`` (default ``"mm"``),
-        ``file_title``, ``file_author``, ``frame_classes``, custom ``"prefix:name"`` keys.
-        Not the geometry keys (:data:`GEOMETRY_KEYS`).
+        More top-level properties, written last: ``frame_unit`` (default ``"mm"``; one of
+        :data:`~kresling.io.units.UNITS`: the coordinates, given in mm, are written in
+        it), ``file_title``, ``file_author``, ``frame_classes``, custom ``"prefix:name"``
+        keys. Not the geometry keys (:data:`GEOMETRY_KEYS`).
 
     Returns
     -------
@@ -264,6 +121,9 @@ def write_fold(path, pattern_or_vertices, faces=None, *, edges=None, edges_assig
         frames = [_as_coordinates(frame, f"frames[{k}]", count=pattern.num_vertices)
                   for k, frame in enumerate(frames)]
     titles = _titles(frame_title, len(frames))
+    metadata = _metadata(metadata)
+    per_mm = 1.0 / mm_per_unit(metadata.get("frame_unit", "mm"), name="metadata frame_unit")
+    frame_angles = _frame_angles(frame_fold_angles, len(frames))
     flat = not np.any(pattern.vertices[:, 2])
     angles = np.array(pattern.edges_fold_angle)
     unknown = np.isnan(angles)
@@ -272,14 +132,25 @@ def write_fold(path, pattern_or_vertices, faces=None, *, edges=None, edges_assig
     else:
         angles[unknown & np.isin(pattern.edges_assignment, ("B", "F"))] = 0.0
     document = fold_document(
-        pattern.vertices[:, :2] if flat else pattern.vertices, pattern.edges,
+        (pattern.vertices[:, :2] if flat else pattern.vertices) * per_mm, pattern.edges,
         pattern.edges_assignment, pattern.faces, edges_fold_angle=angles,
-        frames=[{"title": title, "vertices_coords": frame}
-                for title, frame in zip(titles[1:], frames)],
+        frames=[{"title": title, "vertices_coords": np.asarray(frame) * per_mm}
+                | ({} if frame_angles is None else {"edges_foldAngle": frame_angles[k]})
+                for k, (title, frame) in enumerate(zip(titles[1:], frames))],
         title=titles[0],
         extra={"frame_classes": ["creasePattern" if flat else "foldedForm"]})
-    document.update(_metadata(metadata))
+    document.update(metadata)
     return write_fold_document(path, document)
+
+
+def _frame_angles(values, count: int):
+    if values is None:
+        return None
+    if isinstance(values, (str, bytes)) or not hasattr(values, "__len__") or \
+            len(values) != count:
+        raise ValueError(f"frame_fold_angles is invalid: must be one array of fold angles "
+                         f"[degrees] per frame ({count})")
+    return list(values)
 
 
 def _titles(frame_title, count: int) -> list:
@@ -326,27 +197,16 @@ def write_fold_document(path, document: dict) -> Path:
     return path
 
 
-#: One encoder for every value (json.dumps with an option builds one per call: with the
-#: ABC checks of Mapping on every number, that was most of writing a long path's frames).
-_ENCODE = json.JSONEncoder(allow_nan=False).encode
-_SCALARS = (str, int, float, type(None))
-
-
 def _dumps(value, indent: str = "") -> str:
     """JSON with one line per vertex, edge and face: lists of scalars are not broken up."""
     inner = indent + " "
     if isinstance(value, Mapping) and value:
         items = [f"{inner}{json.dumps(str(k))}: {_dumps(v, inner)}" for k, v in value.items()]
         return "{\n" + ",\n".join(items) + "\n" + indent + "}"
-    if isinstance(value, list) and value and all(
-            type(v) is list and all(type(x) in (float, int) for x in v) for v in value):
-        # Rows of numbers (coordinates, frames): encoded at once, then one row per line.
-        text = _ENCODE(value)[1:-1].replace("], [", "],\n" + inner + "[")
-        return "[\n" + inner + text + "\n" + indent + "]"
-    if isinstance(value, (list, tuple)) and any(
-            not isinstance(v, _SCALARS) and isinstance(v, (Mapping, list, tuple)) for v in value):
+    if isinstance(value, (list, tuple)) and any(isinstance(v, (Mapping, list, tuple))
+                                                for v in value):
         return "[\n" + ",\n".join(inner + _dumps(v, inner) for v in value) + "\n" + indent + "]"
-    return _ENCODE(value)
+    return json.dumps(value, allow_nan=False)
 
 
 def fold_angles(faces, edges, coordinates) -> np.ndarray:

@@ -1,9 +1,12 @@
 """A bar-and-hinge :class:`Model` of any crease pattern, built as MERLIN2 builds it.
 
-Faces are panels. Edges between panels carry fold hinges whose family follows the
-pattern's edge assignment (FOLD's M, V, F, U and J); a cut edge (C) keeps its bar but no
-hinge; edges added inside panels carry bend hinges. Each family has its own law and may
-have its own stiffness. See docs/model.md, 'Topology' and 'Material calibration'.
+Faces are panels. Edges between panels carry hinges by their assignment, read in one of two
+conventions (:mod:`kresling.model.crease_kinds`): FOLD's M, V, F and U are fold hinges of
+their family; J (join) edges, and Origami Simulator's facet creases F, carry bend hinges as
+the edges added inside panels do; a cut (C) separates its faces (a bar remains where they
+still share both ends); Origami Simulator's undriven U keeps a bar and no hinge. Each
+family has its own law and may have its own stiffness. See docs/model.md, 'Topology' and
+'Material calibration', and docs/patterns.md.
 
 >>> import numpy as np
 >>> sheet = (np.array([[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0], [1, 1, 0], [2, 1, 0]], float),
@@ -23,93 +26,24 @@ from types import MappingProxyType
 import numpy as np
 
 from kresling import _core
-from kresling.laws import BAR_LAWS, SPRING_LAWS
+from kresling.io import separate_cuts
 from kresling.model.calibration import (ManualProperties, SheetMaterial, SheetStiffness,
                                         calibrate_sheet)
+from kresling.model.crease_kinds import CONVENTIONS, FAMILY_OF_FOLD, crease_kind
+from kresling.model.crease_laws import CreaseLaws, HingeLaw
 from kresling.model.model import Model
 from kresling.model.panel_elements import PanelElements, build_panel_elements
+from kresling.model.rest_angles import check_rest_angles
 
 __all__ = ["HingeLaw", "CreaseLaws", "PatternModel", "build_pattern_model", "FOLD_FAMILIES",
-           "HINGE_FAMILIES"]
+           "HINGE_FAMILIES", "CONVENTIONS"]
 
-#: FOLD edge assignments that carry a fold hinge, and the family each gives.
-FAMILY_OF_ASSIGNMENT = MappingProxyType(
-    {"M": "mountain", "V": "valley", "F": "flat", "U": "unassigned", "J": "join"})
+#: FOLD edge assignments that carry a fold hinge (in FOLD's convention), and the family
+#: each gives.
+FAMILY_OF_ASSIGNMENT = FAMILY_OF_FOLD
 FOLD_FAMILIES = tuple(FAMILY_OF_ASSIGNMENT.values())
-#: Every hinge family: the fold families and "bend" (hinges inside panels).
+#: Every hinge family: the fold families and "bend" (hinges inside panels and on joins).
 HINGE_FAMILIES = FOLD_FAMILIES + ("bend",)
-
-
-@dataclass(frozen=True)
-class HingeLaw:
-    """The law of a family of hinges.
-
-    Parameters
-    ----------
-    law : str
-        One of ``kresling.laws.SPRING_LAWS``: "enhanced_linear", "linear",
-        "super_linear_bend".
-    limits_deg : (float, float)
-        Limits of the enhanced-linear law's linear range [deg], 0 < theta1 < theta2 < 360.
-    stiffness : float, optional
-        Stiffness per unit length [N*mm/rad/mm] for every hinge of the family, replacing the
-        calibrated (or manual) one.
-    """
-
-    law: str = "enhanced_linear"
-    limits_deg: tuple = (45.0, 315.0)
-    stiffness: float | None = None
-
-    def __post_init__(self):
-        if self.law not in SPRING_LAWS:
-            raise ValueError(f"law = {self.law!r} is invalid: must be one of {sorted(SPRING_LAWS)}")
-        limits = tuple(float(x) for x in np.asarray(self.limits_deg, dtype=float).ravel())
-        if len(limits) != 2 or not 0.0 < limits[0] < limits[1] < 360.0:
-            raise ValueError(f"limits_deg = {list(self.limits_deg)!r} is invalid: must be two "
-                             "angles 0 < theta1 < theta2 < 360 [deg]")
-        object.__setattr__(self, "limits_deg", limits)
-        if self.stiffness is not None and not (np.isfinite(self.stiffness) and self.stiffness >= 0):
-            raise ValueError(f"stiffness = {self.stiffness!r} is invalid: must be a finite "
-                             "number >= 0")
-
-
-@dataclass(frozen=True)
-class CreaseLaws:
-    """Laws of the bars and of every hinge family.
-
-    Parameters
-    ----------
-    bar : {"ogden", "linear"}
-    fold : HingeLaw
-        Every fold family without an entry in ``families``. Default: enhanced-linear with
-        limits 45 and 315 deg (MERLIN2's).
-    bend : HingeLaw, optional
-        Bend hinges. Default: super-linear for a calibrated sheet, enhanced-linear 45/315
-        for manual properties (MERLIN2's defaults).
-    families : mapping of str to HingeLaw
-        Per fold family ("mountain", "valley", "flat", "unassigned", "join") overrides.
-    """
-
-    bar: str = "ogden"
-    fold: HingeLaw = HingeLaw()
-    bend: HingeLaw | None = None
-    families: dict = field(default_factory=dict)
-
-    def __post_init__(self):
-        if self.bar not in BAR_LAWS:
-            raise ValueError(f"bar = {self.bar!r} is invalid: must be one of {sorted(BAR_LAWS)}")
-        unknown = sorted(set(self.families) - set(FOLD_FAMILIES))
-        if unknown:
-            raise ValueError(f"families: {unknown[0]!r} is not a fold family: must be one of "
-                             f"{list(FOLD_FAMILIES)}")
-        object.__setattr__(self, "families", MappingProxyType(dict(self.families)))
-
-    def for_family(self, family: str, calibrated: bool) -> HingeLaw:
-        if family == "bend":
-            if self.bend is not None:
-                return self.bend
-            return HingeLaw("super_linear_bend") if calibrated else HingeLaw()
-        return self.families.get(family, self.fold)
 
 
 @dataclass(frozen=True)
@@ -125,9 +59,10 @@ class PatternModel:
     hinge_family : tuple of str, length H
         Family of each model hinge (:data:`HINGE_FAMILIES`).
     hinge_element : ndarray of int, shape (H,)
-        Index of each model hinge in ``elements.folds`` or ``elements.bends``.
+        Index of each model hinge in ``elements.folds`` (fold hinges, and bend hinges on
+        joins: see ``hinge_on_edge``) or ``elements.bends`` (bend hinges inside panels).
     bar_family : tuple of str, length B
-        "bend", "fold", "cut" or "boundary".
+        "bend", "fold", "cut" (a bar on a cut edge) or "boundary".
     stiffness : SheetStiffness or None
         The calibration, for a sheet material.
     """
@@ -138,6 +73,9 @@ class PatternModel:
     hinge_element: np.ndarray
     bar_family: tuple
     stiffness: SheetStiffness | None
+    #: True for each hinge on an edge between panels (fold hinges and joins), False for the
+    #: bend hinges inside panels.
+    hinge_on_edge: np.ndarray = None
 
     @property
     def num_vertices(self) -> int:
@@ -154,14 +92,18 @@ class PatternModel:
     def with_supports(self, fixed) -> "PatternModel":
         """The same model with supports ``fixed`` (bool, shape (N, 3), N with centres)."""
         return PatternModel(self.model.replace(fixed=fixed), self.elements, self.hinge_family,
-                            self.hinge_element, self.bar_family, self.stiffness)
+                            self.hinge_element, self.bar_family, self.stiffness,
+                            self.hinge_on_edge)
 
 
-def _per_element(name, value, count):
+def _per_element(name, value, count, needed=None):
+    """One value per element; ``needed`` elements (default all) make a missing one an
+    error."""
     if value is None:
-        if count:
-            raise ValueError(f"{name} is missing: the pattern has {count} such elements")
-        return np.zeros(0)
+        needed = count if needed is None else needed
+        if needed:
+            raise ValueError(f"{name} is missing: the pattern has {needed} such elements")
+        return np.zeros(count)
     array = np.asarray(value, dtype=float)
     if array.ndim == 0:
         array = np.full(count, float(array))
@@ -173,7 +115,7 @@ def _per_element(name, value, count):
 
 
 def _fold_assignments(pattern, elements: PanelElements):
-    """The FOLD assignment of each fold hinge's axis ("U" without assignments)."""
+    """The assignment of each fold element's axis ("U" without assignments)."""
     edges = getattr(pattern, "edges", None)
     assignment = getattr(pattern, "edges_assignment", None)
     lookup = {}
@@ -191,17 +133,97 @@ def _fold_assignments(pattern, elements: PanelElements):
     return out
 
 
+def _join_stiffness(elements, joins, material, calibrated):
+    """Bend stiffness [N*mm/rad per mm] of the hinges on join edges (indices into folds).
+
+    A join is a modelling edge across one effective panel, so it gets the panel's bending
+    stiffness: for a sheet, the bend formula of docs/model.md with the join as the
+    diagonal, D (L / t)^(1/3) / L (Filipov et al. 2017); with manual properties, the
+    bend_stiffness when it is one number.
+    """
+    if not joins:
+        return np.zeros(0)
+    nodes = elements.nodes
+    axes = elements.folds[joins][:, :2]
+    length = np.linalg.norm(nodes[axes[:, 0]] - nodes[axes[:, 1]], axis=1)
+    if calibrated:
+        t = material.thickness
+        return material.bending_rigidity * np.cbrt(length / t) / length
+    value = material.bend_stiffness
+    if value is None or np.ndim(value) != 0:
+        raise ValueError(f"bend_stiffness {'is missing' if value is None else 'is an array'}: "
+                         f"the pattern's {len(joins)} join (J) or facet edges carry bend "
+                         "hinges, so bend_stiffness must be one number (or set [laws] "
+                         "bend_stiffness)")
+    return np.full(len(joins), float(value))
+
+
+def _edge_hinges(kinds, assignments, elements, fold_k, join_k, laws, calibrated):
+    """Hinges on edges between panels: (hinge, family, element, stiffness, law, limits)."""
+    rows, joined = [], iter(join_k)
+    for index, (kind, letter) in enumerate(zip(kinds, assignments)):
+        if kind == "fold":
+            family = FAMILY_OF_FOLD[letter]
+            stiffness = fold_k[index]
+        elif kind == "bend":
+            family, stiffness = "bend", next(joined)
+        else:                                   # cut or free: a bar, no hinge
+            continue
+        rule = laws.for_family(family, calibrated)
+        rows.append((elements.folds[index], family, index,
+                     stiffness if rule.stiffness is None else rule.stiffness, rule.law,
+                     np.radians(rule.limits_deg)))
+    return rows
+
+
+def _material_values(material, elements, split, merlin2_compat, folds_needed):
+    """Bar areas, fold and bend stiffnesses, bar modulus and the calibration (or None);
+    ``folds_needed`` fold elements carry fold hinges."""
+    nb, nf = len(elements.bends), len(elements.folds)
+    if isinstance(material, SheetMaterial):
+        if split != "N5B8":
+            raise ValueError(f"split = {split!r} is invalid with a SheetMaterial: the sheet "
+                             "calibration needs 'N5B8' (use ManualProperties with 'N4B5')")
+        s = calibrate_sheet(elements, material, merlin2_compat=merlin2_compat)
+        return s.bar_area, s.fold_stiffness, s.bend_stiffness, material.youngs_modulus, s
+    if isinstance(material, ManualProperties):
+        bar_area = _per_element("bar_area", material.bar_area, len(elements.bars))
+        if not (bar_area > 0).all():
+            raise ValueError("bar_area has an entry <= 0: every bar needs an area > 0")
+        fold_k = _per_element("fold_stiffness", material.fold_stiffness, nf, folds_needed)
+        bend_k = _per_element("bend_stiffness", material.bend_stiffness, nb)
+        return bar_area, fold_k, bend_k, material.bar_modulus, None
+    raise ValueError(f"material = {material!r} is invalid: must be a SheetMaterial "
+                     "(auto calibration) or ManualProperties (manual)")
+
+
+def _vertices_and_panels(pattern):
+    if hasattr(pattern, "vertices") and hasattr(pattern, "faces"):
+        return pattern.vertices, pattern.faces
+    try:
+        vertices, panels = pattern
+    except (TypeError, ValueError):
+        raise ValueError("pattern must be a kresling.io.Pattern or a (vertices, panels) "
+                         "pair") from None
+    return vertices, panels
+
+
 def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", laws=None,
-                        fixed=None, merlin2_compat=False) -> PatternModel:
+                        fixed=None, merlin2_compat=False, assignments="fold") -> PatternModel:
     """Build the bar-and-hinge model of a crease pattern.
 
     Parameters
     ----------
     pattern : kresling.io.Pattern or (vertices, panels)
         Vertices (N, 3) [mm] and panels (vertex indices around each face). A Pattern's edge
-        assignments set the fold families; without them every fold is "unassigned".
+        assignments set the hinges (see ``assignments``); without them every fold is
+        "unassigned". A Pattern's cut (C) edges are separated first
+        (:func:`kresling.io.separate_cuts`: copies of vertices follow the vertices).
     material : SheetMaterial or ManualProperties
         "auto" calibration from the sheet (needs ``split="N5B8"``), or given properties.
+        Join (J) edges, and Origami Simulator's facet (F) edges, get bend hinges: with a
+        sheet, the bend formula with the edge as the panel's diagonal; with manual
+        properties, ``bend_stiffness`` (one number).
     split : {"N5B8", "N4B5"}
         See :func:`build_panel_elements`.
     centre : {"merlin2", "mean"}
@@ -215,6 +237,8 @@ def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", la
         with elements (see :func:`calibrate_sheet`) and its rest angles (computed with
         Octave's scaled 2-norm; they can differ from the exact ones by ~1e-8 rad, which
         the super-linear bend law's tangent feels).
+    assignments : {"fold", "origami_simulator"}
+        The convention of the letters (:mod:`kresling.model.crease_kinds`).
 
     Returns
     -------
@@ -223,67 +247,38 @@ def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", la
     Raises
     ------
     ValueError
-        For a bad pattern, material, law or array size; messages name the element.
+        For a bad pattern, material, law or array size (messages name the element), or
+        hinges folded flat at rest (:func:`~kresling.model.rest_angles.check_rest_angles`).
     """
-    if hasattr(pattern, "vertices") and hasattr(pattern, "faces"):
-        vertices, panels = pattern.vertices, pattern.faces
-    else:
-        try:
-            vertices, panels = pattern
-        except (TypeError, ValueError):
-            raise ValueError("pattern must be a kresling.io.Pattern or a (vertices, panels) "
-                             "pair") from None
+    if hasattr(pattern, "edges_assignment") and hasattr(pattern, "frames"):
+        pattern = separate_cuts(pattern)
+    vertices, panels = _vertices_and_panels(pattern)
     laws = CreaseLaws() if laws is None else laws
     if not isinstance(laws, CreaseLaws):
         raise ValueError(f"laws = {laws!r} is invalid: must be a CreaseLaws")
+    if assignments not in CONVENTIONS:
+        raise ValueError(f"assignments = {assignments!r} is invalid: must be one of "
+                         f"{list(CONVENTIONS)}")
     elements = build_panel_elements(vertices, panels, split=split, centre=centre)
-    assignments = _fold_assignments(pattern, elements)
-    nb, nf = len(elements.bends), len(elements.folds)
-
-    calibrated = isinstance(material, SheetMaterial)
-    stiffness = None
-    if calibrated:
-        if split != "N5B8":
-            raise ValueError(f"split = {split!r} is invalid with a SheetMaterial: the sheet "
-                             "calibration needs 'N5B8' (use ManualProperties with 'N4B5')")
-        stiffness = calibrate_sheet(elements, material, merlin2_compat=merlin2_compat)
-        bar_area, fold_k, bend_k = (stiffness.bar_area, stiffness.fold_stiffness,
-                                    stiffness.bend_stiffness)
-        bar_modulus = material.youngs_modulus
-    elif isinstance(material, ManualProperties):
-        bar_area = _per_element("bar_area", material.bar_area, len(elements.bars))
-        if not (bar_area > 0).all():
-            raise ValueError("bar_area has an entry <= 0: every bar needs an area > 0")
-        fold_k = _per_element("fold_stiffness", material.fold_stiffness, nf)
-        bend_k = _per_element("bend_stiffness", material.bend_stiffness, nb)
-        bar_modulus = material.bar_modulus
-    else:
-        raise ValueError(f"material = {material!r} is invalid: must be a SheetMaterial "
-                         "(auto calibration) or ManualProperties (manual)")
-
-    hinges, family, element, k, law, limits = [], [], [], [], [], []
-    for index, letter in enumerate(assignments):
-        if letter == "C":
-            continue
-        fam = FAMILY_OF_ASSIGNMENT[letter]
-        rule = laws.for_family(fam, calibrated)
-        hinges.append(elements.folds[index])
-        family.append(fam)
-        element.append(index)
-        k.append(fold_k[index] if rule.stiffness is None else rule.stiffness)
-        law.append(rule.law)
-        limits.append(np.radians(rule.limits_deg))
+    letters = _fold_assignments(pattern, elements)
+    kinds = [crease_kind(letter, assignments) for letter in letters]
+    bar_area, fold_k, bend_k, bar_modulus, stiffness = _material_values(
+        material, elements, split, merlin2_compat, kinds.count("fold"))
+    calibrated = stiffness is not None
+    joins = [k for k, kind in enumerate(kinds) if kind == "bend"]
+    join_k = _join_stiffness(elements, joins, material, calibrated)
+    rows = _edge_hinges(kinds, letters, elements, fold_k, join_k, laws, calibrated)
     bend_rule = laws.for_family("bend", calibrated)
-    for index in range(nb):
-        hinges.append(elements.bends[index])
-        family.append("bend")
-        element.append(index)
-        k.append(bend_k[index] if bend_rule.stiffness is None else bend_rule.stiffness)
-        law.append(bend_rule.law)
-        limits.append(np.radians(bend_rule.limits_deg))
-
-    bar_family = (["bend"] * nb + ["cut" if a == "C" else "fold" for a in assignments]
-                  + ["boundary"] * len(elements.boundary))
+    for index in range(len(elements.bends)):
+        rows.append((elements.bends[index], "bend", index,
+                     bend_k[index] if bend_rule.stiffness is None else bend_rule.stiffness,
+                     bend_rule.law, np.radians(bend_rule.limits_deg)))
+    on_edge = np.arange(len(rows)) < len(rows) - len(elements.bends)
+    hinges, family, element, k, law, limits = (list(column) for column in zip(*rows)) \
+        if rows else ([], [], [], [], [], [])
+    bar_family = (["bend"] * len(elements.bends)
+                  + ["cut" if a == "C" else "fold" for a in letters]
+                  + _boundary_families(pattern, elements))
     hinges = np.asarray(hinges, dtype=np.int64).reshape(-1, 4)
     # MERLIN2 computes rest angles with Octave's scaled 2-norm: a flat panel's can be
     # ~1e-8 rad off pi, which changes the super-linear bend tangent at rest (and so its
@@ -293,5 +288,18 @@ def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", la
                   bar_modulus=bar_modulus, bar_area=bar_area, bar_law=laws.bar,
                   hinge_stiffness=np.asarray(k, dtype=float), hinge_law=law,
                   hinge_limits=np.asarray(limits, dtype=float).reshape(-1, 2), fixed=fixed)
+    check_rest_angles(model.hinge_rest_angle, hinges, family,
+                      source=getattr(pattern, "source", "") or "pattern")
     return PatternModel(model, elements, tuple(family), np.asarray(element, dtype=np.int64),
-                        tuple(bar_family), stiffness)
+                        tuple(bar_family), stiffness, on_edge)
+
+
+def _boundary_families(pattern, elements) -> list:
+    """"cut" for a boundary bar on a cut edge (a side of a separated cut), else
+    "boundary"."""
+    cut = set()
+    if hasattr(pattern, "edges_assignment"):
+        cut = {(min(u, v), max(u, v)) for (u, v), a in
+               zip(np.asarray(pattern.edges).tolist(), pattern.edges_assignment) if a == "C"}
+    return ["cut" if (min(a, b), max(a, b)) in cut else "boundary"
+            for a, b in np.asarray(elements.boundary).reshape(-1, 2).tolist()]

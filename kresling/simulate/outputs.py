@@ -12,14 +12,16 @@ import numpy as np
 
 from kresling._validation import as_integer
 from kresling.io import write_fold
+from kresling.io.frame_angles import fold_angle_frames
 from kresling.model.pattern_model import FAMILY_OF_ASSIGNMENT
 
-__all__ = ["write_outputs", "path_fold_edges", "kept_rows", "view_title", "LARGE_OUTPUT"]
+__all__ = ["write_outputs", "path_fold_edges", "oriented_triangles", "kept_rows", "view_title",
+           "LARGE_OUTPUT"]
 
 logger = logging.getLogger(__name__)
 
 #: FOLD assignment of each model hinge family: the fold families' own letters, and "J" (a
-#: join within a face) for the bend hinges inside panels.
+#: join within a face) for the bend hinges, inside panels and on joins.
 _ASSIGNMENT = {family: letter for letter, family in FAMILY_OF_ASSIGNMENT.items()} | {"bend": "J"}
 
 
@@ -32,12 +34,40 @@ def _write_csv(path: Path, header, rows):
     tmp.replace(path)  # never a half-written file under the final name
 
 
+def oriented_triangles(elements) -> list:
+    """The model's triangles, each turned the way of its panel (counter-clockwise in the
+    pattern), as FOLD's faces_vertices: ``elements.triangles`` lists them sorted.
+
+    Returns
+    -------
+    list of tuple of int, length T
+    """
+    nodes = elements.nodes
+    centre_panel = {c: p for p, c in enumerate(elements.panel_centre.tolist()) if c >= 0}
+    panels_at = {}
+    normals = []
+    for p, panel in enumerate(elements.panels):
+        for v in panel:
+            panels_at.setdefault(v, set()).add(p)
+        corners = nodes[list(panel)]
+        normals.append(np.cross(corners, np.roll(corners, -1, axis=0)).sum(axis=0))
+    out = []
+    for a, b, c in elements.triangles.tolist():
+        centre = [v for v in (a, b, c) if v in centre_panel]
+        panel = (centre_panel[centre[0]] if centre
+                 else min(panels_at[a] & panels_at[b] & panels_at[c]))
+        turn = np.cross(nodes[b] - nodes[a], nodes[c] - nodes[a])
+        out.append((a, b, c) if np.dot(turn, normals[panel]) >= 0 else (a, c, b))
+    return out
+
+
 def path_fold_edges(pattern_model):
     """Edges of the model's triangles with their FOLD assignments.
 
-    Fold hinges keep their family's letter (M, V, F, U, J), a cut keeps "C", edges inside
-    panels (bend hinges) are "J" (FOLD 1.2: a join within a face), edges of one triangle
-    "B".
+    Fold hinges keep their family's letter (M, V, F, U), a cut keeps "C", bend hinges
+    (edges inside panels, and joins) are "J" (FOLD 1.2: a join within one face, which
+    reading the file back turns into bend hinges again), edges of one triangle "B"; a bar
+    without a hinge between two triangles (Origami Simulator's undriven crease) "U".
 
     Returns
     -------
@@ -89,8 +119,9 @@ def write_outputs(simulation, directory, *, view=True, every=None) -> dict:
       :meth:`Simulation.history_columns`);
     - ``displacements.csv``: one row per kept increment, the 3N displacements ``x0, y0, z0,
       x1, ...`` [mm] of every node (pattern vertices, then N5B8 centre nodes);
-    - ``path.fold``: the model's triangles with the reference state as key frame and one
-      frame per kept increment;
+    - ``path.fold``: the model's triangles (``faces_vertices``) with the reference state as
+      key frame and one frame per kept increment, ``edges_assignment`` in FOLD's letters and
+      ``edges_foldAngle`` [degrees, valley positive] in every frame, in mm;
     - ``summary.json``: sizes, outcome and message (of the whole run);
     - ``view.html``: an interactive view of the path, the curve of
       :func:`kresling.simulate.curve.path_curve` (when ``view`` and plotly is installed).
@@ -130,14 +161,16 @@ def write_outputs(simulation, directory, *, view=True, every=None) -> dict:
     _write_csv(written["displacements"], header, displacement.tolist())
 
     edges, assignment = path_fold_edges(simulation.pattern_model)
-    frames = model.nodes[None] + displacement.reshape(len(rows), model.num_nodes, 3)
+    frames = list(model.nodes[None] + displacement.reshape(len(rows), model.num_nodes, 3))
+    triangles = oriented_triangles(simulation.pattern_model.elements)
+    angles = fold_angle_frames(triangles, edges, [model.nodes] + frames)
     written["fold"] = directory / "path.fold"
-    write_fold(written["fold"], model.nodes, [tuple(t) for t in
-                                              simulation.pattern_model.elements.triangles],
-               edges=edges, edges_assignment=assignment, frames=frames,
+    write_fold(written["fold"], model.nodes, triangles, edges=edges, edges_assignment=assignment,
+               edges_fold_angle=angles[0], frames=frames, frame_fold_angles=list(angles[1:]),
                frame_title=f"{Path(simulation.problem.source).name}: reference state",
                metadata={"file_description": "equilibrium path computed by kresling simulate; "
-                                             "one frame per converged increment"})
+                                             "one frame per converged increment",
+                         "frame_unit": "mm"})
 
     written["summary"] = directory / "summary.json"
     written["summary"].write_text(json.dumps(simulation.summary(), indent=2) + "\n")

@@ -1,6 +1,6 @@
 """A simulation problem stated in a TOML file (or a dict of the same shape).
 
-The file names a crease pattern (FOLD or OBJ), how to build its model, its supports and
+The file names a crease pattern (FOLD, OBJ or SVG), how to build its model, its supports and
 loads, and the analysis; :func:`load_problem` reads and checks it. Every node index is
 0-based in the pattern file's vertex order; N5B8 centre nodes follow the vertices, in panel
 order. Bad input raises a ``ValueError`` naming the file, the table and key (with the line
@@ -20,16 +20,17 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
 
 from kresling import _core
 from kresling._validation import show
-from kresling.io import pattern_from_arrays, read_pattern
+from kresling.io import UNITS, mm_per_unit, pattern_from_arrays, read_pattern, separate_cuts
+from kresling.io.cuts import check_duplicate_vertices
 from kresling.model import CreaseLaws, HingeLaw, ManualProperties, SheetMaterial
-from kresling.model.pattern_model import FOLD_FAMILIES
+from kresling.model.pattern_model import CONVENTIONS, FOLD_FAMILIES
 from kresling.model.panel_elements import CENTRES, SPLITS
 from kresling.laws import BAR_LAWS, SPRING_LAWS
 from kresling.simulate.output_table import Output, read_output
@@ -46,6 +47,12 @@ INCREMENTS = ("fixed", "adaptive")
 #: extrapolation along the path (the previous equilibrium, then through 2, 3 or 4 of them).
 PREDICTORS = ("previous", "linear", "quadratic", "cubic")
 _AXES = {"x": 0, "y": 1, "z": 2}
+#: Newton's default tolerance on the correction's 2-norm, as a fraction of the model's size
+#: (the diagonal of the pattern's bounding box, in mm): 1e-6 mm on a 100 mm pattern, the
+#: same number of digits at any scale. An explicit ``tolerance`` [mm] replaces it.
+RELATIVE_TOLERANCE = 1e-8
+#: MERLIN2's own Newton tolerance [mm], the default under merlin2_compat.
+MERLIN2_TOLERANCE = 1e-6
 
 
 @dataclass(frozen=True)
@@ -119,6 +126,8 @@ class Problem:
         Where the problem came from (the file, or "problem" for a dict).
     centre : str
         N5B8 centre nodes: "merlin2" (its rules) or "mean" (of the corners).
+    assignments : str
+        The convention of the pattern's edge assignments: "fold" or "origami_simulator".
     """
 
     pattern: object
@@ -137,6 +146,8 @@ class Problem:
     actuations: tuple = ()
     #: Zero-length springs to fixed points (``[[spring]]``): Spring entries.
     springs: tuple = ()
+    #: How FOLD assignments become hinges: "fold" (the spec) or "origami_simulator".
+    assignments: str = "fold"
 
 
 class _Table:
@@ -338,27 +349,61 @@ def _read_pattern(t, base, compat):
     split = t.get("split", _string, "N5B8", choices=tuple(SPLITS))
     centre = t.get("centre", _string, "merlin2", choices=tuple(CENTRES))
     tolerance = t.get("planarity_tolerance", _positive, 1e-3)
+    unit = t.get("unit", _string, None, choices=tuple(UNITS))
+    scale = t.get("scale", _positive, None)
+    if scale is not None and unit != "unit":
+        t.fail("scale", f"= {scale!r} applies only with unit = \"unit\" (mm per unit of a "
+                        "pattern without a physical unit)")
+    frame = t.get("frame", _integer, 0)
+    convention = "fold"
     if t.has("file"):
         name = t.get("file", _string)
         path = Path(name) if Path(name).is_absolute() else base / name
         if not path.is_file():
             t.fail("file", f"= {name!r}: no such file ({path})")
-        pattern = read_pattern(path, planarity_tolerance=tolerance)
+        if frame < 0:
+            t.fail("frame", f"= {frame} is invalid: must be >= 0 (0 is the key frame)")
+        if frame and path.suffix.lower() != ".fold":
+            t.fail("frame", f"= {frame} applies only to FOLD files: {name!r} has no frames")
+        convention = "origami_simulator" if path.suffix.lower() == ".svg" else "fold"
+        pattern = read_pattern(path, planarity_tolerance=tolerance, unit=unit, scale=scale,
+                               frame=frame)
     elif t.has("vertices"):
-        vertices = t.get("vertices", lambda t_, k, v, a: v)
-        panels = t.get("panels", _panels, required=True,
-                       allowed="a list of panels (lists of vertex indices)")
-        try:
-            pattern = pattern_from_arrays(np.asarray(vertices, dtype=float), panels,
-                                          planarity_tolerance=tolerance)
-        except (TypeError, ValueError, OverflowError) as error:
-            # The pattern calls the panels "faces": name the problem's key.
-            t.fail("panels" if str(error).startswith("faces") else "vertices",
-                   f"does not describe a pattern: {error}")
+        if t.has("frame"):
+            t.fail("frame", "applies only to a pattern file (FOLD frames)")
+        pattern = _inline_pattern(t, tolerance, unit, scale)
     else:
-        t.fail(None, "needs 'file' (a .fold or .obj file) or 'vertices' and 'panels'")
+        t.fail(None, "needs 'file' (a .fold, .obj or .svg file) or 'vertices' and 'panels'")
+    convention = t.get("assignments", _string, convention, choices=CONVENTIONS)
     t.finish()
-    return pattern, split, centre
+    return separate_cuts(pattern), split, centre, convention
+
+
+def _inline_pattern(t, tolerance, unit, scale):
+    vertices = t.get("vertices", lambda t_, k, v, a: v)
+    panels = t.get("panels", _panels, required=True,
+                   allowed="a list of panels (lists of vertex indices)")
+    factor = mm_per_unit(unit or "mm", scale)
+    try:
+        pattern = pattern_from_arrays(np.asarray(vertices, dtype=float) * factor, panels,
+                                      planarity_tolerance=tolerance)
+        check_duplicate_vertices(pattern.vertices, pattern.faces, pattern.edges,
+                                 pattern.edges_assignment, ValueError)
+    except (TypeError, ValueError, OverflowError) as error:
+        # The pattern calls the panels "faces": name the problem's key.
+        t.fail("panels" if str(error).startswith("faces") else "vertices",
+               f"does not describe a pattern: {error}")
+    return pattern
+
+
+def default_tolerance(pattern, compat: bool) -> float:
+    """Newton's tolerance [mm] when the problem gives none: MERLIN2's 1e-6 mm under
+    merlin2_compat, else :data:`RELATIVE_TOLERANCE` times the pattern's size (the
+    diagonal of its bounding box [mm])."""
+    if compat:
+        return MERLIN2_TOLERANCE
+    size = float(np.linalg.norm(np.ptp(pattern.vertices, axis=0)))
+    return RELATIVE_TOLERANCE * size if size > 0 else MERLIN2_TOLERANCE
 
 
 def _read_material(t):
@@ -410,7 +455,7 @@ def _read_laws(t, calibration_auto):
 def _read_analysis(t, num_nodes):
     method = t.get("method", _string, required=True, choices=METHODS)
     settings = {"method": method,
-                "tolerance": t.get("tolerance", _positive, 1e-6),
+                "tolerance": t.get("tolerance", _positive, None),
                 "max_iterations": t.get("max_iterations", _count, 50)}
     if method in ("displacement_control", "force_control", "fold"):
         settings["steps"] = t.get("steps", _count, required=True,
@@ -552,7 +597,7 @@ def load_problem(problem) -> Problem:
     t_material = _Table(root.get("material", lambda t, k, v, a: v, required=True,
                                  allowed="a table with the calibration"), "material", source, text)
     material, compat = _read_material(t_material)
-    pattern, split, centre = _read_pattern(t_pattern, base, compat)
+    pattern, split, centre, convention = _read_pattern(t_pattern, base, compat)
     laws = _read_laws(_Table(root.get("laws", lambda t, k, v, a: v, {}), "laws", source, text),
                       isinstance(material, SheetMaterial))
     count = node_count(pattern, split)
@@ -572,8 +617,10 @@ def load_problem(problem) -> Problem:
     springs = read_springs(root.get("spring", _array_of_tables, []),
                            lambda entry, i: _Table(entry, "spring", source, text, occurrence=i),
                            _number, lambda t: _node_list(t, count), _vector3)
+    if analysis.tolerance is None:
+        analysis = replace(analysis, tolerance=default_tolerance(pattern, compat))
     root.finish()
     result = Problem(pattern, split, material, compat, laws, supports, loads, analysis, source,
-                     centre, output, actuations, springs)
+                     centre, output, actuations, springs, convention)
     _check_consistency(result, t_analysis)
     return result

@@ -201,7 +201,8 @@ def build_problem_model(problem) -> PatternModel:
     try:
         pm = build_pattern_model(problem.pattern, material=problem.material,
                                  split=problem.split, centre=problem.centre, laws=problem.laws,
-                                 fixed=fixed, merlin2_compat=problem.merlin2_compat)
+                                 fixed=fixed, merlin2_compat=problem.merlin2_compat,
+                                 assignments=problem.assignments)
     except ValueError as error:  # a value the model cannot take: name the problem's key
         raise ValueError(f"{problem.source}: {_where(str(error))}: {error}") from None
     if not problem.springs:

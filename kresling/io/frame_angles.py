@@ -1,0 +1,54 @@
+"""Fold angles of every edge of a mesh in many configurations at once (a path's frames)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["fold_angle_frames"]
+
+
+def fold_angle_frames(faces, edges, frames) -> np.ndarray:
+    """Signed fold angle [degrees] of every edge in every frame, as FOLD's edges_foldAngle.
+
+    The same angle as :func:`kresling.io.fold_angles` (pi minus the dihedral angle,
+    positive for a valley, 0 for an edge of one face), computed for all frames together.
+
+    Parameters
+    ----------
+    faces : sequence of sequence of int
+        Planar faces, counter-clockwise in the flat pattern.
+    edges : array_like of int, shape (E, 2)
+    frames : array_like, shape (K, V, 3)
+        Positions [mm] in each frame.
+
+    Returns
+    -------
+    ndarray, shape (K, E)
+        Degrees in [-180, 180].
+    """
+    frames = np.asarray(frames, dtype=float).reshape(-1, *np.shape(frames)[-2:])
+    edges = np.asarray(edges, dtype=np.int64).reshape(-1, 2)
+    left_of = {}
+    for index, face in enumerate(faces):
+        for u, v in zip(face, list(face[1:]) + [face[0]]):
+            left_of[(int(u), int(v))] = index
+    pairs = [(left_of.get((u, v)), left_of.get((v, u))) for u, v in edges.tolist()]
+    inner = np.array([a is not None and b is not None for a, b in pairs], dtype=bool)
+    left = np.array([a for (a, b), ok in zip(pairs, inner) if ok], dtype=np.int64)
+    right = np.array([b for (a, b), ok in zip(pairs, inner) if ok], dtype=np.int64)
+    normals = np.zeros((len(frames), len(faces), 3))
+    by_size = {}
+    for index, face in enumerate(faces):
+        by_size.setdefault(len(face), []).append(index)
+    for indices in by_size.values():
+        corners = frames[:, np.array([faces[i] for i in indices])]        # (K, F, k, 3)
+        # Newell's normal: exact for planar faces, robust for any corner order.
+        normals[:, indices] = np.cross(corners, np.roll(corners, -1, axis=2)).sum(axis=2)
+    normals /= np.linalg.norm(normals, axis=-1, keepdims=True)
+    axis = frames[:, edges[inner, 1]] - frames[:, edges[inner, 0]]
+    axis /= np.linalg.norm(axis, axis=-1, keepdims=True)
+    n_left, n_right = normals[:, left], normals[:, right]
+    angles = np.zeros((len(frames), len(edges)))
+    angles[:, inner] = np.arctan2(np.einsum("kej,kej->ke", np.cross(n_right, n_left), axis),
+                                  np.einsum("kej,kej->ke", n_left, n_right))
+    return np.degrees(angles)
