@@ -129,3 +129,16 @@ def test_an_edge_that_is_no_crease_is_named(tmp_path):
     data = _miura_problem(path, pattern, [{"edges": [boundary], "fold_angle_deg": 10.0}])
     with pytest.raises(ValueError, match="is not a crease"):
         simulate(data, progress=False)
+
+
+def test_the_folds_view_plots_the_energy_against_the_fold_percent(tmp_path):
+    from kresling.simulate.curve import path_curve
+
+    sim = simulate(EXAMPLES / "fold_vertex" / "problem.toml", progress=False)
+    columns = sim.history_columns()
+    x, y, x_label, y_label = path_curve(sim, columns)
+    assert x_label == "fold [%]" and y_label.startswith("energy_total")
+    np.testing.assert_allclose(x, 100 * np.arange(1, 41) / 40, atol=1e-12)
+    np.testing.assert_array_equal(y, columns["energy_total"])
+    written = sim.write(tmp_path)
+    assert "fold [%]" in written["view"].read_text(encoding="utf-8")

@@ -5,7 +5,9 @@ displacement (one driven DOF: its ``reaction_<node>_<axis>`` column of history.c
 its displacement; several: the sum of their reactions weighted by their share of the
 motion, the force that does the drive's work over the driven displacement of the largest
 component); under force control and MGDCM, the load factor against the monitored
-displacement (``[analysis.stop]``), else against the displacement that grows largest.
+displacement (``[analysis.stop]``), else against the displacement that grows largest; a
+fold (``method = "fold"``), the stored energy against the fold's progress in per cent (100
+per stage).
 ``[output] curve = { x = "...", y = "..." }`` names any two quantities instead: a column of
 history.csv (``step``, ``load_factor``, ``reaction_<node>_<axis>``, ``energy_bars``, ...,
 ``iterations``) or ``u_<node>_<axis>``, the displacement of any node [mm].
@@ -85,6 +87,10 @@ def path_curve(simulation, columns) -> tuple:
     analysis = simulation.problem.analysis
     if analysis.method == "displacement_control":
         return _drive(simulation)
+    if analysis.method == "fold":  # load_factor runs over (k - 1, k] in stage k
+        return (100.0 * np.asarray(simulation.path.load_factor, dtype=float),
+                np.asarray(columns["energy_total"], dtype=float), "fold [%]",
+                "energy_total [N*mm]")
     load_factor = np.asarray(simulation.path.load_factor, dtype=float)
     stop = analysis.stop
     if stop is not None:
