@@ -3,6 +3,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <functional>
 #include <memory>
 
 #include "bindings.hpp"
@@ -12,6 +13,7 @@
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/linear_stiffness.hpp"
 #include "kresling/solvers/tangent_solver.hpp"
+#include "kresling/solvers/time_integration.hpp"
 
 namespace py = pybind11;
 using kresling::model::Model;
@@ -208,6 +210,60 @@ void bind_solvers(py::module_& m) {
       py::arg("model"), py::arg("stages"), py::arg("steps"), py::arg("forces"),
       py::arg("options"), py::arg("initial"),
       "Fold by crease actuation: stages of (hinge indices, target rest angles [rad])");
+
+  bind_path_options<TimeIntegrationOptions>(m, "TimeIntegrationOptions")
+      .def_readwrite("time_step", &TimeIntegrationOptions::time_step)
+      .def_readwrite("duration", &TimeIntegrationOptions::duration)
+      .def_readwrite("hht_alpha", &TimeIntegrationOptions::hht_alpha)
+      .def_readwrite("mass_damping", &TimeIntegrationOptions::mass_damping)
+      .def_readwrite("stiffness_damping", &TimeIntegrationOptions::stiffness_damping)
+      .def_readwrite("max_halvings", &TimeIntegrationOptions::max_halvings);
+  py::class_<TimeHistory>(m, "TimeHistory")
+      .def_readonly("path", &TimeHistory::path)
+      .def_property_readonly("velocity", [](const TimeHistory& h) {
+        const Index n = h.velocity.empty() ? 0 : h.velocity.front().size();
+        RowMatrix out(static_cast<Index>(h.velocity.size()), n);
+        for (std::size_t k = 0; k < h.velocity.size(); ++k) out.row(static_cast<Index>(k)) = h.velocity[k].transpose();
+        return out;
+      })
+      .def_readonly("kinetic", &TimeHistory::kinetic)
+      .def_readonly("strain", &TimeHistory::strain)
+      .def_readonly("dissipated", &TimeHistory::dissipated)
+      .def_readonly("work", &TimeHistory::work);
+
+  m.def(
+      "integrate_newmark",
+      [](const Model& model, const VectorX& masses, const VectorX& forces, const VectorX& times,
+         const VectorX& factors, const TimeIntegrationOptions& options, const VectorX& u0,
+         const VectorX& v0) {
+        if (times.size() != factors.size()) {
+          throw std::invalid_argument("load table: needs one factor per time");
+        }
+        // The load's time function: piecewise linear through the table, constant beyond its
+        // ends (no table: 1).
+        std::function<double(double)> factor;
+        if (times.size()) {
+          factor = [times, factors](double t) {
+            if (t <= times[0]) return factors[0];
+            for (Index i = 1; i < times.size(); ++i) {
+              if (t <= times[i]) {
+                const double s = (t - times[i - 1]) / (times[i] - times[i - 1]);
+                return factors[i - 1] + s * (factors[i] - factors[i - 1]);
+              }
+            }
+            return factors[times.size() - 1];
+          };
+        }
+        TimeHistory h;
+        {
+          py::gil_scoped_release release;
+          h = integrate_newmark(model, masses, forces, factor, options, u0, v0);
+        }
+        return h;
+      },
+      py::arg("model"), py::arg("masses"), py::arg("forces"), py::arg("times"),
+      py::arg("factors"), py::arg("options"), py::arg("u0"), py::arg("v0"),
+      "Newmark / HHT-alpha time integration; the load's factor piecewise linear in time");
 
   m.def(
       "condensed_stiffness",

@@ -162,6 +162,16 @@ void Workspace::scale_matrix(double factor) {
   for (Index i = 0; i < matrix_.nonZeros(); ++i) values[i] *= factor;
 }
 
+void Workspace::add_matrix_values(const std::vector<double>& values, double factor) {
+  if (static_cast<Index>(values.size()) != matrix_.nonZeros()) {
+    throw std::invalid_argument("values: has " + std::to_string(values.size()) +
+                                " entries, the tangent stores " +
+                                std::to_string(matrix_.nonZeros()));
+  }
+  double* v = matrix_.valuePtr();
+  for (std::size_t i = 0; i < values.size(); ++i) v[i] += factor * values[i];
+}
+
 Energies assemble(const model::Model& model, Workspace& workspace, const VectorX& u,
                   VectorX& force, bool with_matrix) {
   workspace.require_fits(model);

@@ -103,6 +103,9 @@ class Workspace {
   void add_to_diagonal(const VectorX& d);
   /// Multiply the last assembled tangent's values by `factor` (the diagonal shift included).
   void scale_matrix(double factor);
+  /// Add `factor` times `values` (a copy of matrix()'s value array, of the same pattern) to
+  /// the last assembled tangent: a constant matrix of this pattern (an initial stiffness).
+  void add_matrix_values(const std::vector<double>& values, double factor);
 
  private:
   friend Energies assemble_unchecked(const model::Model& model, Workspace& workspace,

@@ -1,0 +1,56 @@
+#pragma once
+/// \file time_integration.hpp
+/// Implicit time integration of M a + C v + f_int(u) = f(t): Newmark's average
+/// acceleration (the trapezoidal rule) and its HHT-alpha generalisation, each step a Newton
+/// solve of the model with the inertia and damping terms added (newton.hpp's ExtraTerms),
+/// the step halved on failure and grown back. Units: mm, N, s, so masses in tonnes.
+///
+/// HHT-alpha (Hilber, Hughes and Taylor), alpha in [-1/3, 0]: beta = (1 - alpha)^2 / 4,
+/// gamma = 1/2 - alpha, and the equation of motion balanced at t_n + (1 + alpha) dt,
+///     M a_{n+1} + (1 + alpha) (C v_{n+1} + f_int(u_{n+1})) - alpha (C v_n + f_int(u_n))
+///         = (1 + alpha) f(t_{n+1}) - alpha f(t_n);
+/// alpha = 0 is the average acceleration scheme (beta = 1/4, gamma = 1/2): unconditionally
+/// stable, no numerical damping, energy conserving for linear models, its period
+/// lengthened as tan(w_h dt / 2) = w dt / 2. alpha < 0 damps the highest modes.
+/// Rayleigh damping C = alpha_m M + beta_k K0, K0 the tangent at the start (an initial-
+/// stiffness Rayleigh damping: constant, so the dissipation is a quadratic form).
+
+#include <functional>
+#include <vector>
+
+#include "kresling/model/model.hpp"
+#include "kresling/solvers/path.hpp"
+
+namespace kresling::solvers {
+
+struct TimeIntegrationOptions {
+  NewtonOptions newton;
+  double time_step = 1e-4;   ///< dt [s]
+  double duration = 0.1;     ///< [s]
+  double hht_alpha = 0.0;    ///< in [-1/3, 0]; 0: average acceleration (Newmark)
+  double mass_damping = 0.0;       ///< Rayleigh alpha [1/s]
+  double stiffness_damping = 0.0;  ///< Rayleigh beta [s]
+  int max_halvings = 10;     ///< a failed step is halved up to this many times
+  double shift = 0.0;        ///< diagonal shift of the effective tangent (the mass term
+                             ///< makes it definite; 0 keeps the equations exact)
+  StopRule stop;
+};
+
+struct TimeHistory {
+  PathResult path;               ///< load_factor: the time [s]; displacement per step
+  std::vector<VectorX> velocity;  ///< per step [mm/s]
+  std::vector<double> kinetic;    ///< 1/2 v^T M v per step [N mm]
+  std::vector<double> strain;     ///< the model's stored energy per step [N mm]
+  std::vector<double> dissipated; ///< damping's dissipated energy up to each step [N mm]
+  std::vector<double> work;       ///< the loads' work up to each step [N mm]
+};
+
+/// Integrate from (u0, v0) (empty: zero) under the load `forces` (one entry per DOF, [N])
+/// times `load_factor(t)` (empty: 1), with lumped masses `masses` (one per DOF [t], > 0 at
+/// every free DOF). Throws std::invalid_argument for bad input.
+TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
+                              const VectorX& forces, const std::function<double(double)>& load_factor,
+                              const TimeIntegrationOptions& options, const VectorX& u0 = VectorX(),
+                              const VectorX& v0 = VectorX());
+
+}  // namespace kresling::solvers
