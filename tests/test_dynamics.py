@@ -63,3 +63,12 @@ def test_a_ramp_table_and_bad_input():
         solve_dynamics(_oscillator(), [1e-3], 1e-3, 0.01, hht_alpha=-0.5)
     with pytest.raises(ValueError, match="load_table"):
         solve_dynamics(_oscillator(), [1e-3], 1e-3, 0.01, load_table=[[1.0, 0.0], [0.5, 1.0]])
+
+
+def test_gravity_is_the_masses_times_g_and_the_sag_is_m_g_over_k():
+    k, m = 4.0, 1e-3
+    h = solve_dynamics(_oscillator(k), [m], 1e-3, 1.0, gravity=(0.0, 0.0, -9810.0),
+                       mass_damping=50.0, tolerance=1e-12)
+    assert h.completed
+    assert h.path.displacement[-1, 2] == pytest.approx(-m * 9810.0 / k, rel=1e-9)
+    np.testing.assert_allclose(h.path.displacement[-1, :2], 0.0, atol=1e-15)

@@ -54,7 +54,8 @@ class TimeHistory:
         return self.path.completed
 
 
-def solve_dynamics(model, masses, time_step, duration, *, forces=None, load_table=None,
+def solve_dynamics(model, masses, time_step, duration, *, forces=None, gravity=None,
+                   load_table=None,
                    hht_alpha=0.0, mass_damping=0.0, stiffness_damping=0.0, tolerance=1e-6,
                    max_iterations=50, max_halvings=10, initial=None, initial_velocity=None,
                    stop=None, cholesky="auto") -> TimeHistory:
@@ -69,6 +70,9 @@ def solve_dynamics(model, masses, time_step, duration, *, forces=None, load_tabl
         The step and the time to integrate over [s].
     forces : array_like, shape (3N,) or (N, 3), optional
         The load [N] (gravity: the masses times g, e.g. -9810 mm/s^2 along z).
+    gravity : array_like, shape (3,), optional
+        A body load: the acceleration of gravity [mm/s^2] (e.g. ``(0, 0, -9810)``), added
+        to ``forces`` as every DOF's mass times it, and scaled with them by the table.
     load_table : array_like, shape (K, 2), optional
         ``[t, factor]`` rows: the load's factor, piecewise linear in t and constant beyond
         the table's ends (a step: ``[[0, 1]]``; a ramp: ``[[0, 0], [T, 1]]``). Default: 1.
@@ -111,6 +115,11 @@ def solve_dynamics(model, masses, time_step, duration, *, forces=None, load_tabl
         raise ValueError(f"stop = {stop!r} is invalid: must be None or a callable")
     o.stop = stop
     load = np.zeros(model.num_dofs) if forces is None else dof_vector(model, "forces", forces)
+    if gravity is not None:
+        g = as_float_array("gravity", gravity).ravel()
+        if g.shape != (3,) or not np.isfinite(g).all():
+            raise ValueError(f"gravity has shape {g.shape}: must be 3 finite numbers [mm/s^2]")
+        load = load + masses * np.tile(g, model.num_nodes)
     core = _core.solvers.integrate_newmark(
         model._core, np.ascontiguousarray(masses), load, np.ascontiguousarray(table[:, 0]),
         np.ascontiguousarray(table[:, 1]), o,
