@@ -38,6 +38,16 @@ BASES = [
      "load": [{"node": 5, "force": [0.0, 0.0, 0.001]}],
      "analysis": {"method": "force_control", "steps": 2, "max_load_factor": 1.0,
                   "stop": {"node": 5, "axis": "z", "beyond": 1.0}}},
+    # Crease actuation in two stages, with elastic supports and a load that ramps.
+    {"pattern": dict(SHEET),
+     "material": {"calibration": "manual", "bar_modulus": 1e3, "bar_area": 1.0,
+                  "fold_stiffness": 0.1, "bend_stiffness": 1.0},
+     "support": [{"nodes": [0, 3], "fix": "xyz"}, {"node": 1, "fix": "z"}],
+     "spring": [{"nodes": [2, 5], "stiffness": [0.0, 0.0, 0.01]}],
+     "load": [{"node": 5, "force": [0.0, 0.0, 0.001]}],
+     "actuation": [{"edges": [[1, 4]], "fold_angle_deg": 30.0},
+                   {"family": "fold", "fold_angle_deg": -10.0, "stage": 2}],
+     "analysis": {"method": "fold", "steps": 2, "predictor": "linear"}},
 ]
 KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices", "panels",
         "split", "file", "planarity_tolerance", "calibration", "E", "nu", "thickness",
@@ -46,13 +56,16 @@ KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices"
         "node", "nodes", "fix", "force", "displacement", "method", "steps", "tolerance",
         "max_iterations", "initial_load_factor", "max_increments", "max_load_factor", "stop",
         "axis", "beyond", "law", "limits_deg", "stiffness", "output", "every", "curve", "x",
-        "y", "unknown_key"]
+        "y", "spring", "anchor", "actuation", "edges", "family", "fold_angle_deg", "stage",
+        "predictor", "unknown_key"]
 values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_001, 10**6]),
                    st.sampled_from(
     ["xyz", "z", "w", "N5B8", "N4B5", "auto", "manual", "linear", "mgdcm", "force_control",
      "displacement_control", [0.0, 0.0, 1.0], [1e308, 0, 0], [0, 0, float("nan")], [0, 99],
      [[0, 1, 2]], [-1], {"node": 0, "fix": "xyz"}, [{"node": 7, "fix": "x"}], "u_2_z",
-     "reaction_5_z", "energy_total", {"x": "step", "y": "load_factor"}, {"x": "u_9_q"}]))
+     "reaction_5_z", "energy_total", {"x": "step", "y": "load_factor"}, {"x": "u_9_q"},
+     "fold", "file", "valley", "join", [[1, 4]], [[1, 1]], [[0, 99]], [1e300, 0, 0],
+     [{"family": "fold", "fold_angle_deg": 180.0}], [{"node": 2, "stiffness": -1.0}]]))
 
 
 def mutate(problem, edits):
@@ -115,7 +128,7 @@ def test_load_problem_from_dicts(base, edits):
     except ValueError as error:
         named_key(error)
         return
-    assert loaded.analysis.method in ("displacement_control", "force_control", "mgdcm")
+    assert loaded.analysis.method in ("displacement_control", "force_control", "mgdcm", "fold")
 
 
 @fuzz(40)
