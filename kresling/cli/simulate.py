@@ -57,7 +57,10 @@ def run(args) -> int:
         rows = [(key, "" if summary[key] is None else summary[key])
                 for key in ("method", "stepping", "nodes", "bars", "hinges", "supported_dofs",
                             "increments", "newton_iterations", "attempted_increments",
-                            "attempted_newton_iterations", "final_load_factor", "completed")]
+                            "attempted_newton_iterations", "final_load_factor", "completed")
+                if key in summary]   # (a modes run has no path: no increments)
+        rows += [(f"mode {j + 1} [Hz]", f"{f:.6g}")
+                 for j, f in enumerate(summary.get("frequencies_hz", []))]
         for key, value in summary.get("fold", {}).items():
             if key != "worst":
                 rows.append((f"fold: {key.replace('_', ' ')}", value))

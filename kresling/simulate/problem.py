@@ -36,11 +36,14 @@ from kresling.laws import BAR_LAWS, SPRING_LAWS
 from kresling.simulate.output_table import Output, read_output
 from kresling.simulate.problem_actuation import read_actuations, read_springs
 from kresling.simulate.problem_file import read_toml
+from kresling.simulate.problem_mass import SheetMass, read_masses, read_sheet_mass
 
 __all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_problem", "METHODS"]
 
 #: Analysis methods and what each needs.
-METHODS = ("displacement_control", "force_control", "mgdcm", "fold")
+METHODS = ("displacement_control", "force_control", "mgdcm", "fold", "modes")
+#: The states vibration modes (``method = "modes"``) are computed about.
+ABOUT = ("rest",)
 #: How displacement control steps between its samples.
 INCREMENTS = ("fixed", "adaptive")
 #: Displacement control with fixed increments: each Newton solve's start, by the order of its
@@ -105,6 +108,9 @@ class Analysis:
     #: path through the last equilibria; a start other than "previous" uses bisection, not
     #: MERLIN2's step control, under merlin2_compat).
     predictor: str = "previous"
+    #: ``method = "modes"``: how many of the lowest modes, about which state (ABOUT).
+    modes: int = 10
+    about: str = "rest"
 
 
 @dataclass(frozen=True)
@@ -148,6 +154,10 @@ class Problem:
     springs: tuple = ()
     #: How FOLD assignments become hinges: "fold" (the spec) or "origami_simulator".
     assignments: str = "fold"
+    #: ``[material] density`` and the sheet's thickness (the sheet's mass).
+    sheet_mass: SheetMass = SheetMass()
+    #: Explicit node masses (``[[mass]]``): NodeMass entries.
+    masses: tuple = ()
 
 
 class _Table:
@@ -425,8 +435,9 @@ def _read_material(t):
                            allowed="the bars' area [mm^2] (a number or one per bar)"),
             fold_stiffness=t.get("fold_stiffness", _stiffnesses, None),
             bend_stiffness=t.get("bend_stiffness", _stiffnesses, None))
+    sheet_mass = read_sheet_mass(t, material, _quantity)
     t.finish()
-    return material, compat
+    return material, compat, sheet_mass
 
 
 def _read_laws(t, calibration_auto):
@@ -470,6 +481,11 @@ def _read_analysis(t, num_nodes):
         settings["predictor"] = t.get("predictor", _string, "previous", choices=PREDICTORS)
     elif method == "fold":
         settings["predictor"] = t.get("predictor", _string, "previous", choices=PREDICTORS)
+    elif method == "modes":
+        settings["modes"] = t.get("modes", _count, 10)
+        settings["about"] = t.get("about", _string, "rest", choices=ABOUT)
+        t.finish()
+        return Analysis(**settings)
     else:
         settings["initial_load_factor"] = t.get("initial_load_factor", _number, 0.01)
         if settings["initial_load_factor"] == 0:
@@ -533,6 +549,9 @@ def _check_consistency(problem, t_analysis):
                              "drives the creases it names")
         raise ValueError(f"{problem.source}: [[actuation]] drives creases only with "
                          f"[analysis] method = 'fold' (given: {method!r})")
+    if method == "modes":
+        _check_modes(problem, t_analysis)
+        return
     if method == "fold":
         if kinds - {"force"}:
             t_analysis.fail("method", "= 'fold' takes force loads only (they ramp with the "
@@ -558,6 +577,15 @@ def _check_consistency(problem, t_analysis):
                     raise ValueError(f"{problem.source}: load[{i}] drives node {node} along "
                                      f"{axis}, which a [[support]] fixes: a DOF is either "
                                      "supported or driven")
+
+
+def _check_modes(problem, t_analysis):
+    if problem.loads:
+        t_analysis.fail("about", "= 'rest': the modes are about the rest state, so a [[load]] "
+                                 "would have no effect; remove it")
+    if problem.sheet_mass.density is None and not problem.masses:
+        t_analysis.fail("method", "= 'modes' needs masses: [material] density [t/mm^3] (with "
+                                  "the sheet's thickness) or [[mass]] entries")
 
 
 def load_problem(problem) -> Problem:
@@ -596,7 +624,7 @@ def load_problem(problem) -> Problem:
                        "pattern", source, text)
     t_material = _Table(root.get("material", lambda t, k, v, a: v, required=True,
                                  allowed="a table with the calibration"), "material", source, text)
-    material, compat = _read_material(t_material)
+    material, compat, sheet_mass = _read_material(t_material)
     pattern, split, centre, convention = _read_pattern(t_pattern, base, compat)
     laws = _read_laws(_Table(root.get("laws", lambda t, k, v, a: v, {}), "laws", source, text),
                       isinstance(material, SheetMaterial))
@@ -617,10 +645,13 @@ def load_problem(problem) -> Problem:
     springs = read_springs(root.get("spring", _array_of_tables, []),
                            lambda entry, i: _Table(entry, "spring", source, text, occurrence=i),
                            _number, lambda t: _node_list(t, count), _vector3)
+    masses = read_masses(root.get("mass", _array_of_tables, []),
+                         lambda entry, i: _Table(entry, "mass", source, text, occurrence=i),
+                         _number, lambda t: _node_list(t, count))
     if analysis.tolerance is None:
         analysis = replace(analysis, tolerance=default_tolerance(pattern, compat))
     root.finish()
     result = Problem(pattern, split, material, compat, laws, supports, loads, analysis, source,
-                     centre, output, actuations, springs, convention)
+                     centre, output, actuations, springs, convention, sheet_mass, masses)
     _check_consistency(result, t_analysis)
     return result

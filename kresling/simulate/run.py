@@ -14,6 +14,7 @@ from kresling.model import PatternModel, build_pattern_model
 from kresling.model.fold_angles import fold_angles_deg
 from kresling.simulate.actuation import FoldPlan, fold_plan
 from kresling.simulate.element_histories import ElementHistories, element_histories
+from kresling.simulate.modes_output import run_modes
 from kresling.simulate.problem import _AXES, PREDICTORS, Problem, load_problem, node_count
 from kresling.solvers import (PathResult, solve_displacement_control, solve_force_control,
                               solve_fold, solve_mgdcm)
@@ -257,7 +258,8 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
 
     Returns
     -------
-    Simulation
+    Simulation or ModesRun
+        A :class:`~kresling.simulate.modes_output.ModesRun` for ``method = "modes"``;
         ``completed`` is False when the path stopped early; ``path.message`` says why.
 
     Raises
@@ -268,6 +270,8 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
     """
     problem = load_problem(problem)
     pm = build_problem_model(problem)
+    if problem.analysis.method == "modes":   # no path: the modes about the rest state
+        return run_modes(problem, pm)
     model = pm.model
     analysis = problem.analysis
     vector = _load_vector(problem, model.num_dofs)
