@@ -35,6 +35,7 @@ from kresling.model.panel_elements import CENTRES, SPLITS
 from kresling.laws import BAR_LAWS, SPRING_LAWS
 from kresling.simulate.output_table import Output, read_output
 from kresling.simulate.problem_actuation import read_actuations, read_springs
+from kresling.simulate.problem_contact import read_contact
 from kresling.simulate.problem_file import read_toml
 from kresling.simulate.problem_mass import SheetMass, read_masses, read_sheet_mass
 
@@ -158,6 +159,8 @@ class Problem:
     sheet_mass: SheetMass = SheetMass()
     #: Explicit node masses (``[[mass]]``): NodeMass entries.
     masses: tuple = ()
+    #: Rigid planes the nodes are kept off (``[contact]``), or None.
+    contact: object = None
 
 
 class _Table:
@@ -648,10 +651,15 @@ def load_problem(problem) -> Problem:
     masses = read_masses(root.get("mass", _array_of_tables, []),
                          lambda entry, i: _Table(entry, "mass", source, text, occurrence=i),
                          _number, lambda t: _node_list(t, count))
+    contact = None
+    if root.has("contact"):
+        contact = read_contact(_Table(root.get("contact", lambda t, k, v, a: v), "contact", source,
+                                      text), _number, _positive, _boolean, _vector3)
     if analysis.tolerance is None:
         analysis = replace(analysis, tolerance=default_tolerance(pattern, compat))
     root.finish()
     result = Problem(pattern, split, material, compat, laws, supports, loads, analysis, source,
-                     centre, output, actuations, springs, convention, sheet_mass, masses)
+                     centre, output, actuations, springs, convention, sheet_mass, masses,
+                     contact)
     _check_consistency(result, t_analysis)
     return result

@@ -113,6 +113,9 @@ class Simulation:
                 energies[name] = path.energy_of(name)
                 energies["total"] = energies["total"] + energies[name]
         energies["total"] = energies.pop("total")
+        if "contact" in path.families:  # the smallest node-plane distance of each step
+            columns["min_gap"] = np.array([self.model.element_state(u)["contact_gap"].min()
+                                           for u in path.displacement])
         for name, values in energies.items():
             columns[f"energy_{name}"] = values
         columns["iterations"] = path.iterations
@@ -206,18 +209,41 @@ def build_problem_model(problem) -> PatternModel:
                                  assignments=problem.assignments)
     except ValueError as error:  # a value the model cannot take: name the problem's key
         raise ValueError(f"{problem.source}: {_where(str(error))}: {error}") from None
-    if not problem.springs:
-        return pm
+    families = {}
     nodes = pm.model.nodes
-    springs = {"nodes": np.array([s.node for s in problem.springs], dtype=np.int64),
-               "stiffness": np.array([s.stiffness for s in problem.springs], dtype=float),
-               "anchor": np.array([nodes[s.node] if s.anchor is None else s.anchor
-                                   for s in problem.springs], dtype=float)}
+    if problem.springs:
+        families["springs"] = {
+            "nodes": np.array([s.node for s in problem.springs], dtype=np.int64),
+            "stiffness": np.array([s.stiffness for s in problem.springs], dtype=float),
+            "anchor": np.array([nodes[s.node] if s.anchor is None else s.anchor
+                                for s in problem.springs], dtype=float)}
+    if problem.contact is not None:
+        families["contact"] = _contact_table(problem, pm.model)
+    if not families:
+        return pm
     try:
-        model = pm.model.replace(families={"springs": springs})
+        model = pm.model.replace(families=families)
     except ValueError as error:
-        raise ValueError(f"{problem.source}: [[spring]]: {error}") from None
+        key = "[contact]" if "contact" in str(error) else "[[spring]]"
+        raise ValueError(f"{problem.source}: {key}: {error}") from None
     return dataclasses.replace(pm, model=model)
+
+
+def _contact_table(problem, model) -> dict:
+    """The contact family's columns: every node against every plane; "auto" stiffness from
+    the model's mean diagonal stiffness at rest (docs/simulate.md, '[contact]')."""
+    from kresling.assembly import assemble
+    from kresling.simulate.problem_contact import auto_barrier_stiffness
+
+    contact = problem.contact
+    kappa = contact.stiffness
+    if kappa is None:
+        diagonal = assemble(model).stiffness.diagonal()[~model.fixed.ravel()]
+        kappa = auto_barrier_stiffness(float(np.mean(diagonal)), contact.distance)
+    return {"nodes": np.arange(model.num_nodes, dtype=np.int64),
+            "origin": np.array([p for p, _ in contact.planes], dtype=float),
+            "normal": np.array([n for _, n in contact.planes], dtype=float),
+            "distance": np.array([contact.distance]), "stiffness": np.array([kappa])}
 
 
 #: The problem file's key of each material parameter the model's messages name.

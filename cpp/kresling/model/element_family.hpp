@@ -78,6 +78,15 @@ class ElementFamily {
   /// Mark (set to 1) the DOFs this family ties elastically to the ground, one entry per
   /// DOF: they block rigid-body motions as supports do (an anchor spring). None by default.
   virtual void mark_grounded_dofs(std::vector<std::uint8_t>& /*grounded*/) const {}
+  /// True when the family limits Newton's corrections (step_limit): a barrier that must not
+  /// be stepped across. False by default, and then Newton never asks.
+  virtual bool limits_steps() const { return false; }
+  /// The fraction in (0, 1] of the correction du (one entry per DOF) that may be taken from
+  /// X + u without crossing what the family guards.
+  virtual double step_limit(const NodeMatrix& /*X*/, const VectorX& /*u*/,
+                            const VectorX& /*du*/) const {
+    return 1.0;
+  }
   /// The name of element e in messages ("bar 3 (nodes 1, 2)").
   std::string element_name(std::size_t e) const;
 };

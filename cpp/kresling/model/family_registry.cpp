@@ -5,6 +5,7 @@
 #include "kresling/model/bar_family.hpp"
 #include "kresling/model/cable_family.hpp"
 #include "kresling/model/hinge_family.hpp"
+#include "kresling/model/plane_contact_family.hpp"
 #include "kresling/model/spring_family.hpp"
 
 namespace kresling::model {
@@ -18,6 +19,7 @@ const std::vector<FamilyKind>& family_kinds() {
       {"hinges", &HingeFamily::from_table, "rotational springs on the dihedral angle of four nodes"},
       {"cables", &CableFamily::from_table, "tension-only cables sliding through guide nodes"},
       {"springs", &SpringFamily::from_table, "zero-length springs tying nodes to fixed points"},
+      {"contact", &PlaneContactFamily::from_table, "nodes kept off rigid planes by a barrier"},
   };
   return kinds;
 }

@@ -1,5 +1,6 @@
 #include "kresling/solvers/newton.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <cmath>
@@ -32,16 +33,32 @@ double mechanism_scale(const assembly::Assembler& assembler) {
   return std::max((X.colwise().maxCoeff() - X.colwise().minCoeff()).norm(), 1.0);
 }
 
-// Apply the correction du (assembled rows) to u, shortened as `extra` allows.
+// Whether any element family of the model limits Newton's corrections.
+bool families_limit_steps(const model::Model& model) {
+  for (const auto& family : model.families()) {
+    if (family->limits_steps()) return true;
+  }
+  return false;
+}
+
+// Apply the correction du (assembled rows) to u, shortened as `extra` and the model's
+// families allow (a barrier that must not be stepped across).
 void apply_correction(assembly::Assembler& assembler, const VectorX& du, VectorX& u,
-                      ExtraTerms* extra) {
-  if (extra == nullptr) {
+                      ExtraTerms* extra, bool limited) {
+  if (extra == nullptr && !limited) {
     scatter_add_rows(assembler, du, u);
     return;
   }
   VectorX step = VectorX::Zero(u.size());
   scatter_add_rows(assembler, du, step);
-  const double fraction = extra->step_limit(u, step);
+  double fraction = extra ? extra->step_limit(u, step) : 1.0;
+  if (limited) {
+    for (const auto& family : assembler.model().families()) {
+      if (family->limits_steps()) {
+        fraction = std::min(fraction, family->step_limit(assembler.model().nodes(), u, step));
+      }
+    }
+  }
   u += (fraction < 1.0 ? fraction : 1.0) * step;
 }
 
@@ -53,6 +70,7 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
                                  ExtraTerms* extra) {
   NewtonOutcome out;
   const int limit = max_iterations > 0 ? max_iterations : options.max_iterations;
+  const bool limited = families_limit_steps(assembler.model());
   VectorX force;
   bool factorized = false;  // a tangent of this solve is factorised
   double last_correction = INFINITY;
@@ -74,7 +92,7 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
         const VectorX du = solver.solve(residual);
         const double size = du.norm();
         if (std::isfinite(size) && size <= tol && last_correction * size <= tol * tol) {
-          apply_correction(assembler, du, u, extra);
+          apply_correction(assembler, du, u, extra, limited);
           out.converged = true;
           return out;
         }
@@ -111,7 +129,7 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
                     " mm): the free DOFs form a mechanism with no stiffness";
       return out;
     }
-    apply_correction(assembler, du, u, extra);
+    apply_correction(assembler, du, u, extra, limited);
     last_correction = du.norm();
     if (last_correction <= tol) {
       out.converged = true;
