@@ -48,6 +48,22 @@ BASES = [
      "actuation": [{"edges": [[1, 4]], "fold_angle_deg": 30.0},
                    {"family": "fold", "fold_angle_deg": -10.0, "stage": 2}],
      "analysis": {"method": "fold", "steps": 2, "predictor": "linear"}},
+    # Vibration modes from the sheet's density and node masses.
+    {"pattern": dict(SHEET),
+     "material": {"calibration": "auto", "E": 1000.0, "nu": 0.3, "thickness": 0.25,
+                  "density": 1.38e-9},
+     "support": [{"nodes": [0, 3], "fix": "xyz"}],
+     "mass": [{"nodes": [2, 5], "mass": 1e-6}],
+     "analysis": {"method": "modes", "modes": 3}},
+    # A sheet lifted above a floor and pushed onto it.
+    {"pattern": {"vertices": [[x, y, 1.0] for x, y, _ in SHEET["vertices"]],
+                 "panels": SHEET["panels"]},
+     "material": {"calibration": "auto", "E": 1000.0, "nu": 0.3, "thickness": 0.25},
+     "support": [{"nodes": [0, 3], "fix": "xyz"}, {"node": 1, "fix": "z"}],
+     "load": [{"nodes": [2, 5], "displacement": [0.0, 0.0, -1.5]}],
+     "contact": {"distance": 0.2, "stiffness": "auto",
+                 "planes": [{"point": [0, 0, 0], "normal": [0, 0, 1]}]},
+     "analysis": {"method": "displacement_control", "steps": 3}},
 ]
 KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices", "panels",
         "split", "file", "planarity_tolerance", "calibration", "E", "nu", "thickness",
@@ -57,7 +73,8 @@ KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices"
         "max_iterations", "initial_load_factor", "max_increments", "max_load_factor", "stop",
         "axis", "beyond", "law", "limits_deg", "stiffness", "output", "every", "curve", "x",
         "y", "spring", "anchor", "actuation", "edges", "family", "fold_angle_deg", "stage",
-        "predictor", "unknown_key"]
+        "predictor", "density", "mass", "modes", "about", "contact", "distance", "planes",
+        "point", "normal", "self", "unknown_key"]
 values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_001, 10**6]),
                    st.sampled_from(
     ["xyz", "z", "w", "N5B8", "N4B5", "auto", "manual", "linear", "mgdcm", "force_control",
@@ -65,7 +82,9 @@ values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_0
      [[0, 1, 2]], [-1], {"node": 0, "fix": "xyz"}, [{"node": 7, "fix": "x"}], "u_2_z",
      "reaction_5_z", "energy_total", {"x": "step", "y": "load_factor"}, {"x": "u_9_q"},
      "fold", "file", "valley", "join", [[1, 4]], [[1, 1]], [[0, 99]], [1e300, 0, 0],
-     [{"family": "fold", "fold_angle_deg": 180.0}], [{"node": 2, "stiffness": -1.0}]]))
+     [{"family": "fold", "fold_angle_deg": 180.0}], [{"node": 2, "stiffness": -1.0}],
+     "modes", "rest", [{"point": [0, 0, 0], "normal": [0, 0, 0]}], [{"point": [0, 0, 5]}],
+     [{"nodes": [2], "mass": -1.0}], {"distance": 0.2, "planes": []}]))
 
 
 def mutate(problem, edits):
@@ -128,7 +147,8 @@ def test_load_problem_from_dicts(base, edits):
     except ValueError as error:
         named_key(error)
         return
-    assert loaded.analysis.method in ("displacement_control", "force_control", "mgdcm", "fold")
+    assert loaded.analysis.method in ("displacement_control", "force_control", "mgdcm", "fold",
+                                      "modes")
 
 
 @fuzz(40)
