@@ -157,7 +157,7 @@ def _degrees(name, value, low, high) -> float:
 
 
 def switching(design: Design, *, parameters=None, snap_through_steps=DEFAULT_STEPS,
-              scan_step_deg=0.25, max_change_deg=90.0, resolution_deg=1e-5,
+              scan_step_deg=0.25, max_change_deg=170.0, resolution_deg=1e-5,
               overshoot_deg=0.01, tolerance=1e-6, max_iterations=50) -> SwitchingResult:
     """Switch ``design``'s cell by each crease group, both ways.
 
@@ -171,8 +171,9 @@ def switching(design: Design, *, parameters=None, snap_through_steps=DEFAULT_STE
         Increments of the snap-through test that finds the contracted state.
     scan_step_deg : float, default 0.25
         Increment of the rest-angle change while following the start state [deg].
-    max_change_deg : float, default 90
-        Largest change tried [deg].
+    max_change_deg : float, default 170
+        Largest change tried [deg] (at most 171; a change never takes a rest angle out of
+        (0, 360) deg: the scan ends there).
     resolution_deg : float, default 1e-5
         Bisection's resolution of the change at the snap [deg].
     overshoot_deg : float, default 0.01

@@ -39,20 +39,23 @@ def register(subparsers) -> None:
     parser.add_argument("--scan-step", type=float, default=0.25, metavar="DEG",
                         help="increment of the rest-angle change while following the start "
                              "state [deg] (default 0.25)")
-    parser.add_argument("--max-change", type=float, default=90.0, metavar="DEG",
-                        help="largest rest-angle change tried [deg] (default 90)")
+    parser.add_argument("--max-change", type=float, default=170.0, metavar="DEG",
+                        help="largest rest-angle change tried [deg] (default 170; a change "
+                             "never takes a rest angle out of (0, 360) deg)")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.set_defaults(func=run)
 
 
 def _row(s, barrier):
+    """One group's line: the change and moment at the snap (or where the scan ended)."""
     ratio = s.work / barrier if barrier > 0 else math.nan
-    return (s.group, s.creases, f"{s.snap_change_deg:.5f}" if s.switched else "-",
-            f"{s.moment:.5g}" if s.switched else "-",
-            f"{s.max_crease_moment:.4g}" if s.switched else "-",
-            f"{s.work:.5g} ({ratio:.2f} Eb)" if s.switched else "-",
-            f"{s.landing_height:.6f}" if s.switched else "-",
-            s.message)
+    reached = not math.isnan(s.snap_change)
+    return (s.group, s.creases, "yes" if s.switched else "no",
+            f"{s.snap_change_deg:.5f}" if reached else "-",
+            f"{s.moment:.5g}" if reached else "-",
+            f"{s.max_crease_moment:.4g}" if reached else "-",
+            f"{s.work:.5g} ({ratio:.3g} Eb)" if reached else "-",
+            f"{s.landing_height:.9f}" if s.switched else "-", s.message)
 
 
 def _summary(s) -> dict:
@@ -72,7 +75,8 @@ def run(args) -> int:
     result = switching(design, parameters=parameters, resolution_deg=args.resolution,
                        scan_step_deg=args.scan_step, max_change_deg=args.max_change)
     snap = result.snap
-    answer = {by: result.least_actuation(by) for by in ("snap_change", "moment")}
+    answer = {(by, forward): result.least_actuation(by, forward)
+              for by in ("snap_change", "moment") for forward in (True, False)}
     if args.json:
         print_json({"design": {"n": design.n, "lam": design.lam, "Lc": design.Lc,
                                "R": design.R},
@@ -82,22 +86,32 @@ def run(args) -> int:
                     "stable_height": finite_or_none(snap.stable_height),
                     "forward": [_summary(s) for s in result.forward],
                     "backward": [_summary(s) for s in result.backward],
-                    "least_change": answer["snap_change"], "least_moment": answer["moment"]})
+                    "least_change": {"forward": answer["snap_change", True],
+                                     "backward": answer["snap_change", False]},
+                    "least_moment": {"forward": answer["moment", True],
+                                     "backward": answer["moment", False]}})
         return 0
     print(f"snap-through test: {snap.bistability}; energy barrier Eb = "
           f"{snap.energy_barrier:.6g} N*mm; extended height {snap.extended_height:.6f} mm")
     if not snap.bistable:
         print("the cell is not bistable: there is no other state to switch to")
         return 0
-    header = ("group", "creases", "change [deg]", "moment [N*mm]", "max crease [N*mm]",
+    header = ("group", "creases", "switched", "change [deg]", "moment [N*mm]", "max crease [N*mm]",
               "work [N*mm]", "lands at [mm]", "")
     for title, switches, target in (
             ("extended -> contracted", result.forward, snap.stable_height),
             ("contracted -> extended", result.backward, snap.extended_height)):
         print(f"\n{title} (the other state's height {target:.6f} mm)")
         print_table([_row(s, snap.energy_barrier) for s in switches], header)
-    if answer["snap_change"]:
-        print(f"\nleast actuation (extended -> contracted): smallest rest-angle change: "
-              f"{answer['snap_change']}; smallest summed moment: {answer['moment']}")
+    print("\nchange: of the rest angles at the snap (or where the scan ended); moment: summed "
+          "over the driven creases there; work: of the actuation up to it (= the strain "
+          "energy it added), beside the energy barrier Eb")
+    for forward, title in ((True, "extended -> contracted"), (False, "contracted -> extended")):
+        if answer["snap_change", forward]:
+            print(f"least actuation, {title}: smallest rest-angle change: "
+                  f"{answer['snap_change', forward]}; smallest summed moment: "
+                  f"{answer['moment', forward]}")
+        else:
+            print(f"least actuation, {title}: no crease group switches the cell")
     print(summary_line(parameters))
     return 0

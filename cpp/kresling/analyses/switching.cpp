@@ -187,7 +187,8 @@ void Switcher::land(SwitchResult& r, const Drive& d, double sign, const VectorX&
   r.landing_tilt = top_polygon_tilt(s_.model, u, s_.n);
   r.landing_negative_eigenvalues = rest.negative_eigenvalues;
   r.switched = std::abs(r.landing_height - r.start_height) > jump_;
-  r.message = r.switched ? "snapped and landed at height " + format_number(r.landing_height) + " mm"
+  r.message = r.switched ? "snapped and landed at height " +
+                               format_number(std::round(r.landing_height * 1e6) / 1e6) + " mm"
                          : "snapped, but released it returned to its start state";
 }
 
