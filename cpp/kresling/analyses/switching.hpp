@@ -52,7 +52,7 @@ struct SwitchingOptions {
   model::SpecimenParameters specimen;
   int snap_through_steps = 100;        ///< the snap-through test's increments
   double scan_step = 0.25 * 3.14159265358979323846 / 180.0;  ///< increment of Delta [rad]
-  double max_change = 90.0 * 3.14159265358979323846 / 180.0; ///< give up beyond [rad]
+  double max_change = 170.0 * 3.14159265358979323846 / 180.0;  ///< give up beyond [rad]
   double resolution = 1e-5 * 3.14159265358979323846 / 180.0; ///< of Delta at the snap [rad]
   double overshoot = 0.01 * 3.14159265358979323846 / 180.0;  ///< past the snap to land [rad]
   solvers::NewtonOptions newton;
