@@ -16,12 +16,15 @@ cannot do, drives the other way from the contracted stable state.
 
 The moment at the snap is ``m = -sum_i s_i M_i`` over the driven creases (``M_i = k_p L0
 (theta_i - theta0_i)``, the crease's moment about its rest angle in the law's linear range;
-``s_i`` its direction): the summed moment the actuators must hold [N mm]. Its integral over
-``Delta`` along the path is the work the actuation puts in; with no load it equals the
-strain energy at the snap (the energy's derivative in ``Delta`` along an equilibrium path is
-``m``), which checks the moments against the energies. It is less than the snap-through
-test's energy barrier, as a dead load's work up to its snap is less than the barrier: the
-held actuation goes on doing work while the cell snaps.
+``s_i`` its direction): the summed moment the actuators must hold [N mm]. The work the
+actuation puts in is the integral over ``Delta`` of the rest angles' generalised force
+``dE/dtheta0`` (``m`` while every crease stays inside the law's linear range) along the
+path; with no load it equals the strain energy the actuation added (the energy's derivative
+in ``Delta`` along an equilibrium path is that force), which checks the moments against the
+energies. It is not the snap-through test's energy barrier and need not be: it includes the
+energy of the driven creases strained against their new rest angles, and the held actuation
+goes on doing work while the cell snaps. Measured, it is of the order of the barrier
+(docs/folding.md, 'Switching a Kresling cell by its creases').
 """
 
 from __future__ import annotations
@@ -66,8 +69,9 @@ class CreaseSwitch:
     max_crease_moment : float
         Largest moment of one driven crease there [N mm].
     work : float
-        Work of the actuation up to the snap, the integral of ``moment`` over the change
-        (trapezoids over the path) [N mm].
+        Work of the actuation up to the snap: the integral over the change of the rest
+        angles' generalised force, ``moment`` while the creases stay in the law's linear
+        range (trapezoids over the path) [N mm].
     snap_energy, start_energy : float
         Strain energy at the snap (actuated) and at the start [N mm]; their difference
         equals ``work`` to the quadrature's error.
