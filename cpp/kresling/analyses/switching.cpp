@@ -92,6 +92,17 @@ double height(const model::KreslingSpecimen& s, const VectorX& u) {
   return s.level_height[1] + z / s.n;
 }
 
+// Rest angles stay in (0, 2 pi): the largest change tried, a scan step short of where the
+// first would leave (room for the overshoot past a snap).
+double change_range(const Drive& d, double sign, const SwitchingOptions& o) {
+  double range = o.max_change;
+  for (Index i = 0; i < d.rest.size(); ++i) {
+    const double room = sign * d.direction[i] > 0 ? kTwoPi - d.rest[i] : d.rest[i];
+    range = std::min(range, room - o.scan_step);
+  }
+  return range;
+}
+
 class Switcher {
  public:
   Switcher(const model::KreslingSpecimen& s, const SwitchingOptions& o, double jump)
@@ -106,6 +117,9 @@ class Switcher {
   void record(SwitchResult& r, const Drive& d, double sign, double delta, const VectorX& u,
               const solvers::PathStep& step);
   void land(SwitchResult& r, const Drive& d, double sign, const VectorX& u);
+  // Bisect the bracket [lo, hi] (lo on the branch at u, hi off it) to the resolution.
+  void narrow(SwitchResult& r, const Drive& d, double sign, double& lo, double& hi, VectorX& u,
+              solvers::PathStep& step);
 
   const model::KreslingSpecimen& s_;
   const SwitchingOptions& o_;
@@ -192,6 +206,19 @@ void Switcher::land(SwitchResult& r, const Drive& d, double sign, const VectorX&
                          : "snapped, but released it returned to its start state";
 }
 
+void Switcher::narrow(SwitchResult& r, const Drive& d, double sign, double& lo, double& hi,
+                      VectorX& u, solvers::PathStep& step) {
+  while (hi - lo > o_.resolution) {
+    const double mid = 0.5 * (lo + hi);
+    if (probe(d, sign, mid, u, step)) {
+      lo = mid;
+      record(r, d, sign, lo, u, step);
+    } else {
+      hi = mid;
+    }
+  }
+}
+
 SwitchResult Switcher::run(CreaseGroup group, const Drive& d, double sign, const VectorX& start) {
   SwitchResult r;
   r.group = group;
@@ -202,12 +229,7 @@ SwitchResult Switcher::run(CreaseGroup group, const Drive& d, double sign, const
     r.message = "no crease of this group has stiffness (cut creases exert no moment)";
     return r;
   }
-  // Rest angles stay in (0, 2 pi): the change is capped where the first would leave.
-  double range = o_.max_change;
-  for (Index i = 0; i < d.rest.size(); ++i) {
-    const double room = sign * d.direction[i] > 0 ? kTwoPi - d.rest[i] : d.rest[i];
-    range = std::min(range, room - o_.scan_step);
-  }
+  const double range = change_range(d, sign, o_);
   VectorX u = start;
   solvers::PathStep step;
   step.energies = VectorX::Zero(1);
@@ -224,15 +246,7 @@ SwitchResult Switcher::run(CreaseGroup group, const Drive& d, double sign, const
       continue;
     }
     hi = next;
-    while (hi - lo > o_.resolution) {
-      const double mid = 0.5 * (lo + hi);
-      if (probe(d, sign, mid, u, step)) {
-        lo = mid;
-        record(r, d, sign, lo, u, step);
-      } else {
-        hi = mid;
-      }
-    }
+    narrow(r, d, sign, lo, hi, u, step);
     // From the bracket's lower end the upper one may be reached after all (the branch was
     // steep, not ending): then follow on.
     if (probe(d, sign, hi, u, step)) {

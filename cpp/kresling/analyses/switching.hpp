@@ -11,22 +11,24 @@
 /// towards the contracted state (read off the contracted state that snap_through finds;
 /// the opposite switch drives -s_i). Each increment of Delta is one solve of the fold solver
 /// (solvers::solve_fold) from the previous equilibrium; the state is followed while it stays
-/// on its branch: converged, stable (positive-definite tangent) and within a quarter of
-/// Le - Lc of the previous height. The first increment that leaves the branch brackets the
+/// on its branch: converged, stable (positive-definite tangent) and no node moving by more
+/// than a twentieth of the travel between the stable states in one increment. The first increment that leaves the branch brackets the
 /// limit point (the snap), which bisection narrows to `resolution`.
 ///
 /// At the snap (the last converged state, Delta_snap):
 ///   moment   m = - sum_i s_i M_i, M_i = L0_i M(theta_i) the moment of crease i (k_p L0
 ///            (theta_i - theta0_i - s_i Delta) in the law's linear range): the summed moment
 ///            the actuation must hold against the creases [N mm]; also the largest |M_i|
-///   work     W = integral_0^Delta_snap m dDelta (trapezoids over the followed path): the
-///            energy the actuation puts in. Along an equilibrium path with no load the
-///            stored energy's derivative in Delta is m, so W equals the strain energy at the
-///            snap, to the quadrature's error: the moments and the energies are computed
-///            independently, so this is the consistency check of the moments
-///   barrier  snap_through's energy barrier E_b, for comparison: W < E_b is expected (as a
-///            dead load's work up to its snap is less than the barrier it then crosses: the
-///            held actuation keeps doing work during the snap), and W / E_b is reported
+///   work     W = integral_0^Delta_snap f dDelta (trapezoids over the followed path), f =
+///            sum_i s_i dE/dtheta0_i the rest angles' generalised force (= m while every
+///            crease is inside the law's linear range, theta1 to theta2): the energy the
+///            actuation puts in. Along an equilibrium path with no load the stored energy's
+///            derivative in Delta is f, so W equals the strain energy added (at the snap
+///            minus at the start), to the quadrature's error: the moments and the energies
+///            are computed independently, so this is the consistency check of the moments
+///   barrier  snap_through's energy barrier E_b, for comparison only: W is not E_b and need
+///            not be (it includes the energy of the driven creases strained against their
+///            new rest angles, and the held actuation goes on doing work while the cell snaps)
 /// Landing: the actuation held just past the snap (Delta_snap + overshoot), energy descent
 /// (solvers::minimize_energy) finds where the cell snaps to; then the rest angles are set
 /// back to theta0 (released) and a second descent finds where the cell comes to rest.
@@ -68,7 +70,7 @@ struct SwitchResult {
   double resolution = kNaN;     ///< Delta_snap lies within this below the true limit [rad]
   double moment = kNaN;         ///< m at the snap, summed over the driven creases [N mm]
   double max_crease_moment = kNaN;  ///< largest |M_i| there [N mm]
-  double work = kNaN;           ///< integral of m dDelta up to the snap [N mm]
+  double work = kNaN;           ///< integral of f dDelta up to the snap [N mm]
   double snap_energy = kNaN;    ///< strain energy at the snap (actuated) [N mm]
   double start_energy = kNaN;   ///< strain energy of the start state [N mm]
   double start_height = kNaN;   ///< cell height of the start state [mm]
