@@ -16,7 +16,7 @@ import sys
 
 # Subcommand modules, in the order ``kresling --help`` lists them.
 _COMMANDS = ("design", "bend", "snap", "simulate", "view", "sweep", "explore", "pattern", "fit",
-             "manipulator", "arm", "reproduce")
+             "manipulator", "arm", "switch", "reproduce")
 
 
 def build_parser(only=None) -> argparse.ArgumentParser:

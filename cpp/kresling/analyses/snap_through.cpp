@@ -32,8 +32,11 @@ constexpr double kPi = 3.14159265358979323846;
 // A rest state with less energy than this fraction of the barrier is the extended state.
 constexpr double kExtendedEnergy = 1e-6;
 
-// Angle between the z axis and the normal of the top polygon (level 1) at displacement u.
-double top_tilt(const model::Model& model, const VectorX& u, int n) {
+std::string mm(double value) { return format_number(std::round(value * 1e3) / 1e3) + " mm"; }
+
+}  // namespace
+
+double top_polygon_tilt(const model::Model& model, const VectorX& u, int n) {
   Vector3 normal = Vector3::Zero();
   auto position = [&](int j) -> Vector3 {
     const Index node = (n + 1) + j;
@@ -42,10 +45,6 @@ double top_tilt(const model::Model& model, const VectorX& u, int n) {
   for (int j = 0; j < n; ++j) normal += position(j).cross(position((j + 1) % n));  // Newell
   return std::acos(std::min(1.0, std::abs(normal.z()) / normal.norm()));
 }
-
-std::string mm(double value) { return format_number(std::round(value * 1e3) / 1e3) + " mm"; }
-
-}  // namespace
 
 void check_snap_design(const geometry::Design& design) {
   // The drive runs from the extended state to the contracted one: neither may be flat (at
@@ -147,7 +146,8 @@ void SnapThroughTest::release(const model::Model& model, const VectorX& start, I
   r.stable_displacement = travel / builder_.n();
   r.stable_height = r.extended_height - r.stable_displacement;
   r.stable_energy = rest.energy;
-  r.stable_tilt = top_tilt(model, u, builder_.n());
+  r.stable_state = u;
+  r.stable_tilt = top_polygon_tilt(model, u, builder_.n());
   // The extended state is the only stress-free one: coming to rest anywhere else (level,
   // tilted or warped, even short of the level path's barrier) is a second stable state.
   r.bistable = r.stable_energy > kExtendedEnergy * r.energy_barrier;

@@ -71,6 +71,7 @@ struct SnapThroughResult {
   double stable_energy = kNaN;          ///< its strain energy [N mm]
   double stable_tilt = kNaN;            ///< its top polygon's tilt from horizontal [rad]
   int stable_negative_eigenvalues = -1; ///< of its tangent (0 when found; -1: not reached)
+  VectorX stable_state;                 ///< its displacement, every DOF [mm]; empty if none
   std::string bistability;              ///< why the cell is (not) bistable, in words
   double extended_height = 0.0;         ///< Le [mm]
   double contracted_height = 0.0;       ///< Lc [mm]
@@ -115,6 +116,10 @@ class SnapThroughTest {
   // The release's pattern and slot map, kept across runs (no reference to any model).
   std::unique_ptr<assembly::Workspace> release_workspace_;
 };
+
+/// Angle between the z axis and the normal (Newell's) of the top polygon of a one-cell
+/// specimen of polygon size n at displacement u [rad].
+double top_polygon_tilt(const model::Model& model, const VectorX& u, int n);
 
 /// Run the test once (see SnapThroughTest).
 SnapThroughResult snap_through(const geometry::Design& design,
