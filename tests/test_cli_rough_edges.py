@@ -329,7 +329,9 @@ def test_partial_paths_know_how_far_they_went():
     from kresling.analyses.paths import snap_through_path
 
     d = Design(8, 0.8, 30)
-    snap = snap_through_path(d, steps=100, tolerance=1e-14, max_iterations=3)
+    # 25 iterations an increment (the rejection bound) get some increments done before the
+    # tolerance stops the path; Newton stops at max_iterations, so 3 would get none.
+    snap = snap_through_path(d, steps=100, tolerance=1e-14, max_iterations=25)
     assert snap.partial and not snap.path.completed and len(snap.travel) > 0
     assert snap.travel_fraction == pytest.approx(snap.travel[-1] / (d.Le - d.Lc), rel=1e-12)
     assert 0 < snap.travel_fraction < 1
@@ -349,9 +351,12 @@ def test_python_views_of_runs_that_stopped_say_so():
     from kresling.view import view_bending, view_path, view_snap_through
 
     d = Design(8, 0.8, 30)
+    # 25 iterations an increment get the snap-through some increments before the tolerance
+    # stops it (Newton stops at max_iterations; 3 get none, which the bending run shows).
+    snap_solver = {"tolerance": 1e-14, "max_iterations": 25}
     solver = {"tolerance": 1e-14, "max_iterations": 3}
-    path = snap_through_path(d, steps=100, **solver)
-    title = view_snap_through(d, steps=100, **solver).layout.title.text
+    path = snap_through_path(d, steps=100, **snap_solver)
+    title = view_snap_through(d, steps=100, **snap_solver).layout.title.text
     assert f"PARTIAL: stopped at {path.travel_fraction:.0%} of the travel" in title
     assert "PARTIAL" in view_snap_through(d, path=path, title="mine").layout.title.text
     title = view_path(path.specimen, path.path).layout.title.text
@@ -403,3 +408,12 @@ def test_cli_view_pages_of_runs_that_stopped_say_so(monkeypatch, tmp_path, capsy
     _, layout, _ = page_figure((tmp_path / "snap.html").read_text(encoding="utf-8"))
     assert f"PARTIAL: stopped at {fraction:.0%} of the travel" in layout["title"]["text"]
     capsys.readouterr()
+
+
+def test_a_snap_through_view_of_a_path_with_no_increment_is_drawn():
+    # Newton stops at max_iterations = 3 before the 1e-14 tolerance: no increment converges,
+    # and the page says so instead of failing on its own bookkeeping.
+    from kresling.view import view_snap_through
+
+    fig = view_snap_through(Design(8, 0.8, 30), steps=100, tolerance=1e-14, max_iterations=3)
+    assert "PARTIAL" in fig.layout.title.text

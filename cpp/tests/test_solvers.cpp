@@ -401,3 +401,24 @@ TEST(DisplacementControl, AdaptiveLocatesALawKinkInAFewSolves) {
   EXPECT_TRUE(theta_end < law.theta1 || theta_end > law.theta2) << theta_end;
   EXPECT_LE(adaptive.attempted_increments, steps + 6);
 }
+
+// Displacement control's Newton stops at max_iterations even where reject_iterations (25 by
+// default) would let an increment take more: no accepted increment exceeds either bound.
+TEST(DisplacementControl, NewtonNeverExceedsMaxIterations) {
+  for (int max_iterations : {2, 3, 50}) {
+    solvers::DisplacementControlOptions o;
+    o.newton.max_iterations = max_iterations;
+    o.newton.tolerance = 1e-12;
+    for (bool adaptive : {false, true}) {
+      o.adaptive = adaptive;
+      // The truss's spring top driven down 1.5 mm: the apex follows through the spring.
+      const model::Model model = truss();
+      const auto path = solvers::solve_displacement_control(model, load_on(model, kTopZ, -1.5),
+                                                            4, o);
+      for (const auto& step : path.steps) {
+        EXPECT_LE(step.iterations, std::min(max_iterations, o.reject_iterations - 1))
+            << max_iterations << (adaptive ? " adaptive" : " fixed");
+      }
+    }
+  }
+}

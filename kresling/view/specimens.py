@@ -168,7 +168,8 @@ def view_snap_through(design, *, steps=100, path=None, result=None, field=None,
     if path is None:
         path = snap_through_path(design, steps=steps, **options)
     if result is None:
-        result = snap_through(path.specimen.design, steps=len(path.travel), **options)
+        # (a path that converged no increment: the result of the steps asked for)
+        result = snap_through(path.specimen.design, steps=len(path.travel) or steps, **options)
     num_steps = len(path.travel)
     panel = PathPanel(view_inputs(path.specimen),
                       _with_start(path.path.displacement, path.specimen.model.num_dofs))

@@ -126,6 +126,11 @@ def run(problem):
         event("ValueError")
         return
     event("completed" if simulation.completed else "stopped")
+    if not hasattr(simulation, "path"):  # a modes run: frequencies and shapes, no path
+        finite(simulation.modes.frequencies_hz, simulation.modes.shapes, simulation.masses)
+        with tempfile.TemporaryDirectory() as folder:
+            simulation.write(folder)
+        return
     path_ok(simulation.path)
     finite(simulation.model.nodes)
     for values in simulation.history_columns().values():

@@ -1,5 +1,6 @@
-"""Fuzz: the path solvers (displacement control, force control, MGDCM) and the linearised
-stiffness, on a small cell with random options, loads and starting states."""
+"""Fuzz: the path solvers (displacement control, force control, MGDCM, folding, time
+integration) and the linearised stiffness, on a small cell with random options, loads and
+starting states."""
 
 import numpy as np
 from hypothesis import given
@@ -8,8 +9,8 @@ from hypothesis import strategies as st
 from _fuzz import attempt, edgy_floats, edgy_ints, finite, fuzz, junk, path_ok
 from kresling import Design
 from kresling.model.kresling_specimen import kresling_specimen
-from kresling.solvers import (condensed_stiffness, solve_displacement_control,
-                              solve_force_control, solve_mgdcm)
+from kresling.solvers import (condensed_stiffness, solve_displacement_control, solve_dynamics,
+                              solve_fold, solve_force_control, solve_mgdcm)
 
 _specimen = kresling_specimen(Design(4, 0.7, 30), [1])
 _fixed = np.zeros((_specimen.model.num_nodes, 3), dtype=bool)
@@ -91,3 +92,44 @@ def test_condensed_stiffness(dofs, u):
                 "condensed_stiffness")
     if S is not None:
         finite(S)
+
+
+DYNAMICS = ("masses", "time_step", "duration", "forces", "gravity", "load_table", "hht_alpha",
+            "mass_damping", "stiffness_damping", "tolerance", "max_iterations", "max_halvings",
+            "initial", "initial_velocity", "free DOF", "steps")
+
+
+@fuzz(40)
+@given(st.one_of(st.sampled_from([1e-6, 1e-3]), edgy_floats, junk),
+       st.one_of(st.sampled_from([1e-4, 1e-3]), edgy_floats, junk),
+       st.one_of(st.sampled_from([5e-3, 2e-2]), edgy_floats, junk), vector,
+       st.fixed_dictionaries({}, optional={
+           "hht_alpha": st.one_of(st.sampled_from([0.0, -0.1, -1 / 3, -0.5, 0.1]), junk),
+           "mass_damping": st.one_of(st.sampled_from([0.0, 10.0, -1.0]), edgy_floats),
+           "stiffness_damping": st.one_of(st.sampled_from([0.0, 1e-4]), edgy_floats),
+           "gravity": st.one_of(st.sampled_from([(0, 0, -9810.0), (0, 0), (1e300, 0, 0)]), junk),
+           "load_table": st.one_of(st.sampled_from([[[0, 0], [1e-2, 1]], [[1, 0], [0, 1]],
+                                                    [[0, float("nan")]]]), junk),
+           "max_halvings": small_ints, "tolerance": st.one_of(edgy_floats, junk)}), initial)
+def test_dynamics(mass, dt, duration, pattern, opts, start):
+    history = attempt(lambda: solve_dynamics(MODEL, mass, dt, duration, forces=load(1.0, pattern),
+                                             initial=start, **opts), *DYNAMICS)
+    if history is not None:
+        path_ok(history.path)
+        finite(history.velocity, history.kinetic, history.strain, history.dissipated,
+               history.work)
+
+
+FOLD = ("stages", "steps", "forces", "tolerance", "max_iterations", "max_bisections",
+        "extrapolation", "shift", "hinge", "target", "initial")
+
+
+@fuzz(40)
+@given(st.lists(st.tuples(st.lists(st.integers(-2, 40), max_size=4),
+                          st.lists(st.one_of(st.floats(-1, 7), edgy_floats), max_size=4)),
+                max_size=3),
+       st.one_of(st.integers(1, 6), edgy_ints, junk), options, initial)
+def test_fold(stages, steps, opts, start):
+    path = attempt(lambda: solve_fold(MODEL, stages, steps, initial=start, **opts), *FOLD)
+    if path is not None:
+        path_ok(path)

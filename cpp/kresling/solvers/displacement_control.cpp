@@ -226,8 +226,9 @@ NewtonOutcome DisplacementControl::equilibrium_at(VectorX& u, double t, const Ve
                                                  const VectorX& prescribed,
                                                  const std::vector<Index>& imposed) {
   for (Index i : imposed) u[i] = start[i] + t * prescribed[i];
+  // Newton stops at max_iterations even where reject_iterations would allow more.
   return newton_equilibrium(*assembler_, *solver_, u, no_load_, options_.newton,
-                            options_.reject_iterations);
+                            std::min(options_.reject_iterations, options_.newton.max_iterations));
 }
 
 bool DisplacementControl::accepted(const NewtonOutcome& outcome) const {

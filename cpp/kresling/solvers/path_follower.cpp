@@ -38,13 +38,16 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
   if (control.changes_model()) assembler.rebind(control.model_at(0.0));
   VectorX external = VectorX::Zero(u.size());
   const int budget = options.reject_iterations;
+  // Newton stops at max_iterations even when an increment may take more before it is
+  // rejected (reject_iterations above max_iterations).
+  const int newton_limit = budget > 0 ? std::min(budget, options.newton.max_iterations) : 0;
   auto accepted = [&](const NewtonOutcome& o) {
     return o.converged && (budget <= 0 || o.iterations < budget);
   };
   auto solve_at = [&](VectorX& trial, double t) {
     control.apply(t, trial, external);
     const NewtonOutcome outcome = newton_equilibrium(assembler, solver, trial, external,
-                                                     options.newton, budget, options.extra);
+                                                     options.newton, newton_limit, options.extra);
     result.newton_iterations += outcome.iterations;
     return outcome;
   };
