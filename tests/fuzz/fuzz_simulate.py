@@ -74,7 +74,7 @@ KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices"
         "axis", "beyond", "law", "limits_deg", "stiffness", "output", "every", "curve", "x",
         "y", "spring", "anchor", "actuation", "edges", "family", "fold_angle_deg", "stage",
         "predictor", "density", "mass", "modes", "about", "contact", "distance", "planes",
-        "point", "normal", "self", "unknown_key"]
+        "point", "normal", "self", "unit", "scale", "frame", "assignments", "unknown_key"]
 values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_001, 10**6]),
                    st.sampled_from(
     ["xyz", "z", "w", "N5B8", "N4B5", "auto", "manual", "linear", "mgdcm", "force_control",
@@ -84,7 +84,8 @@ values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_0
      "fold", "file", "valley", "join", [[1, 4]], [[1, 1]], [[0, 99]], [1e300, 0, 0],
      [{"family": "fold", "fold_angle_deg": 180.0}], [{"node": 2, "stiffness": -1.0}],
      "modes", "rest", [{"point": [0, 0, 0], "normal": [0, 0, 0]}], [{"point": [0, 0, 5]}],
-     [{"nodes": [2], "mass": -1.0}], {"distance": 0.2, "planes": []}]))
+     [{"nodes": [2], "mass": -1.0}], {"distance": 0.2, "planes": []}, "cm", "unit", "in",
+     "origami_simulator"]))
 
 
 def mutate(problem, edits):
