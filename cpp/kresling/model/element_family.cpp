@@ -14,15 +14,24 @@ const VectorX& ElementState::operator[](const std::string& name) const {
   throw std::invalid_argument("element state: no column " + name);
 }
 
-std::string ElementFamily::element_name(std::size_t e) const {
-  std::string kind = name();
+namespace {
+
+// "bar 3 (nodes 1, 2)": a family's element as messages name it.
+std::string named_element(const ElementFamily& family, std::size_t e, const std::vector<Index>& nodes) {
+  std::string kind = family.name();
   if (!kind.empty() && kind.back() == 's') kind.pop_back();  // "bars" -> "bar"
   std::string s = kind + " " + std::to_string(e) + " (nodes";
-  const std::vector<Index> dofs = element_dofs(e);
-  for (std::size_t k = 0; k < dofs.size(); k += 3) {
-    s += (k ? ", " : " ") + std::to_string(dofs[k] / 3);
-  }
+  for (std::size_t k = 0; k < nodes.size(); ++k) s += (k ? ", " : " ") + std::to_string(nodes[k]);
   return s + ")";
+}
+
+}  // namespace
+
+std::string ElementFamily::element_name(std::size_t e) const {
+  std::vector<Index> nodes;
+  const std::vector<Index> dofs = element_dofs(e);
+  for (std::size_t k = 0; k < dofs.size(); k += 3) nodes.push_back(dofs[k] / 3);
+  return named_element(*this, e, nodes);
 }
 
 std::vector<Index> node_dofs(const std::vector<Index>& nodes) {
@@ -41,15 +50,9 @@ void require_element_positive(const ElementFamily& family, std::size_t e, const 
 
 void require_element_nodes(const ElementFamily& family, std::size_t e, const Index* nodes,
                            int count, Index num_nodes) {
-  // The name is built from the element's DOFs, which are only meaningful once its nodes are
-  // in range: list the raw nodes here.
-  auto name = [&] {
-    std::string kind = family.name();
-    if (!kind.empty() && kind.back() == 's') kind.pop_back();
-    std::string s = kind + " " + std::to_string(e) + " (nodes";
-    for (int k = 0; k < count; ++k) s += (k ? ", " : " ") + std::to_string(nodes[k]);
-    return s + ")";
-  };
+  // element_name builds on the element's DOFs, which are only meaningful once its nodes
+  // are in range: name the raw nodes here.
+  auto name = [&] { return named_element(family, e, std::vector<Index>(nodes, nodes + count)); };
   for (int k = 0; k < count; ++k) {
     if (nodes[k] < 0 || nodes[k] >= num_nodes) {
       throw std::invalid_argument(name() + ": node " + std::to_string(nodes[k]) +
