@@ -25,6 +25,7 @@ from kresling.io.fold_reading import pattern_from_fold, read_fold
 from kresling.io.pattern import (ASSIGNMENTS, Pattern, _as_coordinates, argument_fail,
                                  pattern_from_arrays)
 from kresling.io.units import mm_per_unit
+from kresling.io.vertex_neighbours import vertices_neighbours
 
 __all__ = ["ASSIGNMENTS", "fold_angles", "fold_document", "pattern_from_fold", "read_fold",
            "write_fold", "write_fold_document"]
@@ -33,7 +34,7 @@ logger = logging.getLogger(__name__)
 
 #: Keys :func:`write_fold` computes from the pattern, which ``metadata`` cannot set.
 GEOMETRY_KEYS = ("vertices_coords", "faces_vertices", "edges_vertices", "edges_assignment",
-                 "edges_foldAngle", "file_frames")
+                 "edges_foldAngle", "file_frames", "vertices_vertices", "vertices_edges")
 
 
 # -- writing -------------------------------------------------------------------------------
@@ -81,7 +82,10 @@ def write_fold(path, pattern_or_vertices, faces=None, *, edges=None, edges_assig
 
     Notes
     -----
-    ``file_spec`` is 1.2 if an edge is ``"C"`` or ``"J"``, else 1.1. The key frame is written
+    ``file_spec`` is 1.2 if an edge is ``"C"`` or ``"J"``, else 1.1. With a ``"C"`` edge,
+    ``vertices_vertices`` and ``vertices_edges`` (counter-clockwise round each vertex,
+    :func:`~kresling.io.vertex_neighbours.vertices_neighbours`) are written too: readers
+    that separate faces along cuts need them. The key frame is written
     2D (``frame_classes: ["creasePattern"]``) when every z is 0, else 3D (``"foldedForm"``).
     FOLD has no "unknown" fold angle: unknown angles of ``"B"`` and ``"F"`` edges are
     written 0, others ``null`` (read back as NaN); ``edges_foldAngle`` is left out if no
@@ -139,6 +143,10 @@ def write_fold(path, pattern_or_vertices, faces=None, *, edges=None, edges_assig
                 for k, (title, frame) in enumerate(zip(titles[1:], frames))],
         title=titles[0],
         extra={"frame_classes": ["creasePattern" if flat else "foldedForm"]})
+    if "C" in pattern.edges_assignment:
+        # Readers that separate the faces along cuts walk round each vertex in this order.
+        document["vertices_vertices"], document["vertices_edges"] = vertices_neighbours(
+            pattern.faces, pattern.edges, pattern.num_vertices)
     document.update(metadata)
     return write_fold_document(path, document)
 

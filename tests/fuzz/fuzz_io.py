@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 
 from _fuzz import attempt, edgy_floats, finite, fuzz, junk, mostly, mutated
 from kresling.io import pattern_from_arrays, pattern_from_fold, read_fold, read_obj, read_pattern
+from kresling.io.vertex_neighbours import vertices_neighbours
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "patterns"
 VALID = {".fold": (DATA / "square_twist_1.2.fold").read_bytes(),
@@ -77,6 +78,15 @@ def test_pattern_from_arrays(vertices, faces, options):
                       "planarity_tolerance", "face", "vertex", "edge")
     if pattern is not None:
         finite(pattern.vertices)
+        # What write_fold writes for a file with cuts: each vertex's neighbours through its
+        # edges, each once, with the edge to each.
+        ring, ring_edges = vertices_neighbours(pattern.faces, pattern.edges,
+                                               pattern.num_vertices)
+        for v in range(pattern.num_vertices):
+            around = {int(w) for e in pattern.edges for w in e if v in e and w != v}
+            assert sorted(ring[v]) == sorted(around)
+            assert [set(pattern.edges[k].tolist()) for k in ring_edges[v]] == [
+                {v, w} for w in ring[v]]
 
 
 fold_values = st.recursive(
