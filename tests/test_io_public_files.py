@@ -198,9 +198,9 @@ def test_the_bird_base_folds_into_its_files_folded_frame(path, crease_frame, fol
 
 #: Folding every crease at once from flat, the model sends some creases of these two the other
 #: way (measured: the crane 13 of 102 at a tenth of the way, and 5 to 19 with other
-#: stiffness ratios or N4B5; the flapping bird 2 or 3 of 37 at 10 % to 60 %), where
-#: Origami Simulator folds them in their sense. Recorded here until the fold from flat
-#: follows the assignments on patterns that are not rigidly foldable.
+#: stiffness ratios or N4B5; the flapping bird 2 or 3 of 37 at 10 % to 60 %). Recorded here
+#: until the fold from flat follows the assignments on patterns that are not rigidly
+#: foldable.
 NOT_YET = pytest.mark.xfail(strict=True, reason="simultaneous folding from flat takes a few "
                                                 "creases the other way (see NOT_YET)")
 
