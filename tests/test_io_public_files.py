@@ -36,7 +36,9 @@ OPEN = [(SPEC / "diagonal-cp.fold", SHEET), (SPEC / "squaretwist.fold", SHEET),
         (RABBIT_EAR / "crane-cp-bmvfcj.fold", SHEET),
         (ORIGAMI_SIMULATOR / "flappingBird.svg", {}), (ORIGAMI_SIMULATOR / "birdBase.svg", {}),
         (ORIGAMI_SIMULATOR / "waterbombBase.svg", {}), (ORIGAMI_SIMULATOR / "miura-ori.svg", {}),
-        (ORIGAMI_SIMULATOR / "waterbomb.svg", {})]
+        (ORIGAMI_SIMULATOR / "waterbomb.svg", {}),
+        (ORIGAMI_SIMULATOR / "BoxPleatInOutWave-corner.fold",
+         dict(SHEET, assignments="origami_simulator"))]
 
 
 def _read(path, keys):
@@ -292,6 +294,30 @@ def test_rabbit_ears_crane_with_every_letter_builds_each_family_from_its_letter(
     assert fold.model.num_nodes == simulator.model.num_nodes == pattern.num_vertices + copies
 
 
+
+def test_origami_simulators_own_fold_file_reads_in_its_plane_with_its_facet_creases():
+    # Its box-pleated tessellations are written by it: "unit", 2D patterns mapped to the
+    # x-z plane, F for its facet creases (flat, stiff), as FOLD files of 3 coordinates.
+    path = ORIGAMI_SIMULATOR / "BoxPleatInOutWave-corner.fold"
+    document = json.loads(path.read_text())
+    assert document["frame_unit"] == "unit"
+    assert {v[1] for v in document["vertices_coords"]} == {0}
+    pattern = read_fold(path, **SHEET)
+    np.testing.assert_array_equal(pattern.vertices[:, 1], 0.0)     # read in its plane
+    np.testing.assert_allclose(pattern.vertices[:, [0, 2]],
+                               100.0 * np.array(document["vertices_coords"])[:, [0, 2]])
+    letters = {a: document["edges_assignment"].count(a) for a in "MVF"}
+    assert letters == {"M": 95, "V": 73, "F": 96}
+    for convention, expected in (("fold", {"mountain": 95, "valley": 73, "flat": 96}),
+                                 ("origami_simulator", {"mountain": 95, "valley": 73})):
+        families = build_pattern_model(pattern, material=MANUAL,
+                                       assignments=convention).hinge_family
+        # Each of the 144 square panels adds 4 bends about its centre (N5B8); Origami
+        # Simulator's F are bends too.
+        bends = 4 * 144 + (96 if convention == "origami_simulator" else 0)
+        assert {f: families.count(f) for f in set(families)} == dict(expected, bend=bends)
+
+
 def _resolved(document, k):
     """Frame k's arrays as FOLD's frame inheritance gives them (frame 0: the top level)."""
     frames = [document] + document.get("file_frames", [])
@@ -334,20 +360,22 @@ def _families(pm):
     (SPEC / "squaretwist.fold", {}), (RABBIT_EAR / "wavy-miura-no-faces.fold", {}),
     (RABBIT_EAR / "crane-cp-bmvfcj.fold", {}), (RABBIT_EAR / "bird-base-3d-cp.fold", {}),
     (RABBIT_EAR / "nested-frames.fold", {"frame": 2}),
-    (ORIGAMI_SIMULATOR / "flappingBird.svg", {}), (ORIGAMI_SIMULATOR / "waterbomb.svg", {})],
+    (ORIGAMI_SIMULATOR / "flappingBird.svg", {}), (ORIGAMI_SIMULATOR / "waterbomb.svg", {}),
+    (ORIGAMI_SIMULATOR / "BoxPleatInOutWave-corner.fold", {})],
     ids=lambda v: getattr(v, "name", str(v)))
 def test_a_public_file_read_written_and_read_again_builds_the_same_model(tmp_path, path, keys):
     first = read_pattern(path, **keys)
     again = read_fold(write_fold(tmp_path / "again.fold", first))
-    if path.suffix == ".svg":
-        # A drawing gives its boundary strokes no fold angle; a FOLD file states 0 for them.
-        boundary = np.array(first.edges_assignment) == "B"
+    # A drawing (or Origami Simulator's file) gives its boundary no fold angle; write_fold
+    # states 0 for them.
+    boundary = np.array(first.edges_assignment) == "B"
+    if path.parent == ORIGAMI_SIMULATOR:
         assert np.all(np.isnan(first.edges_fold_angle[boundary]))
         first = dataclasses.replace(first, edges_fold_angle=np.where(
             boundary, 0.0, first.edges_fold_angle))
     assert again == first
     np.testing.assert_array_equal(again.vertices, first.vertices)
-    assignments = "origami_simulator" if path.suffix == ".svg" else "fold"
+    assignments = "origami_simulator" if path.parent == ORIGAMI_SIMULATOR else "fold"
     models = [build_pattern_model(p, material=MANUAL, assignments=assignments)
               for p in (first, again)]
     assert _families(models[0]) == _families(models[1])
