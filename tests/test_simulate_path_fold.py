@@ -41,13 +41,15 @@ def _families(pm):
 
 def _origami_simulator_problems(document) -> list:
     """Origami Simulator's rules for a FOLD file it is given (amandaghassaei/OrigamiSimulator,
-    reproduced, not its code): js/importer.js needs vertices_coords, edges_vertices,
-    edges_assignment and faces_vertices, takes edges_foldAngle (else asks for one), and reads
-    the top level only (no file_frames); js/pattern.js (processFold) takes 2 or 3
-    coordinates per vertex, splits cuts, triangulates faces of more than 3 corners, and
-    builds a crease for each M, V or F edge with a non-null angle only where it finds two
-    faces holding both its ends (getFacesAndVerticesForEdges), a facet crease when the angle
-    is 0; js/model.js (buildModel) stops on no vertices, faces or edges."""
+    commit 7855983, reproduced, not its code; its code itself opens path.fold in
+    tests/test_io_origami_simulator.py): js/importer.js line 112 needs vertices_coords,
+    edges_vertices, edges_assignment and faces_vertices, lines 119-126 take edges_foldAngle
+    (else it asks for one), and it reads the top level only (no file_frames); js/pattern.js
+    processFold (line 564) takes 2 or 3 coordinates per vertex, splits cuts (line 584),
+    triangulates faces of more than 3 corners (triangulatePolys, line 984), and builds a
+    crease for each M, V or F edge with a non-null angle only where it finds two faces
+    holding both its ends (getFacesAndVerticesForEdges, line 820), a facet crease when the
+    angle is 0; js/model.js buildModel (line 195) stops on no vertices, faces or edges."""
     problems = []
     for key in ("vertices_coords", "edges_vertices", "edges_assignment", "faces_vertices"):
         if not document.get(key):
