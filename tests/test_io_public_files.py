@@ -230,18 +230,22 @@ def test_the_crane_folds_towards_its_folded_frame_each_crease_in_its_sense():
     assert np.all(np.sign(reached[moved]) == np.sign(targets[creases][moved]))
 
 
-@pytest.mark.parametrize("name", ["birdBase.svg", "waterbombBase.svg",
-                                  pytest.param("flappingBird.svg", marks=NOT_YET)])
-def test_origami_simulators_bases_fold_at_its_default_percent_each_crease_in_its_sense(name):
+@pytest.mark.parametrize("name, steps", [
+    ("birdBase.svg", 20), ("waterbombBase.svg", 20), ("waterbomb.svg", 60),
+    pytest.param("flappingBird.svg", 20, marks=NOT_YET)])
+def test_origami_simulators_patterns_fold_at_its_default_percent_each_crease_in_its_sense(
+        name, steps):
     # Origami Simulator opens a pattern folded to 60 % of each crease's target, the stroke
     # opacity times 180 deg (creasePercent = 0.6 in its js/globals.js): fold to that. The
-    # creases cannot all reach it together (neither base is rigidly foldable with its
+    # creases cannot all reach it together (none of these is rigidly foldable with its
     # creases at one common fraction: the panels bend and the creases share the strain), so
     # what is checked is the sense of every crease and that each goes at least half way.
+    # (The waterbomb tessellation's first increments need to be small: with 10 steps to 30 %
+    # the first one fails even after its bisections.)
     path = ORIGAMI_SIMULATOR / name
     pattern = read_pattern(path)
     targets = 0.6 * np.nan_to_num(pattern.edges_fold_angle)
-    _, x, report = _fold(path, {}, targets, steps=20)
+    _, x, report = _fold(path, {}, targets, steps=steps)
     assert report["left_branch"] == 0
     creases = np.array([a in "MV" for a in pattern.edges_assignment])
     reached = np.degrees(fold_angles(pattern.faces, pattern.edges, x))[creases]
