@@ -50,7 +50,9 @@ var globals = {{vertTol: 3, foldUseAngles: true, includeCurves: false, url: null
   warn: function (message) {{ warnings.push(String(message)); }},
   noCreasePatternAvailable: function () {{ return false; }},
   setCreasePercent: function () {{}},
-  model: {{buildModel: function (fold, creases) {{ built = {{fold: fold, creases: creases}}; }}}}}};
+  model: {{buildModel: function (fold, creases) {{
+    built = {{fold: fold, creases: creases}};
+  }}}}}};
 globals.pattern = initPattern(globals);
 globals.importer = initImporter(globals);
 function report() {{

@@ -1,0 +1,160 @@
+"""Public crease-pattern files folded as their tools show them (tests/data/public/): FOLD's
+diagonal as a rigid rotation, Rabbit Ear's 3D bird base into its folded frame, its crane a
+tenth of the way, Origami Simulator's patterns at its opening 60 %; folded-flat key frames
+refused up front, naming their hinges."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from kresling.io import fold_angles, read_fold, read_pattern
+from kresling.model import build_pattern_model
+from kresling.simulate import simulate
+from public_files import (MANUAL, ORIGAMI_SIMULATOR, RABBIT_EAR, SHEET, SPEC, STIFF,
+                          held_and_far, read)
+
+
+# -- folded flat: named up front -------------------------------------------------------------
+
+def _flat_folded_creases(pattern) -> int:
+    """Creases (any letter with a hinge) whose two faces lie on each other in the key frame,
+    counted from the geometry alone: |fold angle| within 1 deg of 180."""
+    angles = np.degrees(fold_angles(pattern.faces, pattern.edges, pattern.vertices))
+    hinged = np.array([a in "MVFUJ" for a in pattern.edges_assignment])
+    return int(np.sum(hinged & (np.abs(angles) > 179.0)))
+
+
+@pytest.mark.parametrize("path", [SPEC / "box.fold", SPEC / "simple.fold",
+                                  SPEC / "diagonal-folded.fold",
+                                  RABBIT_EAR / "pleats-angle-3d.fold"], ids=lambda p: p.name)
+def test_a_folded_flat_key_frame_is_refused_up_front_naming_its_hinges(path):
+    pattern = read_fold(path)
+    count = _flat_folded_creases(pattern)
+    assert count > 0
+    word = "hinge is" if count == 1 else "hinges are"
+    with pytest.raises(ValueError, match=rf"{path.name}: {count} {word} folded flat at rest "
+                                         r".*\[pattern\] frame = K"):
+        build_pattern_model(pattern, material=MANUAL)
+
+
+# -- folding as the tools show it ------------------------------------------------------------
+
+def _fold(path, keys, targets, steps):
+    """Fold the pattern's creases (M and V) to ``targets`` [deg], one per edge; the model's
+    vertices at the end and the fold's summary."""
+    pattern = read(path, keys)
+    held, _ = held_and_far(pattern)
+    actuation = [{"edges": [edge], "fold_angle_deg": float(target)}
+                 for edge, letter, target in zip(pattern.edges.tolist(),
+                                                 pattern.edges_assignment, targets)
+                 if letter in "MV"]
+    sim = simulate({"pattern": {"file": str(path), **keys}, "material": STIFF,
+                    "laws": {"fold_limits_deg": [1.0, 359.0]},
+                    "support": [{"nodes": held, "fix": "xyz"}], "actuation": actuation,
+                    "analysis": {"method": "fold", "steps": steps}}, progress=False)
+    assert sim.completed, sim.path.message
+    x = (sim.model.nodes + sim.path.displacement[-1].reshape(-1, 3))[:pattern.num_vertices]
+    return pattern, x, sim.summary()["fold"]
+
+
+def _distances(x):
+    return np.linalg.norm(x[:, None] - x[None], axis=2)
+
+
+def test_the_fold_specs_diagonal_folds_about_its_diagonal_as_a_rigid_rotation():
+    # diagonal-cp.fold: a unit square, one valley from corner 3 to corner 1 with
+    # edges_foldAngle 180 (diagonal-folded.fold is that state). 180 deg itself, faces on
+    # each other, is outside the spring laws' range: fold to 170 deg.
+    cp = read_fold(SPEC / "diagonal-cp.fold", **SHEET)
+    assert cp.edges_fold_angle[4] == 180.0
+    pattern, x, report = _fold(SPEC / "diagonal-cp.fold", SHEET, [170.0] * 5, steps=17)
+    assert report["short_of_target"] == 0 and report["left_branch"] == 0
+    # The closed form: the first triangle (0, 1, 3) is held; corner 2 turns about the
+    # diagonal 3-1 by 170 deg, to 10 deg short of lying on corner 0, on the +z side (a
+    # valley, the faces counter-clockwise seen from +z).
+    assert held_and_far(pattern)[0] == [0, 1, 3]
+    centre, radius = np.array([50.0, 50.0, 0.0]), 50.0 * math.sqrt(2.0)
+    towards_0 = -centre / radius
+    expected = centre + radius * (math.cos(math.radians(10.0)) * towards_0
+                                  + math.sin(math.radians(10.0)) * np.array([0.0, 0.0, 1.0]))
+    np.testing.assert_allclose(x[2], expected, atol=1e-6 * 100.0)      # stiff bars: 1e-6
+    folded = read_fold(SPEC / "diagonal-folded.fold", **SHEET, planarity_tolerance=None)
+    assert np.linalg.norm(x[2] - folded.vertices[2]) == pytest.approx(
+        2 * radius * math.sin(math.radians(5.0)), rel=1e-6)
+
+
+@pytest.mark.parametrize("path, crease_frame, folded_frame", [
+    (RABBIT_EAR / "bird-base-3d.fold", 1, 0), (RABBIT_EAR / "bird-base-3d-cp.fold", 0, 1)],
+    ids=lambda v: getattr(v, "name", str(v)))
+def test_the_bird_base_folds_into_its_files_folded_frame(path, crease_frame, folded_frame):
+    # Rabbit Ear's 3D bird base: a crease pattern and a folded frame that is not flat. Folded
+    # to the folded frame's angles (measured on it), the model takes its shape.
+    folded = read_fold(path, frame=folded_frame, **SHEET)
+    targets = np.degrees(fold_angles(folded.faces, folded.edges, folded.vertices))
+    # The file's own edges_foldAngle agree with its geometry to 0.14 deg.
+    stated = read_fold(path, **SHEET).edges_fold_angle
+    assert np.nanmax(np.abs(stated - targets)) < 0.14
+    pattern, x, report = _fold(path, dict(SHEET, frame=crease_frame), targets, steps=20)
+    assert report["short_of_target"] == 0 and report["left_branch"] == 0
+    # Every distance between vertices as in the folded frame, to 0.12 % of the 100 mm sheet
+    # (measured 0.116 mm: the frame is stress-free for its creases only to the 0.14 deg
+    # above, so the panels strain a little).
+    np.testing.assert_allclose(_distances(x), _distances(folded.vertices), atol=0.12)
+
+
+#: Folding every crease at once from flat, the model sends some creases of these two the other
+#: way (measured: the crane 13 of 102 at a tenth of the way, and 5 to 19 with other
+#: stiffness ratios or N4B5; the flapping bird 2 or 3 of 37 at 10 % to 60 %). Recorded here
+#: until the fold from flat follows the assignments on patterns that are not rigidly
+#: foldable.
+NOT_YET = pytest.mark.xfail(strict=True, reason="simultaneous folding from flat takes a few "
+                                                "creases the other way (see NOT_YET)")
+
+
+@NOT_YET
+def test_the_crane_folds_towards_its_folded_frame_each_crease_in_its_sense():
+    # Rabbit Ear's crane: the key frame is the folded crane (flat: every crease at +-180),
+    # frame 1 its crease pattern. The flat-folded crane is out of reach (faces on each other,
+    # and the pattern is not rigidly foldable: its panels must bend on the way), so the
+    # crease pattern is folded to a tenth of the way, as a simulator's slider shows it
+    # starting; every crease that moves (more than 1 deg) goes the way the crane has it.
+    crane = read_fold(RABBIT_EAR / "crane.fold", **SHEET)
+    creases = np.array([a in "MV" for a in crane.edges_assignment])
+    measured = np.degrees(fold_angles(crane.faces, crane.edges, crane.vertices))
+    assert np.all(np.abs(np.abs(measured[creases]) - 180.0) < 1e-6)
+    # Folded flat, the geometry cannot tell +180 from -180: the letters say which.
+    targets = np.where(np.array(crane.edges_assignment) == "M", -180.0, 180.0)
+    pattern, x, report = _fold(RABBIT_EAR / "crane.fold", dict(SHEET, frame=1), 0.1 * targets,
+                               steps=10)
+    assert report["creases_driven"] == creases.sum() == 102
+    assert report["left_branch"] == 0
+    reached = np.degrees(fold_angles(pattern.faces, pattern.edges, x))[creases]
+    moved = np.abs(reached) > 1.0
+    assert moved.sum() > 0.5 * creases.sum()
+    assert np.all(np.sign(reached[moved]) == np.sign(targets[creases][moved]))
+
+
+@pytest.mark.parametrize("name, steps", [
+    ("birdBase.svg", 20), ("waterbombBase.svg", 20), ("waterbomb.svg", 60),
+    pytest.param("flappingBird.svg", 20, marks=NOT_YET)])
+def test_origami_simulators_patterns_fold_at_its_default_percent_each_crease_in_its_sense(
+        name, steps):
+    # Origami Simulator opens a pattern folded to 60 % of each crease's target, the stroke
+    # opacity times 180 deg (creasePercent = 0.6 in its js/globals.js): fold to that. The
+    # creases cannot all reach it together (none of these is rigidly foldable with its
+    # creases at one common fraction: the panels bend and the creases share the strain), so
+    # what is checked is the sense of every crease and that each goes at least half way.
+    # (The waterbomb tessellation's first increments need to be small: with 10 steps to 30 %
+    # the first one fails even after its bisections.)
+    path = ORIGAMI_SIMULATOR / name
+    pattern = read_pattern(path)
+    targets = 0.6 * np.nan_to_num(pattern.edges_fold_angle)
+    _, x, report = _fold(path, {}, targets, steps=steps)
+    assert report["left_branch"] == 0
+    creases = np.array([a in "MV" for a in pattern.edges_assignment])
+    reached = np.degrees(fold_angles(pattern.faces, pattern.edges, x))[creases]
+    assert np.all(np.sign(reached) == np.sign(targets[creases]))
+    assert np.all(np.abs(reached) > 0.5 * np.abs(targets[creases]))
