@@ -70,6 +70,17 @@ TEST(LinearBending, BadInputNamesTheParameter) {
   }
 }
 
+TEST(LinearBending, AnglesWhoseSumOverflowsPlaceThePinsOnThePolygon) {
+  // angle + pin_offset = inf: the pin line's edge index was a cast of NaN, an index far
+  // outside the polygon (a segfault). The line is placed from each term modulo 2 pi.
+  LinearBendingTest test(8);
+  const Design design(8, 30.0, 0.8, 30.0);
+  for (double big : {1e308, -1.7e308, 1.7976931348623157e308}) {
+    const double k = test.run(design, 1, big, big).stiffness;
+    EXPECT_TRUE(std::isfinite(k) && k > 0) << big << ": " << k;
+  }
+}
+
 TEST(LinearBending, TestersInTwoThreadsGiveTheSerialNumbers) {
   // No state is shared between testers (each has its own specimen, assembler and CHOLMOD
   // workspace): the sweeps run one per thread without the GIL.
