@@ -52,6 +52,10 @@ def test_scales_with_kf():
 @pytest.mark.parametrize("call, message", [
     (lambda: LinearBendingTester(5), r"n = 5 is invalid: must be even for the bending test"),
     (lambda: LinearBendingTester(8, cells=3), r"cells = 3 is invalid"),
+    # a specimen of 22,011 nodes (the fuzz drew up to a million: ~36 GB to assemble)
+    (lambda: LinearBendingTester(10, cells=2000), r"cells = 2000 is invalid .* at most 20000"),
+    (lambda: bending_test(Design(10, 0.8, 30), 1, "5mm", cells=100002),
+     r"cells = 100002 is invalid: .* <= 20000 \(n = 10: cells <= 1816\)"),
     (lambda: LinearBendingTester(8).run(Design(6, 0.8, 30), 1), r"design.n = 6 is invalid"),
     (lambda: LinearBendingTester(8).run(Design(8, 0.8, 30), 2), r"state = 2 is invalid"),
     (lambda: LinearBendingTester(8).run(Design(8, 0.8, 30), 1, angle=math.nan), r"angle = nan"),

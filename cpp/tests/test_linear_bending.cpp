@@ -59,6 +59,9 @@ TEST(LinearBending, ReusedAcrossDesignsGivesTheSameNumbers) {
 TEST(LinearBending, BadInputNamesTheParameter) {
   EXPECT_THROW(LinearBendingTest(7), std::invalid_argument);
   EXPECT_THROW(LinearBendingTest(8, 3), std::invalid_argument);
+  // 22,011 nodes: above kMaxBendingNodes (a million-node specimen would need ~36 GB).
+  EXPECT_THROW(LinearBendingTest(10, 2000), std::invalid_argument);
+  EXPECT_NO_THROW(LinearBendingTest(10, 1816));
   LinearBendingTest test(8);
   EXPECT_THROW(test.run(Design(10, 30.0, 0.8, 15.0), 1), std::invalid_argument);
   EXPECT_THROW(test.run(Design(8, 30.0, 0.8, 15.0), 1, std::nan("")), std::invalid_argument);

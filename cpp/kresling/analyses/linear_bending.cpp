@@ -87,14 +87,7 @@ int checked_n(int n) {
 }
 
 int checked_cells(int cells, int n) {
-  if (cells < 2 || cells % 2 != 0) {
-    throw_invalid("cells", cells, "an even number >= 2 (the load acts on the middle polygon)");
-  }
-  if (static_cast<long long>(cells + 1) * (n + 1) > model::kMaxSpecimenNodes) {
-    throw_invalid("cells", cells,
-                  "small enough that (cells + 1) (n + 1) <= " +
-                      std::to_string(model::kMaxSpecimenNodes) + " nodes");
-  }
+  check_bending_cells(n, cells);
   return cells;
 }
 
