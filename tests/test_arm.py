@@ -159,6 +159,14 @@ def test_a_pretension_the_solver_does_not_reach_is_a_specific_error():
         load_capacity(solver.arm, (1, 0, 0), solver=solver)
 
 
+def test_tendons_too_soft_to_pretension_are_not_a_bad_pull():
+    # EA = 1e-310 N: the pull reaching 1 N overflowed and was refused as "pulls[2] = inf",
+    # a value the caller never gave.
+    solver = ArmSolver(build_arm("1", parameters=ArmParameters(tendon_stiffness=1e-310)))
+    with pytest.raises(EquilibriumNotReached, match="pulls that would reach it are not finite"):
+        solver.pretension(1.0)
+
+
 def test_cli_says_in_one_line_that_the_pretension_was_not_reached(capsys):
     # A valid command line the solver cannot follow: exit 1 (stopped), not 2 (bad input).
     assert main(["arm", "--config", "1", "--capacity", "--tendon-stiffness", "1e12"]) == 1
