@@ -52,6 +52,10 @@ def test_scales_with_kf():
 @pytest.mark.parametrize("call, message", [
     (lambda: LinearBendingTester(5), r"n = 5 is invalid: must be even for the bending test"),
     (lambda: LinearBendingTester(8, cells=3), r"cells = 3 is invalid"),
+    # a specimen of 22,011 nodes (the fuzz drew up to a million: ~36 GB to assemble)
+    (lambda: LinearBendingTester(10, cells=2000), r"cells = 2000 is invalid .* at most 20000"),
+    (lambda: bending_test(Design(10, 0.8, 30), 1, "5mm", cells=100002),
+     r"cells = 100002 is invalid: .* <= 20000 \(n = 10: cells <= 1816\)"),
     (lambda: LinearBendingTester(8).run(Design(6, 0.8, 30), 1), r"design.n = 6 is invalid"),
     (lambda: LinearBendingTester(8).run(Design(8, 0.8, 30), 2), r"state = 2 is invalid"),
     (lambda: LinearBendingTester(8).run(Design(8, 0.8, 30), 1, angle=math.nan), r"angle = nan"),
@@ -80,7 +84,8 @@ def _edge_point(n, angle):
     return j, (j + 1) % n, min(max(s, 0.0), 1.0)
 
 
-def _reference_kb(design, state, angle, pin_offset, cells=4):
+def _reference_kb(design, state, angle, pin_offset, cells=4, reduced=False):
+    """``reduced``: the pin line from each term modulo 2 pi (where their sum overflows)."""
     import numpy as np
     import scipy.sparse
 
@@ -92,7 +97,11 @@ def _reference_kb(design, state, angle, pin_offset, cells=4):
     for level in (0, cells):
         held.add(specimen.centre(level))
         for side in (0.0, math.pi):
-            j, j1, s = _edge_point(n, angle + pin_offset + side - specimen.level_angle[level])
+            pin = angle + pin_offset + side - specimen.level_angle[level]
+            if reduced:
+                pin = (angle % (2 * math.pi) + pin_offset % (2 * math.pi) + side
+                       - specimen.level_angle[level] % (2 * math.pi))
+            j, j1, s = _edge_point(n, pin)
             a, b = specimen.node(level, j), specimen.node(level, j1)
             if s <= 1e-12:
                 held.add(a)
@@ -147,3 +156,16 @@ def test_core_matches_an_independent_condensation(design):
             ours = tester.run(design, state, angle=angle, pin_offset=pin_offset)
             reference = _reference_kb(design, state, angle, pin_offset)
             assert ours == pytest.approx(reference, rel=1e-10), (state, angle, pin_offset)
+
+
+@pytest.mark.parametrize("angle, pin_offset", [(1e308, 1e308), (-1.7e308, -1.7e308),
+                                               (1.7976931348623157e308, 3.0)])
+def test_angles_whose_sum_overflows(angle, pin_offset):
+    # Each angle is finite but angle + pin_offset is not: the pin line's edge index was a
+    # cast of NaN (a segfault). The line is now placed from each term modulo 2 pi.
+    design = Design(8, 0.8, 30)
+    ours = LinearBendingTester(8).run(design, 1, angle=angle, pin_offset=pin_offset)
+    overflows = not math.isfinite(angle + pin_offset + math.pi)
+    reference = _reference_kb(design, 1, angle, pin_offset, reduced=overflows)
+    assert ours > 0
+    assert ours == pytest.approx(reference, rel=1e-10)

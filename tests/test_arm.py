@@ -10,8 +10,9 @@ import numpy as np
 import pytest
 
 from kresling.analyses import snap_through
-from kresling.arm import (ArmParameters, ArmSolver, all_configurations, build_arm,
-                          load_capacity, parse_configuration, pull_until_snap, tip_load)
+from kresling.arm import (ArmParameters, ArmSolver, EquilibriumNotReached, all_configurations,
+                          build_arm, load_capacity, parse_configuration, pull_until_snap,
+                          tip_load)
 from kresling.cli import main
 from kresling.geometry import Design
 
@@ -143,6 +144,35 @@ def test_losing_equilibrium_is_a_result_not_a_crash(capsys):
     assert out["snapped_module"] == 0
     assert "between t =" in out["message"]
     capsys.readouterr()
+
+
+STIFF_TENDONS = ArmParameters(tendon_stiffness=1e12)  # EA [N]: Newton on the pulls fails
+
+
+def test_a_pretension_the_solver_does_not_reach_is_a_specific_error():
+    solver = ArmSolver(build_arm("1", parameters=STIFF_TENDONS))
+    with pytest.raises(EquilibriumNotReached, match="pretension 1.0 N not reached") as caught:
+        solver.pretension(1.0)
+    assert isinstance(caught.value, RuntimeError)  # what callers caught before
+    assert caught.value.target == "pretension 1.0 N" and "no convergence" in caught.value.reason
+    with pytest.raises(EquilibriumNotReached):
+        load_capacity(solver.arm, (1, 0, 0), solver=solver)
+
+
+def test_tendons_too_soft_to_pretension_are_not_a_bad_pull():
+    # EA = 1e-310 N: the pull reaching 1 N overflowed and was refused as "pulls[2] = inf",
+    # a value the caller never gave.
+    solver = ArmSolver(build_arm("1", parameters=ArmParameters(tendon_stiffness=1e-310)))
+    with pytest.raises(EquilibriumNotReached, match="pulls that would reach it are not finite"):
+        solver.pretension(1.0)
+
+
+def test_cli_says_in_one_line_that_the_pretension_was_not_reached(capsys):
+    # A valid command line the solver cannot follow: exit 1 (stopped), not 2 (bad input).
+    assert main(["arm", "--config", "1", "--capacity", "--tendon-stiffness", "1e12"]) == 1
+    err = capsys.readouterr().err
+    assert err.startswith("kresling arm: stopped: pretension 1.0 N not reached")
+    assert err.count("\n") == 1 and "Traceback" not in err
 
 
 @pytest.mark.parametrize("args, name", [

@@ -348,3 +348,14 @@ def test_a_large_polygon_builds_under_n5b8(corners):
     # A regular polygon's centre is its middle, by symmetry.
     assert np.abs(model.nodes[corners]).max() < 1e-9 * 50
     assert model.num_nodes == corners + 1
+
+
+# A solver's refusal names the problem's table and key (it named the solver's argument:
+# "problem: forces: no force acts on a free DOF").
+@pytest.mark.parametrize("load", ["node = 0\nforce = [0.0, 0.0, 1.0]",
+                                  "node = 3\nforce = [0.0, 0.0, 0.0]"])
+def test_a_load_on_no_free_dof_names_the_load_key(tmp_path, load):
+    text = CREASE.replace("node = 3\ndisplacement = [0.0, 0.0, 5.0]", load).replace(
+        'method = "displacement_control"', 'method = "force_control"')
+    one_line_error(run_kresling("simulate", str(problem_file(tmp_path, text)), cwd=tmp_path),
+                   "problem.toml: [[load]] key 'force': no force acts on a free DOF")

@@ -98,6 +98,11 @@ def test_protocol_tendon_lengths():
         (lambda: forward_kinematics(Manipulator(), "101"), "tendon_lengths are required"),
         (lambda: forward_kinematics(Manipulator(), "001", np.ones((3, 3)) * 30), r"must be \(3,\) or \(2, 3\)"),
         (lambda: Manipulator(modules=0), "modules = 0 is invalid: must be an integer >= 1"),
+        # 2^31 - 1 modules ended in MemoryError / std::bad_alloc
+        (lambda: Manipulator(modules=2**31 - 1), r"modules = 2147483647 is invalid: must be an "
+                                                  r"integer >= 1 and <= 10000"),
+        (lambda: forward_kinematics(Manipulator(), "111").backbone(10**9),
+         r"per_module = 1000000000 is invalid: must be an integer >= 1 and <= 3333333"),
         (lambda: Manipulator(frame="dh"), "frame = 'dh' is invalid"),
         (lambda: Manipulator(tendon_radius=-2), "tendon_radius = -2"),
         (lambda: Manipulator(tendon_bounds=(0, 500)), "no constant-curvature arc"),

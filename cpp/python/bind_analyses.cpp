@@ -253,6 +253,7 @@ void bind_arm_analysis(py::module_& m) {
       .def_readonly("completed", &ArmLoadResult::completed)
       .def_readonly("message", &ArmLoadResult::message);
   m.attr("DEFAULT_PRETENSION") = kDefaultPretension;
+  m.attr("MAX_BENDING_NODES") = kresling::analyses::kMaxBendingNodes;
   m.def(
       "arm_tip_load",
       [](ArmSolver& s, const Vector3& load, const Pulls& pulls, double pretension) {

@@ -88,6 +88,8 @@ void bind_kinematics(py::module_& m) {
   m.def("rigid_module_transform", &kk::rigid_module_transform, py::arg("length"),
         "Eqn 30: translation by length [mm] along z, 4x4.");
 
+  m.attr("MAX_MODULES") = kk::kMaxModules;
+  m.attr("MAX_BACKBONE_POINTS") = kk::kMaxBackbonePoints;
   py::class_<kk::ChainModel>(m, "ChainModel")
       .def(py::init([](int modules, double extended_length, double d, int N,
                        kk::FrameConvention convention) {

@@ -124,6 +124,17 @@ TEST(Chain, BackbonePassesThroughTheMarkers) {
   for (int j = 0; j <= 3; ++j) EXPECT_LT((points.row(8 * j) - p.row(j)).norm(), 1e-12);
 }
 
+TEST(Chain, BackboneRefusesMorePointsThanItsBound) {
+  // m * per_module overflowed int (3 * 2^30: a negative size, std::bad_alloc).
+  const ChainModel model = thesis_model();
+  const Configuration c{0, 1, 0};
+  const Eigen::MatrixX3d arcs = module_arcs(model, c, repeated(Eigen::Vector3d(22, 35, 31), 2));
+  EXPECT_THROW(backbone_points(model, c, arcs, 1 << 30), std::invalid_argument);
+  EXPECT_THROW(backbone_points(model, c, arcs, 0), std::invalid_argument);
+  const int most = static_cast<int>((kMaxBackbonePoints - 1) / 3);
+  EXPECT_THROW(backbone_points(model, c, arcs, most + 1), std::invalid_argument);
+}
+
 // Forward-mode derivatives against central differences. Step h = 1e-5 mm: the difference
 // quotient's error is ~h^2 |p'''| / 6 ~ 1e-11 plus rounding ~eps |p| / h ~ 1e-9, hence 1e-7.
 TEST(Chain, TipJacobianMatchesCentralDifferencesIncludingTheStraightCase) {
@@ -207,6 +218,10 @@ TEST(Chain, RejectsBadModelsAndConfigurations) {
   EXPECT_THROW(module_arcs(model, {0, 1, 1}, Eigen::MatrixX3d::Constant(2, 3, 30.0)), std::invalid_argument);
   model.modules = 0;
   EXPECT_THROW(validate(model), std::invalid_argument);
+  model.modules = kMaxModules + 1;  // 2^31 - 1 modules exhausted memory in the callers
+  EXPECT_THROW(validate(model), std::invalid_argument);
+  model.modules = kMaxModules;
+  EXPECT_NO_THROW(validate(model));
   EXPECT_THROW(validate(TendonBounds{10.0, 10.0}, TendonLayout{32.0, 1}), std::invalid_argument);
   // A box whose corner (0, 500, 500) no arc with d = 32 realises.
   EXPECT_THROW(validate(TendonBounds{0.0, 500.0}, TendonLayout{32.0, 1}), std::invalid_argument);

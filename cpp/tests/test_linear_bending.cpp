@@ -59,6 +59,9 @@ TEST(LinearBending, ReusedAcrossDesignsGivesTheSameNumbers) {
 TEST(LinearBending, BadInputNamesTheParameter) {
   EXPECT_THROW(LinearBendingTest(7), std::invalid_argument);
   EXPECT_THROW(LinearBendingTest(8, 3), std::invalid_argument);
+  // 22,011 nodes: above kMaxBendingNodes (a million-node specimen would need ~36 GB).
+  EXPECT_THROW(LinearBendingTest(10, 2000), std::invalid_argument);
+  EXPECT_NO_THROW(LinearBendingTest(10, 1816));
   LinearBendingTest test(8);
   EXPECT_THROW(test.run(Design(10, 30.0, 0.8, 15.0), 1), std::invalid_argument);
   EXPECT_THROW(test.run(Design(8, 30.0, 0.8, 15.0), 1, std::nan("")), std::invalid_argument);
@@ -67,6 +70,17 @@ TEST(LinearBending, BadInputNamesTheParameter) {
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("Lc"), std::string::npos) << e.what();
+  }
+}
+
+TEST(LinearBending, AnglesWhoseSumOverflowsPlaceThePinsOnThePolygon) {
+  // angle + pin_offset = inf: the pin line's edge index was a cast of NaN, an index far
+  // outside the polygon (a segfault). The line is placed from each term modulo 2 pi.
+  LinearBendingTest test(8);
+  const Design design(8, 30.0, 0.8, 30.0);
+  for (double big : {1e308, -1.7e308, 1.7976931348623157e308}) {
+    const double k = test.run(design, 1, big, big).stiffness;
+    EXPECT_TRUE(std::isfinite(k) && k > 0) << big << ": " << k;
   }
 }
 

@@ -242,7 +242,8 @@ class BendingTester:
         Drive to this deflection angle instead, ``L tan(angle)`` [rad].
     steps : int, optional
     cells : int, default 4
-        Even; the load acts on the middle polygon.
+        Even; the load acts on the middle polygon. The specimen's ``(cells + 1) (n + 1)``
+        nodes are at most ``MAX_BENDING_NODES`` (20,000; the thesis's has 55).
     parameters : SpecimenParameters, optional
         Stiffness assignment (the thesis's by default).
     extrapolation : {0, 1, 2, 3}, default 2

@@ -47,7 +47,8 @@ class LinearBendingTester:
     n : int
         Sides of the polygon (even, as in the nonlinear test).
     cells : int, default 4
-        Even; the load acts on the middle polygon.
+        Even; the load acts on the middle polygon. The specimen's ``(cells + 1) (n + 1)``
+        nodes are at most ``MAX_BENDING_NODES`` (20,000; the thesis's has 55).
     parameters : SpecimenParameters, optional
         Stiffness assignment (the thesis's by default).
 
@@ -65,10 +66,10 @@ class LinearBendingTester:
         if cells < 2 or cells % 2:
             raise ValueError(f"cells = {cells!r} is invalid: must be an even number >= 2 (the "
                              "load acts on the middle polygon)")
-        if (cells + 1) * (n + 1) > _core.model.MAX_SPECIMEN_NODES:
+        if (cells + 1) * (n + 1) > _core.analyses.MAX_BENDING_NODES:
             raise ValueError(f"cells = {cells} is invalid for n = {n}: the specimen would have "
                              f"(cells + 1) (n + 1) = {(cells + 1) * (n + 1)} nodes; must have "
-                             f"at most {_core.model.MAX_SPECIMEN_NODES}")
+                             f"at most {_core.analyses.MAX_BENDING_NODES}")
         self.n, self.cells = n, cells
         self.parameters = parameters or SpecimenParameters()
         self._core = _core.analyses.LinearBendingTest(n, cells, self.parameters.to_core())

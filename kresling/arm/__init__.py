@@ -18,12 +18,14 @@ and the report's section :mod:`kresling.report.sections.arm`.
 """
 
 from kresling.arm.analyses import (CAPACITY_DIRECTIONS, DEFAULT_PRETENSION, ArmSolver, ArmState,
-                                   CapacityResult, SnapResult, TipLoadResult, arm_summary,
-                                   load_capacity, pull_until_snap, tip_load)
+                                   CapacityResult, EquilibriumNotReached, SnapResult,
+                                   TipLoadResult, arm_summary, load_capacity, pull_until_snap,
+                                   tip_load)
 from kresling.arm.structure import (THESIS_DESIGN, Arm, ArmParameters, all_configurations,
                                     build_arm, parse_configuration)
 
 __all__ = ["Arm", "ArmParameters", "build_arm", "parse_configuration", "all_configurations",
-           "THESIS_DESIGN", "ArmSolver", "ArmState", "DEFAULT_PRETENSION", "TipLoadResult",
+           "THESIS_DESIGN", "ArmSolver", "ArmState", "EquilibriumNotReached",
+           "DEFAULT_PRETENSION", "TipLoadResult",
            "tip_load", "SnapResult", "pull_until_snap", "CapacityResult", "load_capacity",
            "CAPACITY_DIRECTIONS", "arm_summary"]

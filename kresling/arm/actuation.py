@@ -146,7 +146,9 @@ def actuate(arm: Arm, changes, *, pretension: float = DEFAULT_PRETENSION,
     The kinematic model gets, per flexible module, ``2 Lc + change / f`` (the commands
     shared equally by the ``f`` contracted modules, as the thesis assumes); configurations
     without a contracted module have no kinematic bend (their markers are the straight
-    chain).
+    chain). A step the solver does not reach ends the run (``completed`` False); a
+    pretension it does not reach raises
+    :class:`~kresling.arm.analyses.EquilibriumNotReached`.
     """
     changes = np.atleast_2d(np.asarray(changes, dtype=float))
     if changes.ndim != 2 or changes.shape[1] != 3 or not np.isfinite(changes).all():

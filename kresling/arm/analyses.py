@@ -28,12 +28,31 @@ from kresling import _core
 from kresling._validation import as_float_array, as_integer, as_real, show
 from kresling.arm.structure import Arm
 
-__all__ = ["ArmState", "ArmSolver", "DEFAULT_PRETENSION", "TipLoadResult", "tip_load",
+__all__ = ["ArmState", "ArmSolver", "EquilibriumNotReached", "DEFAULT_PRETENSION", "TipLoadResult", "tip_load",
            "SnapResult", "pull_until_snap", "CapacityResult", "load_capacity",
            "arm_summary"]
 
 #: Tension of each tendon before a tip load is applied [N] (an assumption, see above).
 DEFAULT_PRETENSION = float(_core.analyses.DEFAULT_PRETENSION)
+
+
+class EquilibriumNotReached(RuntimeError):
+    """The solver did not reach the equilibrium asked for (Newton did not converge, or the
+    arm lost stability on the way): the input is valid, this arm cannot be brought there.
+
+    A ``RuntimeError``, so that code catching that keeps working.
+
+    Attributes
+    ----------
+    target : str
+        What was asked for, e.g. ``"pretension 1.0 N"``.
+    reason : str
+        Why the solver stopped.
+    """
+
+    def __init__(self, target: str, reason: str):
+        super().__init__(f"{target} not reached: {reason}")
+        self.target, self.reason = target, reason
 
 
 @dataclass(frozen=True)
@@ -156,12 +175,21 @@ class ArmSolver:
         return [ArmState.from_core(s) for s in path.states], bool(path.completed), path.message
 
     def pretension(self, tension: float, start: ArmState | None = None) -> ArmState:
-        """The equilibrium with every tendon at ``tension`` [N] (from the built arm)."""
+        """The equilibrium with every tendon at ``tension`` [N] (from the built arm).
+
+        Raises
+        ------
+        ValueError
+            For a tension that is not a number.
+        EquilibriumNotReached
+            Where the solver does not get there (say, tendons so stiff that the pulls'
+            Newton iteration does not converge).
+        """
         tension = as_real("pretension", tension)
         start = self.built() if start is None else start
         path = self._core.pretension(start._core, tension)
         if not path.completed:
-            raise RuntimeError(f"pretension {tension} N not reached: {path.message}")
+            raise EquilibriumNotReached(f"pretension {tension} N", path.message)
         return ArmState.from_core(path.states[-1])
 
     def tip_compliance(self, state: ArmState) -> np.ndarray:
@@ -388,6 +416,11 @@ def load_capacity(arm: Arm, direction, *, pretension: float = DEFAULT_PRETENSION
     """The largest tip load along ``direction`` before a module snaps or a taut tendon goes
     slack, from the arm pretensioned to ``pretension`` N per tendon (> 0: a just-taut tendon
     has no slack margin).
+
+    Raises
+    ------
+    EquilibriumNotReached
+        Where the pretension itself is not reached (see :meth:`ArmSolver.pretension`).
 
     Examples
     --------

@@ -58,6 +58,8 @@ def load_capacity_table(modules: int = 3, *, pretension: float = DEFAULT_PRETENS
 
     ``arm_options`` go to :func:`~kresling.arm.structure.build_arm` (``n``, ``lam``, ``Lc``,
     ``R``, ``design``, ``parameters``). About 0.7 s per configuration of three modules.
+    Raises :class:`~kresling.arm.analyses.EquilibriumNotReached` where a configuration's
+    pretension is not reached.
     """
     modules = as_integer("modules", modules, minimum=1)
     directions = CAPACITY_DIRECTIONS if directions is None else directions

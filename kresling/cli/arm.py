@@ -75,7 +75,7 @@ def register(subparsers) -> None:
     parser.add_argument("--max-pull", type=float,
                         help="largest pull for --pull-all/--pull-tendon [mm]")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
-    parser.set_defaults(func=run)
+    parser.set_defaults(func=run_reporting)
 
 
 def _configuration(args) -> str:
@@ -87,6 +87,19 @@ def _configuration(args) -> str:
         return "1" * (3 if args.modules is None else args.modules)
     parse_configuration(args.config, args.modules)  # raises naming the configuration
     return args.config
+
+
+def run_reporting(args) -> int:
+    """:func:`run`, with a solve that does not reach its equilibrium told in one line (exit
+    1, as for a run that stopped early): valid input the arm cannot follow is not bad input
+    (exit 2)."""
+    from kresling.arm import EquilibriumNotReached
+
+    try:
+        return run(args)
+    except EquilibriumNotReached as error:
+        print(f"kresling arm: stopped: {error}", file=sys.stderr)
+        return 1
 
 
 def run(args) -> int:

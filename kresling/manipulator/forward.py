@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling import _core
-from kresling._validation import as_float_array
+from kresling._validation import as_float_array, as_integer
 from kresling.manipulator.model import Manipulator, configuration_name
 
 __all__ = ["ChainState", "forward_kinematics", "flexible_tendon_rows", "to_plot_plane",
@@ -111,9 +111,17 @@ class ChainState(MarkerViews):
         return self.frames[-1, :3, 3].copy()
 
     def backbone(self, per_module: int = 24) -> np.ndarray:
-        """Points along the backbone [mm], shape (m * per_module + 1, 3)."""
+        """Points along the backbone [mm], shape (m * per_module + 1, 3).
+
+        Raises
+        ------
+        ValueError
+            For ``per_module`` < 1, or more than ``MAX_BACKBONE_POINTS`` (10 million) points.
+        """
+        most = (_core.kinematics.MAX_BACKBONE_POINTS - 1) // self.model.modules
+        per_module = as_integer("per_module", per_module, minimum=1, maximum=most)
         return _core.kinematics.backbone_points(self.model._chain, self.configuration, self.arcs,
-                                                int(per_module))
+                                                per_module)
 
 
 def forward_kinematics(model: Manipulator, configuration, tendon_lengths=None) -> ChainState:

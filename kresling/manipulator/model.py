@@ -20,10 +20,14 @@ from kresling._validation import as_integer, as_real, show
 from kresling.geometry import Design
 
 __all__ = ["Manipulator", "parse_configuration", "configuration_name", "all_configurations",
-           "FRAMES"]
+           "FRAMES", "MAX_MODULES"]
 
 #: Frame conventions of a flexible module's end frame (see :class:`Manipulator`).
 FRAMES = ("twist_free", "jones")
+
+#: Most modules a manipulator may have (far beyond any arm built; bounds every per-module
+#: array, and the time of the searches over configurations).
+MAX_MODULES = int(_core.kinematics.MAX_MODULES)
 
 #: The thesis's optimal cell (section 3.5), (n, lam, Lc, R): the default module cell.
 THESIS_CELL = (10, 0.9, 15.0, 30.0)
@@ -41,7 +45,8 @@ class Manipulator:
     Parameters
     ----------
     modules : int, default 3
-        Number of modules m, ``>= 1``; there are ``2**m`` configurations.
+        Number of modules m, ``1 <= m <=`` :data:`MAX_MODULES` (10,000); there are ``2**m``
+        configurations.
     design : Design, default ``Design(10, 0.9, 15.0, 30.0)``
         The cell every module is made of (the thesis's optimum).
     tendon_radius : float, default 32.0
@@ -64,7 +69,7 @@ class Manipulator:
     Raises
     ------
     ValueError
-        For ``modules < 1``, a non-positive ``tendon_radius``, ``segments < 1``, an unknown
+        For ``modules`` outside ``[1, MAX_MODULES]``, a non-positive ``tendon_radius``, ``segments < 1``, an unknown
         frame, or tendon bounds that some arc could not realise.
 
     Examples
@@ -84,7 +89,8 @@ class Manipulator:
 
     def __post_init__(self):
         set_ = object.__setattr__  # frozen: normalise the fields once, here
-        set_(self, "modules", as_integer("modules", self.modules, minimum=1))
+        set_(self, "modules", as_integer("modules", self.modules, minimum=1,
+                                         maximum=MAX_MODULES))
         set_(self, "segments", as_integer("segments", self.segments, minimum=1))
         set_(self, "cells_per_module", as_integer("cells_per_module", self.cells_per_module, minimum=1))
         set_(self, "tendon_radius", as_real("tendon_radius", self.tendon_radius))

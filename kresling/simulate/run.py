@@ -261,6 +261,26 @@ def _where(message: str) -> str:
     return "[pattern] with its [material] (building the model)"
 
 
+#: The problem's table and key behind each solver argument a solver's message can name.
+_SOLVER_KEYS = {"forces": "[[load]] key 'force'", "prescribed": "[[load]] key 'displacement'",
+                "stages": "[[actuation]]", "targets": "[[actuation]] key 'fold_angle_deg'",
+                "monitor_dof": "[analysis] key 'stop'",
+                "max_displacement": "[analysis] stop key 'beyond'",
+                **{key: f"[analysis] key {key!r}" for key in (
+                    "steps", "tolerance", "max_iterations", "initial_load_factor",
+                    "max_increments", "max_load_factor")}}
+
+
+def _solver_where(message: str) -> str:
+    """A solver's message about its arguments, prefixed with the problem's table and key."""
+    if message.startswith("forces: no force acts on a free DOF"):
+        # In the problem's terms: what the [[load]] tables and the supports leave.
+        return ("[[load]] key 'force': no force acts on a free DOF (every force is zero, or "
+                "on a DOF a [[support]] fixes)")
+    name = message.split(" ", 1)[0].rstrip(":").split("[", 1)[0]
+    return f"{_SOLVER_KEYS.get(name, '[analysis]')}: {message}"
+
+
 def _load_vector(problem, num_dofs):
     vector = np.zeros(num_dofs)
     for load in problem.loads:
@@ -346,7 +366,7 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
                                max_displacement=np.inf if monitor is None else monitor.beyond,
                                **common)
     except ValueError as error:
-        raise ValueError(f"{problem.source}: {error}") from None
+        raise ValueError(f"{problem.source}: {_solver_where(str(error))}") from None
     finally:
         if bar is not None:
             bar.close()

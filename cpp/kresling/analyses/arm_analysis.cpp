@@ -363,6 +363,14 @@ ArmPath ArmSolver::pretension(const ArmState& start, double tension, double tole
       }
     }
     const Eigen::Vector3d step = S.fullPivLu().solve(residual);
+    if (!step.allFinite()) {
+      // Tendons so soft (EA = 1e-310 N) that the pull reaching the tension overflows: the
+      // pretension cannot be reached, which is the caller's to report, not a bad pull.
+      path.message =
+          "pretension: the pulls that would reach it are not finite (the tendons' stiffness "
+          "EA is too small)";
+      return path;
+    }
     Pulls next = s.pulls;
     for (int t = 0; t < 3; ++t) next[t] = std::max(0.0, s.pulls[t] + step[t]);
     ArmPath leg = ramp(s, next, s.load);

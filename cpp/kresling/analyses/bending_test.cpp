@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <stdexcept>
 
 #include "kresling/analyses/cell_checks.hpp"
@@ -26,10 +27,7 @@ void check(int n, const BendingOptions& o) {
                   "even for the bending test: each end is pinned at vertices 0 and n/2, which "
                   "must be opposite");
   }
-  if (o.cells < 2 || o.cells % 2 != 0 || o.cells > 100000) {
-    throw_invalid("cells", o.cells,
-                  "an even number >= 2 and <= 100000 (the load acts on the middle polygon)");
-  }
+  check_bending_cells(n, o.cells);
   require_finite("deflection", o.deflection);
   require_finite("deflection_angle", o.deflection_angle);
   if (std::abs(o.deflection_angle) >= 1.0) {
@@ -57,6 +55,21 @@ BendingTest::BendingTest(int n, BendingOptions options)
     for (int j : {0, n / 2, n}) {
       for (int k = 0; k < 3; ++k) fixed_[3 * (level * (n + 1) + j) + k] = 1;
     }
+  }
+}
+
+void check_bending_cells(int n, int cells) {
+  if (cells < 2 || cells % 2 != 0) {
+    throw_invalid("cells", cells, "an even number >= 2 (the load acts on the middle polygon)");
+  }
+  const long long nodes = (static_cast<long long>(cells) + 1) * (static_cast<long long>(n) + 1);
+  if (nodes > kMaxBendingNodes) {
+    long long most = kMaxBendingNodes / (n + 1) - 1;
+    most -= most % 2;  // the largest even count
+    throw_invalid("cells", cells,
+                  "small enough that the specimen's (cells + 1) (n + 1) nodes stay <= " +
+                      std::to_string(kMaxBendingNodes) + " (n = " + std::to_string(n) +
+                      ": cells <= " + std::to_string(most) + ")");
   }
 }
 

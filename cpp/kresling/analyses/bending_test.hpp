@@ -80,6 +80,15 @@ class BendingTest {
 BendingResult bending_test(const geometry::Design& design, int state,
                            const BendingOptions& options = {});
 
+/// Largest specimen of either bending test, (cells + 1) (n + 1) nodes: one assembly and
+/// factorisation of 22,000 nodes takes ~10 s and ~800 MB (the thesis's specimen has 55),
+/// and the specimen builder's own limit (a million nodes) would need ~36 GB.
+inline constexpr long long kMaxBendingNodes = 20000;
+
+/// Throw std::invalid_argument (naming `cells`) for a cell count that is odd, < 2, or
+/// makes more than kMaxBendingNodes nodes with polygons of n sides.
+void check_bending_cells(int n, int cells);
+
 /// Throw std::invalid_argument unless `state` is 0 or 1 and the cells in that state are not
 /// folded flat (check_not_flat: in the contracted state Lc > 0, a cell folded flat has no
 /// module length to bend): the bending tests' (nonlinear and linearised) check.

@@ -44,12 +44,28 @@ struct EdgePoint {
   double s;  ///< the point (1 - s) x_j + s x_{j1}
 };
 
-// Where the ray at `angle` from a regular n-gon's centre (vertex 0 at angle 0) meets its
-// perimeter.
+// The pin line's angle in the end polygon's frame [rad]. Every term is finite, but their
+// sum can overflow (angle = pin_offset = 1e308 gives inf, and the edge index computed from
+// it would be a cast of NaN, an index far outside the polygon): only then is each term
+// reduced modulo 2 pi first, so every sum that is finite keeps its value bit for bit.
+double pin_angle(double angle, double pin_offset, double side, double level_angle) {
+  const double pin = angle + pin_offset + side - level_angle;
+  if (std::isfinite(pin)) return pin;
+  return py_mod(angle, 2 * kPi) + py_mod(pin_offset, 2 * kPi) + side -
+         py_mod(level_angle, 2 * kPi);
+}
+
+// Where the ray at `angle` (finite) from a regular n-gon's centre (vertex 0 at angle 0)
+// meets its perimeter.
 EdgePoint edge_point(int n, double angle) {
+  require_finite("pin angle", angle);
   const double sector = 2 * kPi / n;
   const double phi = py_mod(angle, 2 * kPi);
-  const int j = static_cast<int>(py_mod(py_floordiv(phi, sector), n));
+  const double edge = py_mod(py_floordiv(phi, sector), n);
+  // phi in [0, 2 pi] puts edge in [0, n); the check keeps a rounding surprise from becoming
+  // an index outside the polygon.
+  if (!(edge >= 0 && edge < n)) throw_invalid("pin angle", angle, "a finite angle [rad]");
+  const int j = static_cast<int>(edge);
   const double psi = phi - j * sector;
   const double s = std::sin(psi) / (std::sin(psi) + std::sin(sector - psi));
   return {j, (j + 1) % n, std::min(std::max(s, 0.0), 1.0)};
@@ -71,14 +87,7 @@ int checked_n(int n) {
 }
 
 int checked_cells(int cells, int n) {
-  if (cells < 2 || cells % 2 != 0) {
-    throw_invalid("cells", cells, "an even number >= 2 (the load acts on the middle polygon)");
-  }
-  if (static_cast<long long>(cells + 1) * (n + 1) > model::kMaxSpecimenNodes) {
-    throw_invalid("cells", cells,
-                  "small enough that (cells + 1) (n + 1) <= " +
-                      std::to_string(model::kMaxSpecimenNodes) + " nodes");
-  }
+  check_bending_cells(n, cells);
   return cells;
 }
 
@@ -112,7 +121,7 @@ LinearBendingResult LinearBendingTest::run(const geometry::Design& design, int s
   for (int level : {0, cells_}) {
     held.insert(specimen.node(level, n_));
     for (double side : {0.0, kPi}) {
-      const double pin = angle + pin_offset + side - specimen.level_angle[level];
+      const double pin = pin_angle(angle, pin_offset, side, specimen.level_angle[level]);
       const EdgePoint p = edge_point(n_, pin);
       const Index a = specimen.node(level, p.j), b = specimen.node(level, p.j1);
       if (p.s <= kAtVertex) {

@@ -38,7 +38,10 @@ Eigen::Matrix<Scalar, 3, 1> tip_of_identical_modules(const ChainModel& model,
 }  // namespace
 
 void validate(const ChainModel& model) {
-  if (model.modules < 1) throw_invalid("m", model.modules, "an integer >= 1 (number of modules)");
+  if (model.modules < 1 || model.modules > kMaxModules) {
+    throw_invalid("m", model.modules,
+                  "an integer >= 1 and <= " + std::to_string(kMaxModules) + " (number of modules)");
+  }
   require_positive("L", model.extended_length);
   validate(model.tendons);
 }
@@ -126,7 +129,15 @@ Eigen::MatrixX3d frame_origins(const std::vector<Eigen::Matrix4d>& frames) {
 
 Eigen::MatrixX3d backbone_points(const ChainModel& model, const Configuration& configuration,
                                  const Eigen::MatrixX3d& arcs, int per_module) {
-  if (per_module < 1) throw_invalid("per_module", per_module, "an integer >= 1");
+  validate(model);
+  // m * per_module in 64 bits: in int it overflows (a negative size, std::bad_alloc).
+  const long long max_per_module = (kMaxBackbonePoints - 1) / model.modules;
+  if (per_module < 1 || per_module > max_per_module) {
+    throw_invalid("per_module", per_module,
+                  "an integer >= 1 and <= " + std::to_string(max_per_module) + " (at most " +
+                      std::to_string(kMaxBackbonePoints) + " points for m = " +
+                      std::to_string(model.modules) + " modules)");
+  }
   const auto frames = module_end_frames(model, configuration, arcs);
   Eigen::MatrixX3d points(model.modules * per_module + 1, 3);
   points.row(0).setZero();

@@ -21,9 +21,17 @@
 
 namespace kresling::kinematics {
 
+/// Most modules a chain may have: far beyond any arm built (the thesis's has 3), and
+/// small enough that every per-module array (frames, markers, arcs, the workspace's
+/// sampled configuration) stays a few MB.
+inline constexpr int kMaxModules = 10000;
+
+/// Most points backbone_points returns (m * per_module + 1): 240 MB of coordinates.
+inline constexpr long long kMaxBackbonePoints = 10000000;
+
 /// The hardware of a manipulator.
 struct ChainModel {
-  int modules = 0;                ///< m, >= 1
+  int modules = 0;                ///< m, in [1, kMaxModules]
   double extended_length = 0.0;   ///< L of eqn 30 [mm], the length of an extended module, > 0
   TendonLayout tendons;           ///< d and N of the flexible modules
   FrameConvention convention = FrameConvention::TwistFree;
@@ -32,7 +40,8 @@ struct ChainModel {
 /// Module states, base first: 0 contracted (flexible), 1 extended (rigid).
 using Configuration = std::vector<int>;
 
-/// Throw std::invalid_argument for m < 1, L <= 0 or an invalid tendon layout.
+/// Throw std::invalid_argument for m outside [1, kMaxModules], L <= 0 or an invalid tendon
+/// layout.
 void validate(const ChainModel& model);
 
 /// Throw unless `configuration` has m entries, each 0 or 1.
@@ -59,7 +68,7 @@ std::vector<Eigen::Matrix4d> module_end_frames(const ChainModel& model,
 Eigen::MatrixX3d frame_origins(const std::vector<Eigen::Matrix4d>& frames);
 
 /// Points along the backbone for drawing: `per_module` + 1 points per module (the shared end
-/// points once), shape (m * per_module + 1, 3).
+/// points once), shape (m * per_module + 1, 3), at most kMaxBackbonePoints rows.
 Eigen::MatrixX3d backbone_points(const ChainModel& model, const Configuration& configuration,
                                  const Eigen::MatrixX3d& arcs, int per_module);
 
