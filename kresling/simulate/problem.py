@@ -45,7 +45,7 @@ __all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_proble
 METHODS = ("displacement_control", "force_control", "mgdcm", "fold", "modes")
 #: The states vibration modes (``method = "modes"``) are computed about.
 ABOUT = ("rest",)
-#: How displacement control steps between its samples.
+#: How displacement control and folding step between their samples.
 INCREMENTS = ("fixed", "adaptive")
 #: Displacement control with fixed increments: each Newton solve's start, by the order of its
 #: extrapolation along the path (the previous equilibrium, then through 2, 3 or 4 of them).
@@ -101,8 +101,9 @@ class Analysis:
     stop: MonitorStop | None = None
     tolerance: float = 1e-6
     max_iterations: int = 50
-    #: Displacement control: "fixed" (equal increments, MERLIN2's step control under
-    #: merlin2_compat) or "adaptive" (the same samples, increments by an error estimate).
+    #: Displacement control and fold: "fixed" (equal increments, MERLIN2's step control
+    #: under merlin2_compat) or "adaptive" (the same samples, increments by an error
+    #: estimate).
     increments: str = "fixed"
     #: Displacement control with fixed increments: each increment's Newton start, one of
     #: PREDICTORS ("previous": the last equilibrium, as MERLIN2; the others extrapolate the
@@ -475,14 +476,12 @@ def _read_analysis(t, num_nodes):
         settings["steps"] = t.get("steps", _count, required=True,
                                   allowed="the number of increments (an integer >= 1)"
                                   + (" per stage" if method == "fold" else ""))
-    if method == "displacement_control":
+    if method in ("displacement_control", "fold"):
         settings["increments"] = t.get("increments", _string, "fixed",
                                        choices=INCREMENTS)
         if settings["increments"] == "adaptive" and t.has("predictor"):
             t.fail("predictor", "applies to fixed increments only: adaptive increments start "
                                 "each Newton solve from their own cubic Hermite curves")
-        settings["predictor"] = t.get("predictor", _string, "previous", choices=PREDICTORS)
-    elif method == "fold":
         settings["predictor"] = t.get("predictor", _string, "previous", choices=PREDICTORS)
     elif method == "modes":
         settings["modes"] = t.get("modes", _count, 10)
