@@ -67,12 +67,18 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
   std::vector<double> path_t{0.0};
   std::vector<VectorX> path_u{u};
   int previous_negative = 0;  // stability of the last accepted equilibrium
+  // The secant start's last two equilibria: the one before u and the increment between.
+  VectorX previous_u;
+  double previous_size = 0.0;
   auto attempt = [&](std::string& failure) {
     const double t_new = increment.to;
     if (control.changes_model()) assembler.rebind(control.model_at(t_new));
     VectorX trial = u;
     NewtonOutcome outcome;
-    if (options.extrapolation > 0 && increment.damping == 1.0) {
+    if (options.secant_start) {
+      if (previous_size > 0.0) trial += (increment.size / previous_size) * (u - previous_u);
+      outcome = solve_at(trial);
+    } else if (options.extrapolation > 0 && increment.damping == 1.0) {
       extrapolate(path_t, path_u, options.extrapolation, t_new, trial);
       outcome = solve_at(trial);
       // Two cases where the previous equilibrium is the better start (MERLIN2's): past a
@@ -102,10 +108,18 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
                     : outcome.failure;
       return false;
     }
+    if (options.check) {
+      failure = options.check(increment, trial, outcome);
+      if (!failure.empty()) return false;
+    }
     PathStep step = record_step(assembler, trial, t_new, outcome, recorded, sign);
     if (!finite_step(step)) {
       failure = kStepNotFinite;
       return false;
+    }
+    if (options.secant_start) {
+      previous_u = u;
+      previous_size = increment.size;
     }
     u = trial;
     if (outcome.negative_eigenvalues >= 0) previous_negative = outcome.negative_eigenvalues;

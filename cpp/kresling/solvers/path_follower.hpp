@@ -8,6 +8,9 @@
 /// or an extrapolation along the path; the policy hears whether it was accepted. (Adaptive
 /// increments with dense output, adaptive_path.hpp, follow the same controls.)
 
+#include <functional>
+#include <string>
+
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/solvers/newton.hpp"
 #include "kresling/solvers/path.hpp"
@@ -27,6 +30,14 @@ struct FollowOptions {
   /// rejected (MERLIN2's rule); 0: newton.max_iterations, and every converged increment is
   /// accepted.
   int reject_iterations = 0;
+  /// Start each increment from the secant through the last two equilibria, scaled by the
+  /// increments' sizes (u + size / previous size (u - u_previous)), instead of
+  /// `extrapolation` (the arm's ramps).
+  bool secant_start = false;
+  /// A caller's check of each converged increment before it is accepted, at the control's
+  /// model for the increment's end: the reason to reject it (empty: accept). A stability
+  /// or state condition (the arm's: stable, every cell in its state).
+  std::function<std::string(const Increment&, const VectorX& u, const NewtonOutcome&)> check;
   StopRule stop;                  ///< ends the path early (completed) when it returns true
   ExtraTerms* extra = nullptr;    ///< terms added to every Newton solve (optional)
 };
