@@ -263,9 +263,17 @@ def kresling_specimen(design: Design, states, chirality=None, parameters=None,
         mask = mask.astype(np.uint8).ravel()
     core = _core.model.build_kresling_specimen(
         design._core, list(states), list(chirality), parameters.to_core(), mask.tolist())
+    return specimen_from_core(core, design, states, chirality, parameters)
+
+
+def specimen_from_core(core, design: Design, states, chirality,
+                       parameters: SpecimenParameters) -> KreslingSpecimen:
+    """A :class:`KreslingSpecimen` from the core's (``kresling._core.model.KreslingSpecimen``,
+    built by the core for ``design``, ``states``, ``chirality`` and ``parameters``): how a
+    test's own set-up reaches Python (``kresling.analyses.paths``)."""
     names = np.array(EDGE_FAMILIES)
     return KreslingSpecimen(
-        design=design, states=states, chirality=chirality, parameters=parameters,
+        design=design, states=tuple(states), chirality=tuple(chirality), parameters=parameters,
         model=Model._from_core(core.model),
         bar_family=names[np.asarray(core.bar_family, dtype=int)],
         hinge_family=names[np.asarray(core.hinge_family, dtype=int)],
