@@ -19,8 +19,10 @@ from kresling.model.model import BAR_LAWS, Model
 __all__ = ["SpecimenParameters", "KreslingSpecimen", "kresling_specimen", "EDGE_FAMILIES",
            "alternating_chirality", "MOUNTAIN_CREASES"]
 
-#: Element families by code: the family of a bar is its edge's, of a hinge its axis's.
-EDGE_FAMILIES = ("valley", "mountain", "polygon_edge", "polygon_spoke")
+#: Element families by code: the family of a bar is its edge's, of a hinge its axis's (the
+#: core's EdgeFamily, named in code order).
+EDGE_FAMILIES = tuple(name for name, _ in sorted(_core.model.EdgeFamily.__members__.items(),
+                                                 key=lambda item: int(item[1])))
 
 #: The mountain creases' elements, cut through (the thesis's specimens: no hinge, a weak bar
 #: of area 0.01) or intact (a crease like the valleys: hinge ``kf``, a bar on material).

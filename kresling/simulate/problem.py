@@ -41,6 +41,8 @@ from kresling.simulate.problem_mass import SheetMass, read_masses, read_sheet_ma
 
 __all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_problem", "METHODS"]
 
+#: MGDCM's defaults, as the core declares them.
+_MGDCM = _core.solvers.MgdcmOptions()
 #: Analysis methods and what each needs.
 METHODS = ("displacement_control", "force_control", "mgdcm", "fold", "modes")
 #: The states vibration modes (``method = "modes"``) are computed about.
@@ -95,7 +97,7 @@ class Analysis:
 
     method: str
     steps: int | None = None
-    initial_load_factor: float = 0.01
+    initial_load_factor: float = _MGDCM.initial_load_factor
     max_increments: int = 100
     max_load_factor: float = math.inf
     stop: MonitorStop | None = None
@@ -489,7 +491,8 @@ def _read_analysis(t, num_nodes):
         t.finish()
         return Analysis(**settings)
     else:
-        settings["initial_load_factor"] = t.get("initial_load_factor", _number, 0.01)
+        settings["initial_load_factor"] = t.get("initial_load_factor", _number,
+                                                _MGDCM.initial_load_factor)
         if settings["initial_load_factor"] == 0:
             t.fail("initial_load_factor", "= 0 is invalid: must be non-zero (its sign sets "
                                           "the loading direction)")

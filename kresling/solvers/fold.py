@@ -19,11 +19,14 @@ from kresling.model.fold_angles import fold_angles_deg, hinge_fold_signs, rest_a
 from kresling.solvers._inputs import cholesky_choice, dof_vector
 from kresling.solvers.path import PathResult
 
+#: The core's defaults (the options struct declares them once).
+_DEFAULTS = _core.solvers.FoldOptions()
+
 __all__ = ["solve_fold", "fold", "FoldResult"]
 
 
 def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterations=50,
-               max_bisections=10, extrapolation=0, shift=1e-8, initial=None, stop=None,
+               max_bisections=10, extrapolation=0, shift=_DEFAULTS.shift, initial=None, stop=None,
                cholesky="auto", adaptive=False, adaptive_tolerance=1e-9) -> PathResult:
     """Drive hinges' rest angles to targets, stage after stage, and follow the equilibrium.
 
