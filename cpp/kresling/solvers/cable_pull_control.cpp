@@ -50,13 +50,7 @@ void CablePullControl::apply(double t, VectorX&, VectorX& external) {
   external = forces_from_ + t * (forces_to_ - forces_from_);
 }
 
-std::vector<Index> CablePullControl::recorded_dofs() const {
-  std::vector<Index> dofs;
-  for (Index i = 0; i < base_.num_dofs(); ++i) {
-    if (base_.fixed()[i]) dofs.push_back(i);
-  }
-  return dofs;
-}
+std::vector<Index> CablePullControl::recorded_dofs() const { return supported_dofs(base_); }
 
 std::string CablePullControl::failure_message(int k, int steps, double t, int max_bisections,
                                               const std::string& reason) const {
@@ -66,31 +60,26 @@ std::string CablePullControl::failure_message(int k, int steps, double t, int ma
 }
 
 ControlRates CablePullControl::rates(double t, const VectorX& u) {
-  const auto& families = base_.families();
-  ControlRates r;
-  r.held = VectorX::Zero(u.size());
-  r.external = forces_to_ - forces_from_;
-  r.internal = VectorX::Zero(u.size());
-  r.energies = VectorX::Zero(static_cast<Index>(families.size()));
   double largest = 0.0;  // of the pulls' change over the path [mm]
   for (std::size_t i = 0; i < to_.size(); ++i) largest = std::max(largest, std::abs(to_[i] - from_[i]));
-  if (largest == 0.0) return r;
-  std::size_t index = 0;
-  while (index < families.size() && std::string(families[index]->name()) != "cables") ++index;
-  if (index == families.size()) return r;
-  // Rest lengths moved by +-1e-6 mm at most (a cable's force is smooth in its rest length
-  // away from slack; the kink itself is located, not differentiated across).
-  const double h = 1e-6 / largest;
-  auto evaluate = [&](double at, VectorX& force) {
-    force.setZero(u.size());
-    model::AssemblyTarget target{force};
-    const model::Model m = base_.with_cable_rest_lengths(rest_lengths(at));
-    return m.families()[index]->assemble(m.nodes(), u, target);
-  };
-  VectorX plus, minus;
-  const double e_plus = evaluate(t + h, plus), e_minus = evaluate(t - h, minus);
-  r.internal = (plus - minus) / (2.0 * h);
-  r.energies[static_cast<Index>(index)] = (e_plus - e_minus) / (2.0 * h);
+  ControlRates r;
+  if (largest == 0.0) {
+    r.internal = VectorX::Zero(u.size());
+    r.energies = VectorX::Zero(static_cast<Index>(base_.families().size()));
+  } else {
+    // Rest lengths moved by +-1e-6 mm at most (a cable's force is smooth in its rest
+    // length away from slack; the kink itself is located, not differentiated across).
+    auto cables_at = [&](double at) -> model::FamilyPtr {
+      const model::Model m = base_.with_cable_rest_lengths(rest_lengths(at));
+      for (const auto& family : m.families()) {
+        if (std::string(family->name()) == "cables") return family;
+      }
+      return nullptr;  // not reached: family_rates asks only for a family the model has
+    };
+    r = family_rates(base_, "cables", cables_at, t, 1e-6 / largest, u);
+  }
+  r.held = VectorX::Zero(u.size());
+  r.external = forces_to_ - forces_from_;
   return r;
 }
 

@@ -9,8 +9,6 @@
 
 namespace kresling::solvers {
 
-namespace {
-
 std::vector<Index> supported_dofs(const model::Model& model) {
   std::vector<Index> dofs;
   for (Index i = 0; i < model.num_dofs(); ++i) {
@@ -19,7 +17,27 @@ std::vector<Index> supported_dofs(const model::Model& model) {
   return dofs;
 }
 
-}  // namespace
+ControlRates family_rates(const model::Model& model, const std::string& family,
+                          const std::function<model::FamilyPtr(double)>& family_at, double t,
+                          double h, const VectorX& u) {
+  const auto& families = model.families();
+  ControlRates r;
+  r.internal = VectorX::Zero(u.size());
+  r.energies = VectorX::Zero(static_cast<Index>(families.size()));
+  std::size_t index = 0;
+  while (index < families.size() && families[index]->name() != family) ++index;
+  if (index == families.size()) return r;
+  auto evaluate = [&](double at, VectorX& force) {
+    force.setZero(u.size());
+    model::AssemblyTarget target{force};
+    return family_at(at)->assemble(model.nodes(), u, target);
+  };
+  VectorX plus, minus;
+  const double e_plus = evaluate(t + h, plus), e_minus = evaluate(t - h, minus);
+  r.internal = (plus - minus) / (2.0 * h);
+  r.energies[static_cast<Index>(index)] = (e_plus - e_minus) / (2.0 * h);
+  return r;
+}
 
 ControlRates PathControl::rates(double, const VectorX&) {
   throw std::invalid_argument(
@@ -145,34 +163,28 @@ void RestAngleControl::apply(double t, VectorX&, VectorX& external) {
 }
 
 ControlRates RestAngleControl::rates(double t, const VectorX& u) {
-  const auto& families = base_.families();
-  ControlRates r;
-  r.held = VectorX::Zero(u.size());
-  r.external = (load_to_ - load_from_) * forces_;
-  r.internal = VectorX::Zero(u.size());
-  r.energies = VectorX::Zero(static_cast<Index>(families.size()));
   double largest = 0.0;  // of the rest angles' change over the path [rad]
   for (Index k = 0; k < to_.size(); ++k) largest = std::max(largest, std::abs(to_[k] - from_[k]));
-  if (largest == 0.0) return r;
-  std::size_t index = 0;
-  while (index < families.size() && std::string(families[index]->name()) != "hinges") ++index;
-  // Rest angles moved by +-1e-4 rad at most: the central difference is exact for a moment
-  // affine in the rest angle, and its rounding is ~1e-16 (theta - theta0) / 1e-4 relative.
-  const double h = 1e-4 / largest;
-  std::vector<model::Hinge> hinges = base_.hinges();
-  auto evaluate = [&](double at, VectorX& force) {
-    for (std::size_t i = 0; i < hinges_.size(); ++i) {
-      const auto k = static_cast<Index>(i);
-      hinges[static_cast<std::size_t>(hinges_[i])].rest_angle = from_[k] + at * (to_[k] - from_[k]);
-    }
-    force.setZero(u.size());
-    model::AssemblyTarget target{force};
-    return model::HingeFamily(hinges).assemble(base_.nodes(), u, target);
-  };
-  VectorX plus, minus;
-  const double e_plus = evaluate(t + h, plus), e_minus = evaluate(t - h, minus);
-  r.internal = (plus - minus) / (2.0 * h);
-  if (index < families.size()) r.energies[static_cast<Index>(index)] = (e_plus - e_minus) / (2.0 * h);
+  ControlRates r;
+  if (largest == 0.0) {
+    r.internal = VectorX::Zero(u.size());
+    r.energies = VectorX::Zero(static_cast<Index>(base_.families().size()));
+  } else {
+    // Rest angles moved by +-1e-4 rad at most: the central difference is exact for a
+    // moment affine in the rest angle, and its rounding is ~1e-16 (theta - theta0) / 1e-4
+    // relative.
+    std::vector<model::Hinge> hinges = base_.hinges();
+    auto hinges_at = [&](double at) -> model::FamilyPtr {
+      for (std::size_t i = 0; i < hinges_.size(); ++i) {
+        const auto k = static_cast<Index>(i);
+        hinges[static_cast<std::size_t>(hinges_[i])].rest_angle = from_[k] + at * (to_[k] - from_[k]);
+      }
+      return std::make_shared<model::HingeFamily>(hinges);
+    };
+    r = family_rates(base_, "hinges", hinges_at, t, 1e-4 / largest, u);
+  }
+  r.held = VectorX::Zero(u.size());
+  r.external = (load_to_ - load_from_) * forces_;
   return r;
 }
 

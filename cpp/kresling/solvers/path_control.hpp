@@ -6,6 +6,7 @@
 /// held where it puts them, what external force acts, and which forces a step records; the
 /// path follower (path_follower.hpp) does the stepping for every control alike.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,6 +63,17 @@ class PathControl {
   /// What the path parameter is a fraction of, for messages ("the prescribed motion").
   virtual std::string parameter_name() const { return "the path"; }
 };
+
+/// The model's supported DOFs, in order (whose reactions a load-driven path records).
+std::vector<Index> supported_dofs(const model::Model& model);
+
+/// The rates at fixed u of a model parameter that changes one family of `model` (named
+/// `family`; `family_at(t)` builds it at parameter t): its internal force's and energy's
+/// central differences in t with step h (held and external left empty). Zero rates when
+/// the model has no such family.
+ControlRates family_rates(const model::Model& model, const std::string& family,
+                          const std::function<model::FamilyPtr(double)>& family_at, double t,
+                          double h, const VectorX& u);
 
 /// Force control: external = t * forces on the model, supports' reactions recorded.
 class LoadControl final : public PathControl {
