@@ -223,3 +223,29 @@ def test_a_vertex_asked_for_an_impossible_fold_stores_energy():
     result = fold(pm, targets, 20)
     assert result.completed, result.path.message
     assert result.path.energy[-1] > 0.1 * _held_energy(pm, targets)
+
+
+def test_adaptive_increments_fold_a_miura_sheet_as_the_fixed_ones_do():
+    # The same fold from flat in 100 samples, adaptive increments against fixed ones with a
+    # cubic start: the samples agree to the Newton tolerance (1e-6 mm; measured 1.1e-7 mm)
+    # and their stored energy to 1e-8 of its largest value (measured 2e-10), with fewer
+    # Newton iterations (measured 109 against 176).
+    pattern, folded, pm = _miura_problem()
+    by_edge = {tuple(sorted(e)): a for e, a in zip(folded.edges.tolist(), folded.edges_fold_angle)}
+    targets = {h: by_edge[tuple(sorted(pm.model.hinges[h][:2].tolist()))]
+               for h, f in enumerate(pm.hinge_family) if f != "bend"}
+    fixed = fold(pm, targets, 100, extrapolation=3).path
+    adaptive = fold(pm, targets, 100, adaptive=True).path
+    assert fixed.completed and adaptive.completed, adaptive.message
+    np.testing.assert_array_equal(adaptive.load_factor, fixed.load_factor)
+    assert np.abs(adaptive.displacement - fixed.displacement).max() <= 1e-6
+    assert np.abs(adaptive.energy - fixed.energy).max() <= 1e-8 * fixed.energy.max()
+    assert adaptive.newton_iterations < fixed.newton_iterations
+
+
+def test_adaptive_fold_options_are_checked():
+    pattern, pm = _two_panels()
+    with pytest.raises(ValueError, match="adaptive_tolerance"):
+        solve_fold(pm.model, [([0], [2.0])], 5, adaptive=True, adaptive_tolerance=1e-3)
+    with pytest.raises(ValueError, match="adaptive"):
+        solve_fold(pm.model, [([0], [2.0])], 5, adaptive="yes")

@@ -97,3 +97,36 @@ def test_a_path_adaptive_increments_cannot_finish_is_followed_in_fixed_steps():
     np.testing.assert_array_equal(adaptive.constraint_force, fixed.constraint_force)
     assert adaptive.attempted_increments > fixed.attempted_increments
     assert adaptive.displacement[-1, 8] + 1.0 < -1.0 / np.sqrt(3.0)  # the apex snapped through
+
+
+def slack_cable_truss():
+    """A shallow two-bar truss (half-span 10 mm, rise 5 mm) whose apex, free in z, hangs on a
+    cable to a node 10 mm below it; the cable's rest length, 11 mm, leaves it slack."""
+    nodes = np.array([[-10.0, 0, 0], [10.0, 0, 0], [0, 0, 5.0], [0, 0, -5.0]])
+    fixed = np.array([[1, 1, 1], [1, 1, 1], [1, 1, 0], [1, 1, 0]], dtype=bool)
+    return Model(nodes, [[0, 2], [1, 2]], np.zeros((0, 4), dtype=int), bar_modulus=100.0,
+                 hinge_stiffness=np.zeros(0), bar_law="linear", fixed=fixed,
+                 cables=[([2, 3], 50.0, 11.0)])
+
+
+def test_adaptive_increments_locate_a_cable_going_taut():
+    # The cable's end driven 3 mm down: slack for the first third, then taut and pulling the
+    # apex down (the drive's force has a kink at t = 1/3, between samples 33 and 34). The
+    # adaptive increments locate that kink as they do a hinge law's: the samples they read
+    # off their Hermite curves match the fixed steps' converged ones to 1e-8 of the largest
+    # force (measured 5.7e-10; a cubic across the kink cannot follow its slope's jump).
+    model = slack_cable_truss()
+    prescribed = np.zeros(12)
+    prescribed[11] = -3.0
+    fixed = solve_displacement_control(model, prescribed, 100, extrapolation=3)
+    adaptive = solve_displacement_control(model, prescribed, 100, adaptive=True)
+    assert fixed.completed and adaptive.completed, adaptive.message
+    np.testing.assert_array_equal(adaptive.load_factor, fixed.load_factor)
+    scale = np.abs(fixed.constraint_force).max()
+    assert np.abs(fixed.constraint_force[:33]).max() == 0.0 < fixed.constraint_force[33, 0]
+    assert np.abs(adaptive.constraint_force - fixed.constraint_force).max() <= 1e-8 * scale
+    assert np.abs(adaptive.displacement - fixed.displacement).max() <= 1e-8
+    # Followed adaptively on both sides of the kink (not in the fixed steps' fallback).
+    interpolated = np.flatnonzero(adaptive.iterations == 0)
+    assert interpolated.min() < 33 and interpolated.max() > 34
+    assert adaptive.attempted_increments < fixed.attempted_increments

@@ -332,6 +332,14 @@ void bind_analyses(py::module_& m) {
           },
           py::arg("design"), py::arg("state"))
       .def(
+          "setup",
+          [](analyses::BendingTest& test, const Design& design, int state) {
+            analyses::DriveSetup s = test.setup(design, state);
+            return py::make_tuple(std::move(s.specimen), std::move(s.prescribed));
+          },
+          py::arg("design"), py::arg("state"),
+          "(specimen, prescribed): the specimen with the test's supports and the motion")
+      .def(
           "run_both_states",
           [](analyses::BendingTest& test, const std::vector<std::array<double, 3>>& designs) {
             // A sweep's chunk in one call, the GIL released throughout: per design (lam, Lc,
@@ -442,7 +450,15 @@ void bind_analyses(py::module_& m) {
             }
             return r;
           },
-          py::arg("design"));
+          py::arg("design"))
+      .def(
+          "setup",
+          [](analyses::SnapThroughTest& test, const Design& design) {
+            analyses::DriveSetup s = test.setup(design);
+            return py::make_tuple(std::move(s.specimen), std::move(s.prescribed));
+          },
+          py::arg("design"),
+          "(specimen, prescribed): the specimen with the test's supports and the motion");
 }
 
 }  // namespace kresling::python

@@ -112,6 +112,13 @@ std::vector<int> families(const std::vector<model::EdgeFamily>& f) {
 // Kresling specimens (model/kresling_specimen.hpp): their parameters, the built specimen.
 void bind_specimen(py::module_& m) {
   using model::SpecimenParameters;
+  // The element families of a specimen by their codes: kresling.model.EDGE_FAMILIES reads
+  // its names from here.
+  py::enum_<model::EdgeFamily>(m, "EdgeFamily", "What an edge of a Kresling specimen is")
+      .value("valley", model::EdgeFamily::Valley)
+      .value("mountain", model::EdgeFamily::Mountain)
+      .value("polygon_edge", model::EdgeFamily::PolygonEdge)
+      .value("polygon_spoke", model::EdgeFamily::PolygonSpoke);
   py::class_<SpecimenParameters>(m, "SpecimenParameters")
       .def(py::init<>())
       .def_readwrite("kf", &SpecimenParameters::kf)

@@ -192,7 +192,9 @@ void bind_solvers(py::module_& m) {
 
   bind_path_options<FoldOptions>(m, "FoldOptions")
       .def_readwrite("max_bisections", &FoldOptions::max_bisections)
-      .def_readwrite("extrapolation", &FoldOptions::extrapolation);
+      .def_readwrite("extrapolation", &FoldOptions::extrapolation)
+      .def_readwrite("adaptive", &FoldOptions::adaptive)
+      .def_readwrite("adaptive_tolerance", &FoldOptions::adaptive_tolerance);
 
   m.def(
       "fold",

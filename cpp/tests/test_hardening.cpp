@@ -25,6 +25,7 @@
 #include "kresling/solvers/increments.hpp"
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/newton.hpp"
+#include "kresling/solvers/path_control.hpp"
 
 using namespace kresling;
 using geometry::Design;
@@ -77,32 +78,37 @@ TEST(Hardening, SubnormalValuesAreFormatted) {
 // once, 47 acted like 15). The count is now checked against a documented bound.
 TEST(Hardening, BisectionsBeyondTheBoundAreRefused) {
   for (int bisections : {-1, 31, 32, 47}) {
-    solvers::PathResult r;
-    const std::string message = invalid_message([&] {
-      solvers::march(1, bisections, r, [](double, double, std::string&) { return false; },
-                     [] { return false; }, [](int, double, const std::string&) { return ""; });
-    });
+    const std::string message =
+        invalid_message([&] { solvers::EqualIncrements policy(1, bisections); });
     EXPECT_EQ(message, "max_bisections = " + std::to_string(bisections) +
                            " is invalid: must be an integer in [0, 30]");
   }
 }
 
-// At the bound the smallest increment is 1/2^30 of a nominal one: a march that never
-// succeeds tries the full increment and 30 halvings, then stops.
+// At the bound the smallest increment is 1/2^30 of a nominal one: equal increments that
+// never succeed try the full increment and 30 halvings, then stop.
 TEST(Hardening, ThirtyBisectionsStopAfterThirtyOneAttempts) {
+  const DrivenCell c = driven_cell(Design(4, 30.0, 0.7, 30.0), 1.0);
+  solvers::LoadControl control(c.specimen.model, VectorX::Zero(c.specimen.model.num_dofs()));
+  solvers::EqualIncrements policy(1, solvers::kMaxBisections);
   solvers::PathResult r;
+  solvers::Increment increment;
   int attempts = 0;
-  const bool completed = solvers::march(
-      1, solvers::kMaxBisections, r,
-      [&](double, double, std::string& failure) {
-        ++attempts;
-        failure = "no";
-        return false;
-      },
-      [] { return false; }, [](int, double, const std::string&) { return std::string("failed"); });
-  EXPECT_FALSE(completed);
+  double smallest = 1.0;
+  while (policy.next(increment)) {
+    ++attempts;
+    ++r.attempted_increments;
+    smallest = increment.to - increment.from;
+    if (!policy.rejected(increment, "no")) break;
+  }
+  policy.finish(control, r);
+  EXPECT_FALSE(r.completed);
   EXPECT_EQ(attempts, solvers::kMaxBisections + 1);
-  EXPECT_EQ(r.message, "failed");
+  EXPECT_EQ(smallest, std::ldexp(1.0, -solvers::kMaxBisections));
+  EXPECT_EQ(r.failed_increment, attempts);
+  EXPECT_EQ(r.message,
+            "no equilibrium found beyond load factor 0 (load step 1 of 1, 30 bisections; a "
+            "limit point? use MGDCM); at full size: no");
 }
 
 TEST(Hardening, StepCountsHaveAnUpperBound) {

@@ -3,9 +3,10 @@ increment, for views and animations.
 
 :func:`~kresling.analyses.bending_test` and :func:`~kresling.analyses.snap_through` run in
 C++ and keep, of each increment, what their results need (forces, deflections, energies).
-The functions here set up the same specimen, supports and drive and follow the same path
+The functions here take the C++ tests' own set-up (specimen, supports and drive:
+``setup`` of the core's ``BendingTest`` and ``SnapThroughTest``) and follow the same path
 with :func:`kresling.solvers.solve_displacement_control` (same solver options), which keeps
-every node's displacement: the curves they give are those of the C++ tests (to round-off).
+every node's displacement: the curves they give are those of the C++ tests.
 
 - :func:`bending_path`: a four-cell specimen in one state, nodes 0 and n/2 and the centre of
   the end polygons pinned, the middle polygon driven sideways (-y);
@@ -19,12 +20,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from kresling.analyses.bending import PROTOCOLS, adaptive_options, require_even_n
+from kresling import _core
+from kresling._validation import as_integer
+from kresling.analyses.bending import adaptive_options, protocol_settings, require_even_n
 from kresling.analyses.snap_through import DEFAULT_EXTRAPOLATION, DEFAULT_STEPS
 from kresling.analyses.travel import travel_fraction
-from kresling.geometry import Design, state_index
-from kresling.model.kresling_specimen import kresling_specimen
-from kresling.solvers.displacement_control import solve_displacement_control
+from kresling.geometry import Design, as_design, state_index
+from kresling.model.kresling_specimen import (SpecimenParameters, alternating_chirality,
+                                              specimen_from_core)
+from kresling.solvers.displacement_control import (displacement_control_options,
+                                                   solve_displacement_control)
 
 __all__ = ["BendingPath", "SnapThroughPath", "bending_path", "snap_through_path"]
 
@@ -161,16 +166,8 @@ def bending_path(design: Design, state, protocol="5mm", *, deflection=None,
     >>> bent.path.displacement.shape, round(float(bent.moment[-1] / bent.angle[-1]), 4)
     ((10, 165), 3.2835)
     """
-    if protocol not in PROTOCOLS:
-        raise ValueError(f"protocol = {protocol!r} is invalid: must be one of {sorted(PROTOCOLS)}")
+    settings = protocol_settings(protocol, deflection, deflection_angle, steps)
     state = state_index(state)
-    settings = dict(PROTOCOLS[protocol])
-    if deflection is not None:
-        settings.update(deflection=float(deflection), deflection_angle=0.0)
-    if deflection_angle is not None:
-        settings.update(deflection_angle=float(deflection_angle))
-    if steps is not None:
-        settings["steps"] = steps
     n = require_even_n(design.n)
     psi = design.psi_con if state == 0 else design.psi_ext
     if psi < _MIN_FACET_ANGLE:
@@ -192,14 +189,16 @@ def bending_path(design: Design, state, protocol="5mm", *, deflection=None,
     if drive == 0.0 or abs(drive) >= design.R:
         raise ValueError(f"deflection = {drive!r} is invalid: must be non-zero and smaller than "
                          f"the polygon's radius R = {design.R:g} mm")
-    fixed = np.zeros(((cells + 1) * (n + 1), 3), dtype=bool)
-    for level in (0, cells):
-        for j in (0, n // 2, n):
-            fixed[level * (n + 1) + j] = True
-    specimen = kresling_specimen(design, [state] * cells, parameters=parameters, fixed=fixed)
-    prescribed = np.zeros(fixed.shape)
-    prescribed[specimen.level_nodes(cells // 2), 1] = -drive
     adaptive, solver = adaptive_options(protocol, extrapolation, adaptive, solver)
+    # The bending test's own specimen, supports and drive (only the set-up: the path is
+    # followed here, keeping every node).
+    parameters = parameters or SpecimenParameters()
+    tester = _core.analyses.BendingTest(n, settings["deflection"], settings["deflection_angle"],
+                                        settings["steps"], cells, parameters.to_core(),
+                                        displacement_control_options())
+    core, prescribed = tester.setup(design._core, state)
+    specimen = specimen_from_core(core, design, [state] * cells, alternating_chirality(cells),
+                                  parameters)
     path = solve_displacement_control(specimen.model, prescribed, settings["steps"],
                                       extrapolation=extrapolation, adaptive=adaptive, **solver)
     centre_y = 3 * specimen.centre(cells // 2) + 1
@@ -238,12 +237,12 @@ def snap_through_path(design: Design, *, steps=DEFAULT_STEPS, parameters=None,
     >>> round(float(snap.force[peak]), 2), round(float(snap.travel[peak]), 2)
     (4.34, 5.82)
     """
-    n = design.n
-    fixed = np.zeros((2 * (n + 1), 3), dtype=bool)
-    fixed[: n + 1] = True
-    specimen = kresling_specimen(design, [1], [1], parameters=parameters, fixed=fixed)
-    prescribed = np.zeros(fixed.shape)
-    prescribed[specimen.level_nodes(1), 2] = -(design.height(1) - design.height(0))
+    # The snap-through test's own specimen, supports and drive.
+    parameters = parameters or SpecimenParameters()
+    tester = _core.analyses.SnapThroughTest(design.n, as_integer("steps", steps, minimum=1),
+                                            parameters.to_core(), displacement_control_options())
+    core, prescribed = tester.setup(as_design(design)._core)
+    specimen = specimen_from_core(core, design, [1], [1], parameters)
     path = solve_displacement_control(specimen.model, prescribed, steps,
                                       extrapolation=extrapolation, **solver)
     displacement = np.asarray(path.displacement, dtype=float).reshape(-1, specimen.model.num_dofs)

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from types import MappingProxyType
 
-__all__ = ["CONVENTIONS", "FAMILY_OF_FOLD", "crease_kind"]
+__all__ = ["CONVENTIONS", "FAMILY_OF_FOLD", "FAMILY_OF_LETTER", "FOLD_FAMILIES", "crease_kind"]
 
 #: The conventions :func:`crease_kind` knows.
 CONVENTIONS = ("fold", "origami_simulator")
@@ -28,6 +28,11 @@ CONVENTIONS = ("fold", "origami_simulator")
 #: The fold family of each letter that is a fold in some convention.
 FAMILY_OF_FOLD = MappingProxyType({"M": "mountain", "V": "valley", "F": "flat",
                                    "U": "unassigned"})
+#: The fold families, in that order.
+FOLD_FAMILIES = tuple(FAMILY_OF_FOLD.values())
+#: The name of every FOLD assignment letter's edges: the folds' families and the others'.
+FAMILY_OF_LETTER = MappingProxyType({**FAMILY_OF_FOLD, "B": "boundary", "C": "cut",
+                                     "J": "join"})
 
 _KINDS = {
     "fold": {"M": "fold", "V": "fold", "F": "fold", "U": "fold", "J": "bend", "C": "cut",

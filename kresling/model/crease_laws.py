@@ -8,11 +8,9 @@ from types import MappingProxyType
 import numpy as np
 
 from kresling.laws import BAR_LAWS, SPRING_LAWS
-from kresling.model.crease_kinds import FAMILY_OF_FOLD
+from kresling.model.crease_kinds import FOLD_FAMILIES
 
 __all__ = ["HingeLaw", "CreaseLaws"]
-
-FOLD_FAMILIES = tuple(FAMILY_OF_FOLD.values())
 
 
 @dataclass(frozen=True)

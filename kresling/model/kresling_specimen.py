@@ -19,8 +19,10 @@ from kresling.model.model import BAR_LAWS, Model
 __all__ = ["SpecimenParameters", "KreslingSpecimen", "kresling_specimen", "EDGE_FAMILIES",
            "alternating_chirality", "MOUNTAIN_CREASES"]
 
-#: Element families by code: the family of a bar is its edge's, of a hinge its axis's.
-EDGE_FAMILIES = ("valley", "mountain", "polygon_edge", "polygon_spoke")
+#: Element families by code: the family of a bar is its edge's, of a hinge its axis's (the
+#: core's EdgeFamily, named in code order).
+EDGE_FAMILIES = tuple(name for name, _ in sorted(_core.model.EdgeFamily.__members__.items(),
+                                                 key=lambda item: int(item[1])))
 
 #: The mountain creases' elements, cut through (the thesis's specimens: no hinge, a weak bar
 #: of area 0.01) or intact (a crease like the valleys: hinge ``kf``, a bar on material).
@@ -263,9 +265,17 @@ def kresling_specimen(design: Design, states, chirality=None, parameters=None,
         mask = mask.astype(np.uint8).ravel()
     core = _core.model.build_kresling_specimen(
         design._core, list(states), list(chirality), parameters.to_core(), mask.tolist())
+    return specimen_from_core(core, design, states, chirality, parameters)
+
+
+def specimen_from_core(core, design: Design, states, chirality,
+                       parameters: SpecimenParameters) -> KreslingSpecimen:
+    """A :class:`KreslingSpecimen` from the core's (``kresling._core.model.KreslingSpecimen``,
+    built by the core for ``design``, ``states``, ``chirality`` and ``parameters``): how a
+    test's own set-up reaches Python (``kresling.analyses.paths``)."""
     names = np.array(EDGE_FAMILIES)
     return KreslingSpecimen(
-        design=design, states=states, chirality=chirality, parameters=parameters,
+        design=design, states=tuple(states), chirality=tuple(chirality), parameters=parameters,
         model=Model._from_core(core.model),
         bar_family=names[np.asarray(core.bar_family, dtype=int)],
         hinge_family=names[np.asarray(core.hinge_family, dtype=int)],

@@ -29,7 +29,7 @@ from kresling import _core
 from kresling.io import separate_cuts
 from kresling.model.calibration import (ManualProperties, SheetMaterial, SheetStiffness,
                                         calibrate_sheet)
-from kresling.model.crease_kinds import CONVENTIONS, FAMILY_OF_FOLD, crease_kind
+from kresling.model.crease_kinds import CONVENTIONS, FAMILY_OF_FOLD, FOLD_FAMILIES, crease_kind
 from kresling.model.crease_laws import CreaseLaws, HingeLaw
 from kresling.model.model import Model
 from kresling.model.panel_elements import PanelElements, build_panel_elements
@@ -41,7 +41,6 @@ __all__ = ["HingeLaw", "CreaseLaws", "PatternModel", "build_pattern_model", "FOL
 #: FOLD edge assignments that carry a fold hinge (in FOLD's convention), and the family
 #: each gives.
 FAMILY_OF_ASSIGNMENT = FAMILY_OF_FOLD
-FOLD_FAMILIES = tuple(FAMILY_OF_ASSIGNMENT.values())
 #: Every hinge family: the fold families and "bend" (hinges inside panels and on joins).
 HINGE_FAMILIES = FOLD_FAMILIES + ("bend",)
 

@@ -41,11 +41,13 @@ from kresling.simulate.problem_mass import SheetMass, read_masses, read_sheet_ma
 
 __all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_problem", "METHODS"]
 
+#: MGDCM's defaults, as the core declares them.
+_MGDCM = _core.solvers.MgdcmOptions()
 #: Analysis methods and what each needs.
 METHODS = ("displacement_control", "force_control", "mgdcm", "fold", "modes")
 #: The states vibration modes (``method = "modes"``) are computed about.
 ABOUT = ("rest",)
-#: How displacement control steps between its samples.
+#: How displacement control and folding step between their samples.
 INCREMENTS = ("fixed", "adaptive")
 #: Displacement control with fixed increments: each Newton solve's start, by the order of its
 #: extrapolation along the path (the previous equilibrium, then through 2, 3 or 4 of them).
@@ -95,14 +97,15 @@ class Analysis:
 
     method: str
     steps: int | None = None
-    initial_load_factor: float = 0.01
+    initial_load_factor: float = _MGDCM.initial_load_factor
     max_increments: int = 100
     max_load_factor: float = math.inf
     stop: MonitorStop | None = None
     tolerance: float = 1e-6
     max_iterations: int = 50
-    #: Displacement control: "fixed" (equal increments, MERLIN2's step control under
-    #: merlin2_compat) or "adaptive" (the same samples, increments by an error estimate).
+    #: Displacement control and fold: "fixed" (equal increments, MERLIN2's step control
+    #: under merlin2_compat) or "adaptive" (the same samples, increments by an error
+    #: estimate).
     increments: str = "fixed"
     #: Displacement control with fixed increments: each increment's Newton start, one of
     #: PREDICTORS ("previous": the last equilibrium, as MERLIN2; the others extrapolate the
@@ -475,14 +478,12 @@ def _read_analysis(t, num_nodes):
         settings["steps"] = t.get("steps", _count, required=True,
                                   allowed="the number of increments (an integer >= 1)"
                                   + (" per stage" if method == "fold" else ""))
-    if method == "displacement_control":
+    if method in ("displacement_control", "fold"):
         settings["increments"] = t.get("increments", _string, "fixed",
                                        choices=INCREMENTS)
         if settings["increments"] == "adaptive" and t.has("predictor"):
             t.fail("predictor", "applies to fixed increments only: adaptive increments start "
                                 "each Newton solve from their own cubic Hermite curves")
-        settings["predictor"] = t.get("predictor", _string, "previous", choices=PREDICTORS)
-    elif method == "fold":
         settings["predictor"] = t.get("predictor", _string, "previous", choices=PREDICTORS)
     elif method == "modes":
         settings["modes"] = t.get("modes", _count, 10)
@@ -490,7 +491,8 @@ def _read_analysis(t, num_nodes):
         t.finish()
         return Analysis(**settings)
     else:
-        settings["initial_load_factor"] = t.get("initial_load_factor", _number, 0.01)
+        settings["initial_load_factor"] = t.get("initial_load_factor", _number,
+                                                _MGDCM.initial_load_factor)
         if settings["initial_load_factor"] == 0:
             t.fail("initial_load_factor", "= 0 is invalid: must be non-zero (its sign sets "
                                           "the loading direction)")

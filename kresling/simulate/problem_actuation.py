@@ -6,10 +6,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from kresling.model.crease_kinds import FOLD_FAMILIES
+
 __all__ = ["Actuation", "Spring", "ACTUATION_FAMILIES", "read_actuations", "read_springs"]
 
 #: The families an actuation may name: a fold family, or "fold" for every fold hinge.
-ACTUATION_FAMILIES = ("mountain", "valley", "flat", "unassigned", "join", "fold")
+ACTUATION_FAMILIES = FOLD_FAMILIES + ("join", "fold")
 
 
 @dataclass(frozen=True)

@@ -23,8 +23,8 @@ __all__ = ["Simulation", "PathState", "simulate", "build_problem_model"]
 
 logger = logging.getLogger(__name__)
 
-#: The adaptive increments' error target (relative to the largest drive force so far) for any
-#: crease pattern: tighter than the bending test's 1e-9 because the estimate assumes a smooth
+#: The adaptive increments' error target (relative to the largest drive force so far, or for
+#: a fold the largest stored energy) for any crease pattern: tighter than the bending test's 1e-9 because the estimate assumes a smooth
 #: path, which MERLIN2's super-linear bend law is not at rest. On its GMiura sheet 1e-9 let
 #: one sample's reaction err by 1.65e-8 of the largest; 3e-10 keeps every sample within
 #: 3.8e-10 (and costs 2 % more time).
@@ -176,6 +176,9 @@ def stepping(problem) -> str:
     """How the problem's path is stepped, in words (the summary's record of it)."""
     analysis = problem.analysis
     if analysis.method == "fold":
+        if analysis.increments == "adaptive":
+            return ("adaptive increments of the creases' rest angles, the equal samples read "
+                    "off the path between them")
         start = ("the previous equilibrium" if analysis.predictor == "previous"
                  else f"a {analysis.predictor} extrapolation")
         return f"equal increments of the creases' rest angles, each started from {start}"
@@ -355,8 +358,10 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
             path = solve_force_control(model, vector, analysis.steps, **common)
         elif analysis.method == "fold":
             plan = fold_plan(problem, pm)
+            adaptive = analysis.increments == "adaptive"
             path = solve_fold(model, plan.stages, analysis.steps, forces=vector,
-                              extrapolation=PREDICTORS.index(analysis.predictor), **common)
+                              extrapolation=PREDICTORS.index(analysis.predictor),
+                              adaptive=adaptive, adaptive_tolerance=ADAPTIVE_TOLERANCE, **common)
         else:
             monitor = analysis.stop
             path = solve_mgdcm(model, vector, initial_load_factor=analysis.initial_load_factor,

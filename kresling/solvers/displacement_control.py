@@ -7,9 +7,12 @@ from kresling.solvers._inputs import cholesky_choice, dof_vector
 from kresling._validation import as_bool, as_integer, as_positive_real, as_real
 from kresling.solvers.path import PathResult
 
+#: The core's defaults (the options struct declares them once).
+_DEFAULTS = _core.solvers.DisplacementControlOptions()
+
 
 def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_iterations=50,
-                               reject_iterations=25, max_bisections=10, shift=1e-8,
+                               reject_iterations=25, max_bisections=10, shift=_DEFAULTS.shift,
                                extrapolation=0, initial=None, merlin2_steps=False,
                                adaptive=False, adaptive_tolerance=1e-9,
                                cholesky="auto", stop=None) -> PathResult:
@@ -103,7 +106,7 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_
 
 
 def displacement_control_options(*, tolerance=1e-6, max_iterations=50, reject_iterations=25,
-                                 max_bisections=10, shift=1e-8, extrapolation=0,
+                                 max_bisections=10, shift=_DEFAULTS.shift, extrapolation=0,
                                  merlin2_steps=False, adaptive=False, adaptive_tolerance=1e-9,
                                  cholesky="auto", stop=None):
     """Checked C++ options object (see :func:`solve_displacement_control` for meanings)."""

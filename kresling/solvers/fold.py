@@ -14,17 +14,20 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling import _core
-from kresling._validation import as_integer, as_positive_real, as_real
+from kresling._validation import as_bool, as_integer, as_positive_real, as_real
 from kresling.model.fold_angles import fold_angles_deg, hinge_fold_signs, rest_angles_for
 from kresling.solvers._inputs import cholesky_choice, dof_vector
 from kresling.solvers.path import PathResult
+
+#: The core's defaults (the options struct declares them once).
+_DEFAULTS = _core.solvers.FoldOptions()
 
 __all__ = ["solve_fold", "fold", "FoldResult"]
 
 
 def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterations=50,
-               max_bisections=10, extrapolation=0, shift=1e-8, initial=None, stop=None,
-               cholesky="auto") -> PathResult:
+               max_bisections=10, extrapolation=0, shift=_DEFAULTS.shift, initial=None, stop=None,
+               cholesky="auto", adaptive=False, adaptive_tolerance=1e-9) -> PathResult:
     """Drive hinges' rest angles to targets, stage after stage, and follow the equilibrium.
 
     Parameters
@@ -44,6 +47,16 @@ def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterati
     stop : callable, optional
         ``stop(fraction, displacement) -> bool`` after every accepted increment (``fraction``
         of the current stage); True ends the fold there.
+    adaptive : bool, default False
+        Adaptive increments: each stage's ``steps`` equal samples read off cubic Hermite
+        curves between increments chosen by an error estimate of the stored energy (0
+        iterations for a sample inside an increment), never across a stability change, a
+        hinge crossing a limit of its enhanced linear law or a cable going slack; each
+        increment starts from its cubic extrapolation. A stage they cannot finish is folded
+        again in fixed increments (``extrapolation``'s start).
+    adaptive_tolerance : float, default 1e-9
+        The samples' estimated energy error relative to the largest stored energy so far,
+        in (0, 1e-4].
 
     Returns
     -------
@@ -57,6 +70,8 @@ def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterati
     o.max_iterations = as_integer("max_iterations", max_iterations, minimum=1)
     o.max_bisections = as_integer("max_bisections", max_bisections, minimum=0)
     o.extrapolation = as_integer("extrapolation", extrapolation, minimum=0, maximum=3)
+    o.adaptive = as_bool("adaptive", adaptive)
+    o.adaptive_tolerance = as_positive_real("adaptive_tolerance", adaptive_tolerance)
     o.shift = as_real("shift", shift)
     if stop is not None and not callable(stop):
         raise ValueError(f"stop = {stop!r} is invalid: must be None or a callable")

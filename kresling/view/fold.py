@@ -20,6 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from kresling.io import fan_triangles, read_pattern
+from kresling.model.crease_kinds import FAMILY_OF_LETTER
 from kresling.view.animation import select_rows
 from kresling.view.figure import PathPanel, animated_figure, view_model
 from kresling.view.inputs import view_inputs
@@ -27,8 +28,7 @@ from kresling.view.inputs import view_inputs
 __all__ = ["view_fold", "fold_frames", "ASSIGNMENT_FAMILIES"]
 
 #: The crease family drawn for each FOLD assignment.
-ASSIGNMENT_FAMILIES = {"M": "mountain", "V": "valley", "F": "flat", "U": "unassigned",
-                       "B": "boundary", "C": "cut", "J": "join"}
+ASSIGNMENT_FAMILIES = FAMILY_OF_LETTER
 
 
 @dataclass(frozen=True)

@@ -6,8 +6,11 @@
 
 #include "kresling/core/check.hpp"
 #include "kresling/elements/cable.hpp"
+#include "kresling/solvers/cable_pull_control.hpp"
 #include "kresling/solvers/energy_minimum.hpp"
+#include "kresling/solvers/halving_steps.hpp"
 #include "kresling/solvers/newton.hpp"
+#include "kresling/solvers/path_follower.hpp"
 
 namespace kresling::analyses {
 
@@ -48,6 +51,13 @@ struct ArmSolver::Impl {
     current = std::move(next);
     current_pulls = pulls;
   }
+  // Bind the assemblers to a model of their own again (after a path follower bound them
+  // to its control's), with the pulls they had.
+  void rebind(const model::Arm& arm) {
+    const Pulls pulls = current_pulls;
+    current_pulls = {-1.0, -1.0, -1.0};
+    set_pulls(arm, pulls);
+  }
 };
 
 ArmSolver::ArmSolver(const model::Arm& arm, ArmOptions options)
@@ -82,11 +92,10 @@ Pulls lerp(const Pulls& a, const Pulls& b, double t) {
   return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
 }
 
-}  // namespace
-
-ArmState ArmSolver::evaluate(const VectorX& u, const Pulls& pulls, const Vector3& load) {
-  const model::Arm& arm = *arm_;
-  impl_->set_pulls(arm, pulls);
+// The state at u of `model`, the arm with these pulls (its tendons' rest lengths) and tip
+// load (no solve).
+ArmState state_at(const model::Arm& arm, const model::Model& model, const VectorX& u,
+                  const Pulls& pulls, const Vector3& load) {
   ArmState s;
   s.displacement = u;
   s.pulls = pulls;
@@ -94,7 +103,7 @@ ArmState ArmSolver::evaluate(const VectorX& u, const Pulls& pulls, const Vector3
   const NodeMatrix x = arm.model.deformed(u);
   s.tip_position = x.row(arm.tip_node()).transpose();
   s.tip_displacement = u.segment<3>(3 * arm.tip_node());
-  const auto es = assembly::element_state(*impl_->current, u);
+  const auto es = assembly::element_state(model, u);
   for (int t = 0; t < 3; ++t) {
     s.tension[t] = es["cable_tension"][t];
     s.tendon_length[t] = es["cable_length"][t];
@@ -118,6 +127,14 @@ ArmState ArmSolver::evaluate(const VectorX& u, const Pulls& pulls, const Vector3
         (x.row(arm.node(2 * k + 2, n)) - x.row(arm.node(2 * k, n))).norm());
   }
   return s;
+}
+
+
+}  // namespace
+
+ArmState ArmSolver::evaluate(const VectorX& u, const Pulls& pulls, const Vector3& load) {
+  impl_->set_pulls(*arm_, pulls);
+  return state_at(*arm_, *impl_->current, u, pulls, load);
 }
 
 ArmState ArmSolver::built() {
@@ -148,97 +165,102 @@ ArmPath ArmSolver::ramp(const ArmState& start, const Pulls& pulls_to, const Vect
   ArmPath path;
   path.parameter.push_back(0.0);
   path.states.push_back(start);
-  const double nominal = 1.0 / options_.steps;
-  const double smallest = nominal / std::pow(2.0, options_.max_bisections);
-  double t = 0.0, h = nominal;
-  VectorX u = start.displacement, previous = start.displacement;
-  double previous_h = 0.0;
-  while (t < 1.0 - 1e-12) {
-    h = std::min(h, 1.0 - t);
-    const double tn = std::min(1.0, t + h);
-    const Pulls pulls = lerp(start.pulls, pulls_to, tn);
-    const Vector3 load = start.load + tn * (load_to - start.load);
-    impl_->set_pulls(arm, pulls);
-    ++path.attempted_increments;
-    // Start from a linear extrapolation of the last two equilibria.
-    VectorX trial = u;
-    if (previous_h > 0.0) trial += (h / previous_h) * (u - previous);
-    const solvers::NewtonOutcome out = solvers::newton_equilibrium(
-        *impl_->assembler, impl_->solver, trial, tip_force(arm, load), options_.newton);
-    std::string reason;
-    bool is_event = false;
-    int jumped = -1;
-    ArmState s;
-    if (!out.converged) {
-      reason = out.failure;
-    } else {
-      s = evaluate(trial, pulls, load);
-      s.negative_eigenvalues = out.negative_eigenvalues;
-      s.iterations = out.iterations;
-      if (out.negative_eigenvalues != 0) {
-        reason = out.negative_eigenvalues < 0
-                     ? "the tangent is singular (stability unknown)"
-                     : "the equilibrium is unstable (" + std::to_string(out.negative_eigenvalues) +
-                           " negative eigenvalue" + (out.negative_eigenvalues > 1 ? "s" : "") + ")";
-      } else if (s.cell_states != path.states.back().cell_states) {
-        for (std::size_t i = 0; i < s.cell_states.size(); ++i) {
-          if (s.cell_states[i] != path.states.back().cell_states[i]) {
-            reason = "cell " + std::to_string(i) + " (module " + std::to_string(i / 2) +
-                     ") jumped to its " + (s.cell_states[i] ? "extended" : "contracted") + " state";
-            jumped = static_cast<int>(i);
-            break;
-          }
-        }
-      } else if (event && !(event(s) > 0.0)) {
-        reason = "the event was reached";
-        is_event = true;
+  // The path follower under the tendons' pulls and the tip load, in increments halved on
+  // failure and doubled back on success, each started from the secant of the last two
+  // equilibria.
+  auto as_vector = [](const Pulls& p) { return std::vector<double>(p.begin(), p.end()); };
+  solvers::CablePullControl control(
+      arm.model, std::vector<double>(arm.slack_length.begin(), arm.slack_length.end()),
+      as_vector(start.pulls), as_vector(pulls_to), tip_force(arm, start.load),
+      tip_force(arm, load_to));
+  solvers::HalvingSteps policy(options_.steps, options_.max_bisections);
+  solvers::FollowOptions follow;
+  follow.newton = options_.newton;
+  follow.secant_start = true;
+  // An increment is accepted only at a stable equilibrium with every cell in its state and
+  // the caller's event not reached; the last check's findings name the end of the path.
+  ArmState pending;
+  int checked = -1;  // the attempt the findings below belong to
+  bool is_event = false;
+  int jumped = -1;
+  solvers::PathResult result;
+  follow.check = [&](const solvers::Increment& increment, const VectorX& u,
+                     const solvers::NewtonOutcome& out) -> std::string {
+    const std::vector<double> pulls = control.pulls_at(increment.to);
+    const Pulls p{pulls[0], pulls[1], pulls[2]};
+    const Vector3 load = start.load + increment.to * (load_to - start.load);
+    checked = result.attempted_increments;
+    is_event = false;
+    jumped = -1;
+    // The follower has bound the assembler to the control's model at increment.to.
+    pending = state_at(arm, impl_->assembler->model(), u, p, load);
+    pending.negative_eigenvalues = out.negative_eigenvalues;
+    pending.iterations = out.iterations;
+    if (out.negative_eigenvalues != 0) {
+      return out.negative_eigenvalues < 0
+                 ? "the tangent is singular (stability unknown)"
+                 : "the equilibrium is unstable (" + std::to_string(out.negative_eigenvalues) +
+                       " negative eigenvalue" + (out.negative_eigenvalues > 1 ? "s" : "") + ")";
+    }
+    const std::vector<int>& before = path.states.back().cell_states;
+    for (std::size_t i = 0; i < pending.cell_states.size(); ++i) {
+      if (pending.cell_states[i] != before[i]) {
+        jumped = static_cast<int>(i);
+        return "cell " + std::to_string(i) + " (module " + std::to_string(i / 2) +
+               ") jumped to its " + (pending.cell_states[i] ? "extended" : "contracted") + " state";
       }
     }
-    if (reason.empty()) {
-      previous = u;
-      previous_h = h;
-      u = trial;
-      t = tn;
-      path.parameter.push_back(t);
-      path.states.push_back(std::move(s));
-      h = std::min(2.0 * h, nominal);
-      continue;
+    if (event && !(event(pending) > 0.0)) {
+      is_event = true;
+      return "the event was reached";
     }
-    if (h > 1.5 * smallest) {
-      h *= 0.5;
-      continue;
-    }
-    // Newton may stall where a tendon is about to go slack (its stiffness switches off at
-    // zero tension). If the event, extrapolated from the last two equilibria, is reached
-    // within this last increment, or the last equilibrium is within 1 % of it (of its value
-    // at the start), that is what happened.
-    const std::size_t k = path.states.size();
-    if (!is_event && event && k >= 2) {
-      const double e1 = event(path.states[k - 1]), e0 = event(path.states[k - 2]);
-      const double t1 = path.parameter[k - 1], t0 = path.parameter[k - 2];
-      if (e1 + (e1 - e0) / (t1 - t0) * (tn - t1) <= 0.0 || e1 <= 0.01 * event(path.states[0])) {
-        reason += " (at the event: the last equilibrium is within 1 % of it)";
-        is_event = true;
-      }
-    }
-    path.end_parameter = tn;
-    path.event = is_event;
-    path.lost = !is_event;
-    if (path.lost) {
-      path.critical_cell = jumped;
-      if (jumped < 0) {
-        const std::vector<double> dh = softest_mode_heights(path.states.back());
-        double largest = 0.0;
-        for (std::size_t i = 0; i < dh.size(); ++i) {
-          if (std::abs(dh[i]) > largest) largest = std::abs(dh[i]), path.critical_cell = static_cast<int>(i);
-        }
-      }
-    }
-    path.message = (is_event ? std::string("event") : std::string("equilibrium lost")) +
-                   " between t = " + format_number(t) + " and " + format_number(tn) + ": " + reason;
+    return "";
+  };
+  follow.stop = [&](const solvers::PathStep& step) {
+    path.parameter.push_back(step.load_factor);
+    path.states.push_back(std::move(pending));
+    return false;
+  };
+  VectorX u = start.displacement;
+  solvers::follow_path(control, *impl_->assembler, impl_->solver, u, policy, follow, result);
+  impl_->rebind(arm);  // off the control's models, which end here
+  path.attempted_increments = result.attempted_increments;
+  if (result.completed) {
+    path.completed = true;
     return path;
   }
-  path.completed = true;
+  // Findings of a check belong to the failed attempt only if it was the last one.
+  if (checked != result.attempted_increments) is_event = false, jumped = -1;
+  std::string reason = policy.reason();
+  const double t = path.parameter.back(), tn = policy.failed_at();
+  // Newton may stall where a tendon is about to go slack (its stiffness switches off at
+  // zero tension). If the event, extrapolated from the last two equilibria, is reached
+  // within this last increment, or the last equilibrium is within 1 % of it (of its value
+  // at the start), that is what happened.
+  const std::size_t k = path.states.size();
+  if (!is_event && event && k >= 2) {
+    const double e1 = event(path.states[k - 1]), e0 = event(path.states[k - 2]);
+    const double t1 = path.parameter[k - 1], t0 = path.parameter[k - 2];
+    if (e1 + (e1 - e0) / (t1 - t0) * (tn - t1) <= 0.0 || e1 <= 0.01 * event(path.states[0])) {
+      reason += " (at the event: the last equilibrium is within 1 % of it)";
+      is_event = true;
+    }
+  }
+  path.end_parameter = tn;
+  path.event = is_event;
+  path.lost = !is_event;
+  if (path.lost) {
+    path.critical_cell = jumped;
+    if (jumped < 0) {
+      const std::vector<double> dh = softest_mode_heights(path.states.back());
+      double largest = 0.0;
+      for (std::size_t i = 0; i < dh.size(); ++i) {
+        if (std::abs(dh[i]) > largest) largest = std::abs(dh[i]), path.critical_cell = static_cast<int>(i);
+      }
+    }
+  }
+  path.message = (is_event ? std::string("event") : std::string("equilibrium lost")) +
+                 " between t = " + format_number(t) + " and " + format_number(tn) + ": " + reason;
   return path;
 }
 

@@ -98,22 +98,30 @@ double bending_drive(const geometry::Design& design, int state, const BendingOpt
   return deflection;
 }
 
-BendingResult BendingTest::run(const geometry::Design& design, int state) {
+DriveSetup BendingTest::setup(const geometry::Design& design, int state) {
   const BendingOptions& o = options_;
   if (design.parameters().n != builder_.n()) {
     throw_invalid("design.n", design.parameters().n,
                   "the test's n = " + std::to_string(builder_.n()));
   }
   const double deflection = bending_drive(design, state, o);
+  DriveSetup s{builder_.build(design, std::vector<int>(o.cells, state), fixed_), VectorX()};
+  s.prescribed = VectorX::Zero(s.specimen.model.num_dofs());
+  for (int j = 0; j <= design.parameters().n; ++j) {
+    s.prescribed[3 * s.specimen.node(o.cells / 2, j) + 1] = -deflection;
+  }
+  return s;
+}
+
+BendingResult BendingTest::run(const geometry::Design& design, int state) {
+  const BendingOptions& o = options_;
+  const DriveSetup drive = setup(design, state);
+  const model::KreslingSpecimen& specimen = drive.specimen;
   const double module_length = 2.0 * design.height(static_cast<geometry::State>(state));
   const int n = design.parameters().n;
-  const model::KreslingSpecimen specimen =
-      builder_.build(design, std::vector<int>(o.cells, state), fixed_);
   const int middle = o.cells / 2;
-  VectorX prescribed = VectorX::Zero(specimen.model.num_dofs());
-  for (int j = 0; j <= n; ++j) prescribed[3 * specimen.node(middle, j) + 1] = -deflection;
 
-  const solvers::PathResult path = solver_.solve(specimen.model, prescribed, o.steps);
+  const solvers::PathResult path = solver_.solve(specimen.model, drive.prescribed, o.steps);
 
   BendingResult r;
   r.module_length = module_length;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "kresling/geometry/design.hpp"
+#include "kresling/analyses/drive_setup.hpp"
 #include "kresling/model/kresling_specimen.hpp"
 #include "kresling/solvers/displacement_control.hpp"
 
@@ -60,6 +61,10 @@ class BendingTest {
 
   /// Run on `design` (its n must be this test's) in `state` (0 contracted, 1 extended).
   BendingResult run(const geometry::Design& design, int state);
+  /// The specimen in `state` with the test's supports (vertices 0 and n/2 and the centre
+  /// of the end polygons) and the middle polygon's prescribed motion (-y), after every
+  /// check run() makes.
+  DriveSetup setup(const geometry::Design& design, int state);
 
   const BendingOptions& options() const { return options_; }
   /// The polygon size the test is for.

@@ -59,21 +59,29 @@ SnapThroughTest::SnapThroughTest(int n, SnapThroughOptions options)
       solver_(options_.solver),
       fixed_(bottom_fixed(n)) {}
 
-SnapThroughResult SnapThroughTest::run(const geometry::Design& design) {
+DriveSetup SnapThroughTest::setup(const geometry::Design& design) {
   const int n = builder_.n();
   if (design.parameters().n != n) {
     throw_invalid("design.n", design.parameters().n, "the test's n = " + std::to_string(n));
   }
   check_snap_design(design);
+  const double travel = design.height(geometry::State::Extended) -
+                        design.height(geometry::State::Contracted);
+  DriveSetup s{builder_.build(design, {1}, fixed_), VectorX()};
+  s.prescribed = VectorX::Zero(s.specimen.model.num_dofs());
+  for (int j = 0; j <= n; ++j) s.prescribed[3 * s.specimen.node(1, j) + 2] = -travel;
+  return s;
+}
+
+SnapThroughResult SnapThroughTest::run(const geometry::Design& design) {
+  const int n = builder_.n();
+  const DriveSetup drive = setup(design);
+  const model::KreslingSpecimen& specimen = drive.specimen;
   SnapThroughResult r;
   r.extended_height = design.height(geometry::State::Extended);
   r.contracted_height = design.height(geometry::State::Contracted);
-  const model::KreslingSpecimen specimen = builder_.build(design, {1}, fixed_);
-  VectorX prescribed = VectorX::Zero(specimen.model.num_dofs());
-  for (int j = 0; j <= n; ++j) {
-    prescribed[3 * specimen.node(1, j) + 2] = -(r.extended_height - r.contracted_height);
-  }
-  const solvers::PathResult path = solver_.solve(specimen.model, prescribed, options_.steps);
+  const solvers::PathResult path =
+      solver_.solve(specimen.model, drive.prescribed, options_.steps);
   r.completed = path.completed;
   r.message = path.message;
 

@@ -36,6 +36,7 @@
 
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/geometry/design.hpp"
+#include "kresling/analyses/drive_setup.hpp"
 #include "kresling/model/kresling_specimen.hpp"
 #include "kresling/solvers/displacement_control.hpp"
 
@@ -100,6 +101,10 @@ class SnapThroughTest {
   /// Run on `design` (its n must be this test's; its chirality does not matter: the mirror
   /// image responds identically). Numerical failures are reported in the result.
   SnapThroughResult run(const geometry::Design& design);
+  /// One cell built extended, its bottom polygon fixed, its top polygon's prescribed
+  /// motion down to the contracted height (-z, free to twist), after every check run()
+  /// makes.
+  DriveSetup setup(const geometry::Design& design);
 
   const SnapThroughOptions& options() const { return options_; }
 

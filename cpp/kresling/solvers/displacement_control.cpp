@@ -7,8 +7,9 @@
 
 #include "kresling/core/check.hpp"
 #include "kresling/core/interrupt.hpp"
-#include "kresling/solvers/increments.hpp"
+#include "kresling/solvers/adaptive_path.hpp"
 #include "kresling/solvers/limits.hpp"
+#include "kresling/solvers/merlin2_steps.hpp"
 #include "kresling/solvers/newton.hpp"
 #include "kresling/solvers/path_follower.hpp"
 #include "kresling/solvers/rigid_body.hpp"
@@ -25,11 +26,7 @@ void check_options(const DisplacementControlOptions& o) {
   if (o.extrapolation < 0 || o.extrapolation > 3) {
     throw_invalid("extrapolation", o.extrapolation, "0, 1, 2 or 3");
   }
-  require_finite("adaptive_tolerance", o.adaptive_tolerance);
-  if (!(o.adaptive_tolerance > 0.0 && o.adaptive_tolerance <= 1e-4)) {
-    throw_invalid("adaptive_tolerance", o.adaptive_tolerance,
-                  "in (0, 1e-4]: the samples' force error relative to the path's largest force");
-  }
+  check_adaptive_tolerance(o.adaptive_tolerance);
 }
 
 
@@ -86,19 +83,39 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
       full.reset();
     }
   } unbind{assembler_, full_assembler_};
-  no_load_.setZero(n);
   VectorX u = initial.size() ? initial : VectorX::Zero(n);
-  if (options_.merlin2_steps) return solve_merlin2_steps(prescribed, steps, imposed, u);
+  FollowOptions follow;
+  follow.newton = options_.newton;
+  follow.max_bisections = options_.max_bisections;
+  follow.extrapolation = options_.extrapolation;
+  follow.reject_iterations = options_.reject_iterations;
+  follow.stop = options_.stop;
+  if (options_.merlin2_steps) {
+    // MERLIN2's step control: its own rejection budget and damping, no extrapolated start.
+    PathResult result;
+    DisplacementDrive drive(model, prescribed, u, steps);
+    Merlin2Steps policy(steps, options_.newton.max_iterations);
+    follow.extrapolation = 0;
+    follow_path(drive, *assembler_, *solver_, u, policy, follow, result);
+    return result;
+  }
   int fallback_attempts = 0;  // of adaptive increments that could not finish the path
   long long fallback_iterations = 0;
-  // Cables are tension-only: their slack kink is not located, so they keep fixed steps.
-  if (options_.adaptive && model.cables().empty()) {
+  if (options_.adaptive) {
     if (!(full_workspace_ && full_workspace_->fits(model))) {
       full_workspace_ = std::make_unique<assembly::Workspace>(model, assembly::all_dofs(n), 0.0,
                                                               assembly::Storage::Lower);
     }
     full_assembler_.emplace(model, *full_workspace_);
-    PathResult adaptive = solve_adaptive(prescribed, steps, imposed, u);
+    DisplacementDrive drive(model, prescribed, u);
+    AdaptiveOptions adaptive_options;
+    adaptive_options.newton = options_.newton;
+    adaptive_options.reject_iterations = options_.reject_iterations;
+    adaptive_options.max_bisections = options_.max_bisections;
+    adaptive_options.tolerance = options_.adaptive_tolerance;
+    adaptive_options.stop = options_.stop;
+    PathResult adaptive =
+        follow_adaptive(drive, *assembler_, *full_assembler_, *solver_, u, steps, adaptive_options);
     if (adaptive.completed) return adaptive;
     // A path the adaptive increments cannot finish (their predictor sent past a snap that
     // the last equilibrium crosses, say) is followed again in fixed increments from the
@@ -112,127 +129,8 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
   result.attempted_increments = fallback_attempts;
   result.newton_iterations = fallback_iterations;
   DisplacementDrive drive(model, prescribed, u);
-  FollowOptions follow;
-  follow.newton = options_.newton;
-  follow.max_bisections = options_.max_bisections;
-  follow.extrapolation = options_.extrapolation;
-  follow.reject_iterations = options_.reject_iterations;
-  follow.stop = options_.stop;
   follow_path(drive, *assembler_, *solver_, u, steps, follow, result);
   return result;
-}
-
-namespace {
-
-// Newton with every correction scaled by `damping` (< 1), as MERLIN2 iterates after ten
-// rejected increments in a row: converged once an undamped correction is <= tolerance.
-NewtonOutcome damped_newton(assembly::Assembler& assembler, TangentSolver& solver, VectorX& u,
-                            const NewtonOptions& options, double damping) {
-  NewtonOutcome out;
-  VectorX force;
-  while (out.iterations < options.max_iterations) {
-    check_interrupt();
-    ++out.iterations;
-    assembler.assemble(u, force, /*with_matrix=*/true);
-    const FactorizeInfo info = solver.factorize(assembler.matrix());
-    const VectorX du = info.ok ? solver.solve(gather_rows(assembler, -force)) : VectorX();
-    if (!info.ok || !du.allFinite()) {
-      out.failure = "the tangent stiffness is singular or the correction is not finite";
-      return out;
-    }
-    out.negative_eigenvalues = info.negative_eigenvalues;
-    scatter_add_rows(assembler, damping * du, u);
-    if (du.norm() <= options.tolerance) {
-      out.converged = true;
-      return out;
-    }
-  }
-  out.failure = "Newton did not converge in " + std::to_string(options.max_iterations) +
-                " iterations";
-  return out;
-}
-
-}  // namespace
-
-PathResult DisplacementControl::solve_merlin2_steps(const VectorX& prescribed, int steps,
-                                                    const std::vector<Index>& imposed,
-                                                    VectorX u) {
-  PathResult result;
-  result.constraint_dofs = imposed;
-  result.families = family_names(assembler_->model());
-  const VectorX increment = prescribed / static_cast<double>(steps);
-  const int max_iterations = options_.newton.max_iterations;
-  double moved = 0.0;      // fraction of the prescribed motion reached
-  double step_size = 1.0;  // in nominal increments
-  double damping = 1.0;
-  int rejections = 0;      // in a row
-  std::string last_failure;
-  while (moved <= 1.0 && rejections <= 20) {
-    check_interrupt();
-    ++result.attempted_increments;
-    VectorX trial = u;
-    for (Index i : imposed) trial[i] += step_size * increment[i];
-    // MERLIN2 rejects an increment needing this many iterations (more for a bold step);
-    // iterating past it cannot change the outcome.
-    const double limit = ((step_size > 1.0) + 1.0) * max_iterations / (damping + 1.0);
-    const int budget = std::min(max_iterations, static_cast<int>(std::ceil(limit)));
-    const NewtonOutcome outcome =
-        damping == 1.0 ? newton_equilibrium(*assembler_, *solver_, trial, no_load_,
-                                            options_.newton, budget)
-                       : damped_newton(*assembler_, *solver_, trial, options_.newton, damping);
-    result.newton_iterations += outcome.iterations;
-    PathStep step;
-    bool finite = true;
-    if (outcome.converged && outcome.iterations < limit) {
-      step = record_step(*assembler_, trial, moved + step_size / steps, outcome, imposed, -1.0);
-      finite = finite_step(step);
-    }
-    if (!outcome.converged || outcome.iterations >= limit || !finite) {
-      last_failure = !outcome.converged ? outcome.failure
-                     : !finite          ? std::string(kStepNotFinite)
-                                        : "Newton needed " + std::to_string(outcome.iterations) +
-                                              " iterations";
-      ++rejections;
-      if (rejections <= 10) {
-        step_size *= 0.5;
-      } else {
-        step_size = std::max(step_size, 1.0) * 1.5;
-        damping *= 0.75;
-      }
-      continue;
-    }
-    moved += step_size / steps;
-    rejections = 0;
-    damping = 1.0;
-    step_size = step_size < 1.0 ? std::min(step_size * 1.1, 1.0) : std::max(step_size * 0.9, 1.0);
-    u = trial;
-    result.steps.push_back(std::move(step));
-    if (options_.stop && options_.stop(result.steps.back())) {
-      result.completed = true;
-      return result;
-    }
-  }
-  result.completed = moved > 1.0;
-  if (!result.completed) {
-    result.failed_increment = result.attempted_increments;
-    result.message = "increment " + std::to_string(result.steps.size() + 1) + " (at " +
-                     format_number(moved) + " of the prescribed motion) was rejected 21 times " +
-                     "in a row; last: " + last_failure;
-  }
-  return result;
-}
-
-NewtonOutcome DisplacementControl::equilibrium_at(VectorX& u, double t, const VectorX& start,
-                                                 const VectorX& prescribed,
-                                                 const std::vector<Index>& imposed) {
-  for (Index i : imposed) u[i] = start[i] + t * prescribed[i];
-  // Newton stops at max_iterations even where reject_iterations would allow more.
-  return newton_equilibrium(*assembler_, *solver_, u, no_load_, options_.newton,
-                            std::min(options_.reject_iterations, options_.newton.max_iterations));
-}
-
-bool DisplacementControl::accepted(const NewtonOutcome& outcome) const {
-  return outcome.converged && outcome.iterations < options_.reject_iterations;
 }
 
 PathResult solve_displacement_control(const model::Model& model, const VectorX& prescribed,

@@ -58,8 +58,8 @@ struct DisplacementControlOptions {
   /// here as in the fixed steps (on the 0.001 rad bending protocol two fixed-step starting
   /// guesses give shares 1e-4 apart). Measured against the fixed steps on the Table 3
   /// designs (bending, both protocols and states; snap-through): summed forces within
-  /// 4.2e-9 of the largest. Models with cables (tension-only: a kink at slack) run with
-  /// fixed steps. A path the adaptive increments cannot finish is followed again in fixed
+  /// 4.2e-9 of the largest. A cable going taut or slack (its kink) is located like a law
+  /// kink (adaptive_path.hpp). A path the adaptive increments cannot finish is followed again in fixed
   /// steps (from `extrapolation`'s start), whose result is returned (attempts of both runs
   /// counted). merlin2_steps takes precedence.
   bool adaptive = false;
@@ -85,16 +85,6 @@ class DisplacementControl {
                    const VectorX& initial = VectorX());
 
  private:
-  PathResult solve_merlin2_steps(const VectorX& prescribed, int steps,
-                                 const std::vector<Index>& imposed, VectorX u);
-  PathResult solve_adaptive(const VectorX& prescribed, int steps,
-                            const std::vector<Index>& imposed, const VectorX& start);
-  // Newton from `u` with the imposed DOFs at start + t * prescribed, no external load.
-  NewtonOutcome equilibrium_at(VectorX& u, double t, const VectorX& start,
-                               const VectorX& prescribed, const std::vector<Index>& imposed);
-  // Converged within an increment's budget (fewer than reject_iterations iterations).
-  bool accepted(const NewtonOutcome& outcome) const;
-
   DisplacementControlOptions options_;
   // Kept from one solve to the next, with no reference to any model: the workspace
   // (pattern, slot map) and the symbolic factorisation.
@@ -106,7 +96,6 @@ class DisplacementControl {
   std::unique_ptr<assembly::Workspace> full_workspace_;
   std::optional<assembly::Assembler> full_assembler_;
   std::vector<std::uint8_t> held_;  // constraints the cached pattern was built for
-  VectorX no_load_;                  // zero external force, sized by solve
   // The model of the solve under way bound to workspace_; emptied when solve returns.
   std::optional<assembly::Assembler> assembler_;
 };

@@ -1,11 +1,13 @@
 #include "kresling/solvers/fold.hpp"
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/core/check.hpp"
+#include "kresling/solvers/adaptive_path.hpp"
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/path_control.hpp"
 #include "kresling/solvers/path_follower.hpp"
@@ -87,6 +89,7 @@ PathResult solve_fold(const model::Model& model, const std::vector<FoldStage>& s
   if (options.extrapolation < 0 || options.extrapolation > 3) {
     throw_invalid("extrapolation", options.extrapolation, "0, 1, 2 or 3");
   }
+  check_adaptive_tolerance(options.adaptive_tolerance);
   if (forces.size() != n || !forces.allFinite()) {
     throw std::invalid_argument("forces: must have one finite entry per DOF (" + std::to_string(n) +
                                 ")");
@@ -111,6 +114,18 @@ PathResult solve_fold(const model::Model& model, const std::vector<FoldStage>& s
     return stopped;
   };
 
+  // Adaptive increments also assemble every DOF, unshifted (the path's derivatives).
+  std::optional<assembly::Assembler> full;
+  if (options.adaptive) {
+    full.emplace(model, assembly::all_dofs(n), 0.0, assembly::Storage::Lower);
+  }
+  AdaptiveOptions adaptive;
+  adaptive.newton = options.newton;
+  adaptive.reject_iterations = 0;  // as the fixed increments: every converged one accepted
+  adaptive.max_bisections = options.max_bisections;
+  adaptive.tolerance = options.adaptive_tolerance;
+  adaptive.stop = follow.stop;
+
   PathResult result;
   model::Model start = model;  // the rest angles this stage starts from
   for (std::size_t s = 0; s < stages.size(); ++s) {
@@ -118,7 +133,23 @@ PathResult solve_fold(const model::Model& model, const std::vector<FoldStage>& s
     RestAngleControl control(start, stage.hinges, rest_angles(start, stage.hinges), stage.targets,
                              forces, s == 0 ? 0.0 : 1.0, 1.0);
     const std::size_t before = result.steps.size();
-    follow_path(control, assembler, solver, u, steps, follow, result);
+    bool folded = false;  // by the adaptive increments
+    if (options.adaptive) {
+      PathResult part = follow_adaptive(control, assembler, *full, solver, u, steps, adaptive);
+      result.attempted_increments += part.attempted_increments;
+      result.newton_iterations += part.newton_iterations;
+      if (part.completed) {
+        folded = true;
+        result.constraint_dofs = part.constraint_dofs;
+        result.families = part.families;
+        result.completed = true;
+        for (PathStep& step : part.steps) result.steps.push_back(std::move(step));
+        // The stage's last sample is a converged point (or the caller's stop ended it).
+        if (!part.steps.empty()) u = result.steps.back().displacement;
+      }
+    }
+    // Fixed increments (or a stage the adaptive ones could not finish, from its start).
+    if (!folded) follow_path(control, assembler, solver, u, steps, follow, result);
     for (std::size_t k = before; k < result.steps.size(); ++k) {
       result.steps[k].load_factor += static_cast<double>(s);
     }

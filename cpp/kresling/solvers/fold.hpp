@@ -26,6 +26,16 @@ struct FoldOptions {
   /// cubic extrapolation through the last 2-4 equilibria.
   int extrapolation = 0;
   double shift = 1e-8;
+  /// Adaptive increments with dense output (adaptive_path.hpp): each stage's `steps` equal
+  /// samples read off cubic Hermite curves between increments chosen by an error estimate
+  /// of the stored energy, never across a stability change, a hinge crossing a limit of the
+  /// enhanced linear law or a cable going slack. A stage the adaptive increments cannot
+  /// finish is folded again in fixed increments (from `extrapolation`'s start), whose
+  /// result is kept (the attempts of both counted).
+  bool adaptive = false;
+  /// The samples' estimated energy error relative to the largest stored energy so far, in
+  /// (0, 1e-4].
+  double adaptive_tolerance = 1e-9;
   StopRule stop;
 };
 

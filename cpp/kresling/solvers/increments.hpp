@@ -1,62 +1,39 @@
 #pragma once
 /// \file increments.hpp
-/// The stepping both displacement control and load-stepped Newton use: a path parameter
-/// goes from 0 to 1 in `steps` equal increments; an increment that fails is retried as two
-/// halves, recursively, down to 1/2^max_bisections of its size.
+/// Equal increments with bisection, the step policy of fixed-step paths (displacement
+/// control, force control, folding): the path parameter goes from 0 to 1 in `steps` equal
+/// increments; an increment that fails is retried as two halves, recursively, down to
+/// 1/2^max_bisections of its size.
 
-#include <cmath>
 #include <string>
 
 #include "kresling/core/interrupt.hpp"
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/path.hpp"
+#include "kresling/solvers/step_policy.hpp"
 
 namespace kresling::solvers {
 
-/// `attempt(t_from, t_to, failure)` tries to reach `t_to` from the accepted state at
-/// `t_from`; it records the step and returns true, or sets `failure` and returns false.
-/// `stop()` is asked after every accepted attempt: true ends the march there (completed).
-/// `describe(k, t, reason)` words the message when increment k fails at parameter t for
-/// good (reason: why its full-size attempt failed). Returns result.completed.
-/// Throws std::invalid_argument for steps outside [1, kMaxSteps] or max_bisections outside
-/// [0, kMaxBisections]; calls check_interrupt() before every attempt.
-template <typename Attempt, typename Stop, typename Describe>
-bool march(int steps, int max_bisections, PathResult& result, Attempt&& attempt, Stop&& stop,
-           Describe&& describe) {
-  check_steps("steps", steps);
-  check_bisections(max_bisections);
-  const double nominal = 1.0 / steps;
-  const double smallest = std::ldexp(nominal, -max_bisections);
-  double t = 0.0;
-  for (int k = 1; k <= steps; ++k) {
-    const double target = (k == steps) ? 1.0 : k * nominal;
-    double dt = target - t;
-    std::string first_failure;  // why the whole increment failed, the most telling reason
-    while (t < target) {
-      check_interrupt();
-      ++result.attempted_increments;
-      const double t_new = (dt >= target - t) ? target : t + dt;
-      std::string failure;
-      if (attempt(t, t_new, failure)) {
-        t = t_new;
-        dt = target - t;  // back to the rest of the nominal increment
-        if (stop()) {
-          result.completed = true;
-          return true;
-        }
-        continue;
-      }
-      if (first_failure.empty()) first_failure = failure;
-      dt *= 0.5;
-      if (dt < smallest) {
-        result.failed_increment = result.attempted_increments;
-        result.message = describe(k, t, first_failure);
-        return false;
-      }
-    }
-  }
-  result.completed = true;
-  return true;
-}
+class EqualIncrements final : public StepPolicy {
+ public:
+  /// Throws std::invalid_argument for steps outside [1, kMaxSteps] or max_bisections
+  /// outside [0, kMaxBisections].
+  EqualIncrements(int steps, int max_bisections);
+  bool next(Increment& increment) override;
+  void accepted(const Increment& increment) override;
+  bool rejected(const Increment& increment, const std::string& reason) override;
+  /// The message of a failed increment is the control's (PathControl::failure_message).
+  void finish(const PathControl& control, PathResult& result) const override;
+
+ private:
+  int steps_, max_bisections_;
+  double nominal_, smallest_;
+  int k_ = 1;          // the nominal increment under way (1-based)
+  double t_ = 0.0;     // the accepted path parameter
+  double dt_;          // the size of the next attempt within increment k
+  bool failed_ = false;
+  std::string first_failure_;  // why increment k failed at full size, the most telling
+  double target() const { return k_ == steps_ ? 1.0 : k_ * nominal_; }
+};
 
 }  // namespace kresling::solvers

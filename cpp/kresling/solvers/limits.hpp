@@ -54,4 +54,14 @@ inline void check_newton(const NewtonOptions& o) {
   require_integer_in("max_iterations", o.max_iterations, 1, kMaxIterations);
 }
 
+/// The adaptive increments' error target (adaptive_path.hpp), relative to the monitored
+/// quantity's largest value: in (0, 1e-4].
+inline void check_adaptive_tolerance(double tolerance) {
+  require_finite("adaptive_tolerance", tolerance);
+  if (!(tolerance > 0.0 && tolerance <= 1e-4)) {
+    throw_invalid("adaptive_tolerance", tolerance,
+                  "in (0, 1e-4]: the samples' error relative to the path's largest value");
+  }
+}
+
 }  // namespace kresling::solvers

@@ -1,13 +1,13 @@
 #include "kresling/solvers/path_control.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 
 #include "kresling/core/check.hpp"
 
 namespace kresling::solvers {
-
-namespace {
 
 std::vector<Index> supported_dofs(const model::Model& model) {
   std::vector<Index> dofs;
@@ -17,12 +17,51 @@ std::vector<Index> supported_dofs(const model::Model& model) {
   return dofs;
 }
 
-}  // namespace
+ControlRates family_rates(const model::Model& model, const std::string& family,
+                          const std::function<model::FamilyPtr(double)>& family_at, double t,
+                          double h, const VectorX& u) {
+  const auto& families = model.families();
+  ControlRates r;
+  r.internal = VectorX::Zero(u.size());
+  r.energies = VectorX::Zero(static_cast<Index>(families.size()));
+  std::size_t index = 0;
+  while (index < families.size() && families[index]->name() != family) ++index;
+  if (index == families.size()) return r;
+  auto evaluate = [&](double at, VectorX& force) {
+    force.setZero(u.size());
+    model::AssemblyTarget target{force};
+    return family_at(at)->assemble(model.nodes(), u, target);
+  };
+  VectorX plus, minus;
+  const double e_plus = evaluate(t + h, plus), e_minus = evaluate(t - h, minus);
+  r.internal = (plus - minus) / (2.0 * h);
+  r.energies[static_cast<Index>(index)] = (e_plus - e_minus) / (2.0 * h);
+  return r;
+}
+
+ControlRates PathControl::rates(double, const VectorX&) {
+  throw std::invalid_argument(
+      "increments: this path cannot be followed in adaptive increments (its control has no "
+      "path rates); use fixed increments");
+}
+
+double PathControl::monitored(const VectorX&, const VectorX& energies) const {
+  double sum = 0.0;
+  for (Index i = 0; i < energies.size(); ++i) sum += energies[i];
+  return sum;
+}
 
 LoadControl::LoadControl(const model::Model& model, VectorX forces)
     : model_(model), forces_(std::move(forces)) {}
 
 void LoadControl::apply(double t, VectorX&, VectorX& external) { external = t * forces_; }
+
+ControlRates LoadControl::rates(double, const VectorX&) {
+  ControlRates r;
+  r.held = VectorX::Zero(forces_.size());
+  r.external = forces_;
+  return r;
+}
 
 std::vector<Index> LoadControl::recorded_dofs() const { return supported_dofs(model_); }
 
@@ -34,16 +73,45 @@ std::string LoadControl::failure_message(int k, int steps, double t, int max_bis
          reason;
 }
 
-DisplacementDrive::DisplacementDrive(const model::Model& model, VectorX prescribed, VectorX start)
+DisplacementDrive::DisplacementDrive(const model::Model& model, VectorX prescribed, VectorX start,
+                                     int accumulate_steps)
     : model_(model), prescribed_(std::move(prescribed)), start_(std::move(start)) {
   for (Index i = 0; i < prescribed_.size(); ++i) {
     if (prescribed_[i] != 0.0) imposed_.push_back(i);
   }
+  if (accumulate_steps > 0) nominal_ = prescribed_ / static_cast<double>(accumulate_steps);
+}
+
+void DisplacementDrive::advance(const Increment& increment, const VectorX& accepted, VectorX& u,
+                                VectorX& external) {
+  if (nominal_.size() == 0) {
+    apply(increment.to, u, external);
+    return;
+  }
+  for (Index i : imposed_) u[i] = accepted[i] + increment.size * nominal_[i];
+  external.setZero();
 }
 
 void DisplacementDrive::apply(double t, VectorX& u, VectorX& external) {
   for (Index i : imposed_) u[i] = start_[i] + t * prescribed_[i];
   external.setZero();
+}
+
+ControlRates DisplacementDrive::rates(double, const VectorX&) {
+  ControlRates r;
+  r.held = VectorX::Zero(prescribed_.size());
+  for (Index i : imposed_) r.held[i] = prescribed_[i];
+  return r;
+}
+
+double DisplacementDrive::monitored(const VectorX& forces, const VectorX&) const {
+  double largest_motion = 0.0;
+  for (Index i : imposed_) largest_motion = std::max(largest_motion, std::abs(prescribed_[i]));
+  double g = 0.0;
+  for (std::size_t k = 0; k < imposed_.size(); ++k) {
+    g += forces[static_cast<Index>(k)] * prescribed_[imposed_[k]];
+  }
+  return g / largest_motion;
 }
 
 std::string DisplacementDrive::failure_message(int k, int steps, double t, int max_bisections,
@@ -92,6 +160,32 @@ const model::Model& RestAngleControl::model_at(double t) {
 
 void RestAngleControl::apply(double t, VectorX&, VectorX& external) {
   external = (load_from_ + t * (load_to_ - load_from_)) * forces_;
+}
+
+ControlRates RestAngleControl::rates(double t, const VectorX& u) {
+  double largest = 0.0;  // of the rest angles' change over the path [rad]
+  for (Index k = 0; k < to_.size(); ++k) largest = std::max(largest, std::abs(to_[k] - from_[k]));
+  ControlRates r;
+  if (largest == 0.0) {
+    r.internal = VectorX::Zero(u.size());
+    r.energies = VectorX::Zero(static_cast<Index>(base_.families().size()));
+  } else {
+    // Rest angles moved by +-1e-4 rad at most: the central difference is exact for a
+    // moment affine in the rest angle, and its rounding is ~1e-16 (theta - theta0) / 1e-4
+    // relative.
+    std::vector<model::Hinge> hinges = base_.hinges();
+    auto hinges_at = [&](double at) -> model::FamilyPtr {
+      for (std::size_t i = 0; i < hinges_.size(); ++i) {
+        const auto k = static_cast<Index>(i);
+        hinges[static_cast<std::size_t>(hinges_[i])].rest_angle = from_[k] + at * (to_[k] - from_[k]);
+      }
+      return std::make_shared<model::HingeFamily>(hinges);
+    };
+    r = family_rates(base_, "hinges", hinges_at, t, 1e-4 / largest, u);
+  }
+  r.held = VectorX::Zero(u.size());
+  r.external = (load_to_ - load_from_) * forces_;
+  return r;
 }
 
 std::vector<Index> RestAngleControl::recorded_dofs() const { return supported_dofs(base_); }

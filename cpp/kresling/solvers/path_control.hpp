@@ -6,14 +6,26 @@
 /// held where it puts them, what external force acts, and which forces a step records; the
 /// path follower (path_follower.hpp) does the stepping for every control alike.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "kresling/core/types.hpp"
 #include "kresling/model/model.hpp"
+#include "kresling/solvers/step_policy.hpp"
 
 namespace kresling::solvers {
+
+/// How a control moves along the path at parameter t with the displacements held at u:
+/// what the adaptive increments' path tangent needs (path_point.hpp). Empty vectors mean
+/// none.
+struct ControlRates {
+  VectorX held;      ///< du/dt at the DOFs the control holds, zero elsewhere (one per DOF)
+  VectorX internal;  ///< the internal force's rate at fixed u (a model parameter's change)
+  VectorX external;  ///< the external force's rate df_ext/dt (one per DOF)
+  VectorX energies;  ///< each family's energy rate at fixed u, in the model's order
+};
 
 class PathControl {
  public:
@@ -26,6 +38,12 @@ class PathControl {
   /// Put the held DOFs of u where the control prescribes them at t and set `external` (one
   /// entry per DOF, sized by the caller) to the external force there.
   virtual void apply(double t, VectorX& u, VectorX& external) = 0;
+  /// The same for an attempted increment from the accepted state `accepted` (at
+  /// increment.from): apply(increment.to) unless the control accumulates its increments.
+  virtual void advance(const Increment& increment, const VectorX& /*accepted*/, VectorX& u,
+                       VectorX& external) {
+    apply(increment.to, u, external);
+  }
   /// DOFs besides the supports that the control holds (the imposed ones), none by default.
   virtual std::vector<Index> held_dofs() const { return {}; }
   /// DOFs whose force each step records (PathStep::constraint_force) and its sign: the
@@ -35,7 +53,27 @@ class PathControl {
   /// The message when increment k of `steps` fails for good at parameter t.
   virtual std::string failure_message(int k, int steps, double t, int max_bisections,
                                       const std::string& reason) const = 0;
+  /// The control's rates at (t, u) (ControlRates). A control without them cannot be
+  /// followed in adaptive increments: the default throws std::invalid_argument.
+  virtual ControlRates rates(double t, const VectorX& u);
+  /// The scalar whose dense output the adaptive increments' error estimate follows, from a
+  /// point's recorded forces and per-family energies (a linear function of both): by
+  /// default the total stored energy [N mm].
+  virtual double monitored(const VectorX& forces, const VectorX& energies) const;
+  /// What the path parameter is a fraction of, for messages ("the prescribed motion").
+  virtual std::string parameter_name() const { return "the path"; }
 };
+
+/// The model's supported DOFs, in order (whose reactions a load-driven path records).
+std::vector<Index> supported_dofs(const model::Model& model);
+
+/// The rates at fixed u of a model parameter that changes one family of `model` (named
+/// `family`; `family_at(t)` builds it at parameter t): its internal force's and energy's
+/// central differences in t with step h (held and external left empty). Zero rates when
+/// the model has no such family.
+ControlRates family_rates(const model::Model& model, const std::string& family,
+                          const std::function<model::FamilyPtr(double)>& family_at, double t,
+                          double h, const VectorX& u);
 
 /// Force control: external = t * forces on the model, supports' reactions recorded.
 class LoadControl final : public PathControl {
@@ -47,6 +85,8 @@ class LoadControl final : public PathControl {
   double recorded_sign() const override { return 1.0; }
   std::string failure_message(int k, int steps, double t, int max_bisections,
                               const std::string& reason) const override;
+  ControlRates rates(double t, const VectorX& u) override;
+  std::string parameter_name() const override { return "the load"; }
 
  private:
   const model::Model& model_;
@@ -54,21 +94,33 @@ class LoadControl final : public PathControl {
 };
 
 /// Displacement control: the non-zero entries of `prescribed` are imposed, at
-/// start + t * prescribed; no external force; the actuator's force recorded.
+/// start + t * prescribed; no external force; the actuator's force recorded. With
+/// `accumulate_steps` > 0 (MERLIN2's steps, merlin2_steps.hpp) an increment instead adds
+/// increment.size times prescribed / accumulate_steps to the accepted state's imposed DOFs,
+/// as MERLIN2 accumulates its motion.
 class DisplacementDrive final : public PathControl {
  public:
-  DisplacementDrive(const model::Model& model, VectorX prescribed, VectorX start);
+  DisplacementDrive(const model::Model& model, VectorX prescribed, VectorX start,
+                    int accumulate_steps = 0);
   const model::Model& model_at(double) override { return model_; }
   void apply(double t, VectorX& u, VectorX& external) override;
+  void advance(const Increment& increment, const VectorX& accepted, VectorX& u,
+               VectorX& external) override;
   std::vector<Index> held_dofs() const override { return imposed_; }
   std::vector<Index> recorded_dofs() const override { return imposed_; }
   double recorded_sign() const override { return -1.0; }
   std::string failure_message(int k, int steps, double t, int max_bisections,
                               const std::string& reason) const override;
+  ControlRates rates(double t, const VectorX& u) override;
+  /// The drive's force sum_k F_k U_k / max|U| (the force conjugate to the prescribed
+  /// motion; the summed reaction of a uniform drive) [N].
+  double monitored(const VectorX& forces, const VectorX& energies) const override;
+  std::string parameter_name() const override { return "the prescribed motion"; }
 
  private:
   const model::Model& model_;
   VectorX prescribed_, start_;
+  VectorX nominal_;  // prescribed / accumulate_steps (empty: not accumulating)
   std::vector<Index> imposed_;
 };
 
@@ -86,6 +138,11 @@ class RestAngleControl final : public PathControl {
   double recorded_sign() const override { return 1.0; }
   std::string failure_message(int k, int steps, double t, int max_bisections,
                               const std::string& reason) const override;
+  /// The hinges' force and energy rates by central differences of the hinge family alone
+  /// in the rest angles (exact up to rounding: every hinge law's moment is affine in its
+  /// rest angle, so its energy is quadratic in it).
+  ControlRates rates(double t, const VectorX& u) override;
+  std::string parameter_name() const override { return "the crease actuation"; }
 
  private:
   const model::Model& base_;

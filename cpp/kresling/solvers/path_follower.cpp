@@ -1,8 +1,11 @@
 #include "kresling/solvers/path_follower.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
+#include "kresling/core/interrupt.hpp"
+#include "kresling/solvers/damped_newton.hpp"
 #include "kresling/solvers/increments.hpp"
 
 namespace kresling::solvers {
@@ -30,7 +33,8 @@ void extrapolate(const std::vector<double>& ts, const std::vector<VectorX>& us, 
 }  // namespace
 
 void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSolver& solver,
-                 VectorX& u, int steps, const FollowOptions& options, PathResult& result) {
+                 VectorX& u, StepPolicy& policy, const FollowOptions& options,
+                 PathResult& result) {
   const std::vector<Index> recorded = control.recorded_dofs();
   const double sign = control.recorded_sign();
   result.constraint_dofs = recorded;
@@ -40,14 +44,22 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
   const int budget = options.reject_iterations;
   // Newton stops at max_iterations even when an increment may take more before it is
   // rejected (reject_iterations above max_iterations).
-  const int newton_limit = budget > 0 ? std::min(budget, options.newton.max_iterations) : 0;
+  const int default_limit = budget > 0 ? std::min(budget, options.newton.max_iterations) : 0;
+  const double default_reject =
+      budget > 0 ? static_cast<double>(budget) : std::numeric_limits<double>::infinity();
+  Increment increment;
   auto accepted = [&](const NewtonOutcome& o) {
-    return o.converged && (budget <= 0 || o.iterations < budget);
+    const double reject = increment.reject_at > 0.0 ? increment.reject_at : default_reject;
+    return o.converged && o.iterations < reject;
   };
-  auto solve_at = [&](VectorX& trial, double t) {
-    control.apply(t, trial, external);
-    const NewtonOutcome outcome = newton_equilibrium(assembler, solver, trial, external,
-                                                     options.newton, newton_limit, options.extra);
+  auto solve_at = [&](VectorX& trial) {
+    control.advance(increment, u, trial, external);
+    const int limit = increment.newton_limit > 0 ? increment.newton_limit : default_limit;
+    const NewtonOutcome outcome =
+        increment.damping == 1.0
+            ? newton_equilibrium(assembler, solver, trial, external, options.newton, limit,
+                                 options.extra)
+            : damped_newton(assembler, solver, trial, options.newton, increment.damping);
     result.newton_iterations += outcome.iterations;
     return outcome;
   };
@@ -55,61 +67,92 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
   std::vector<double> path_t{0.0};
   std::vector<VectorX> path_u{u};
   int previous_negative = 0;  // stability of the last accepted equilibrium
-  march(steps, options.max_bisections, result,
-        [&](double, double t_new, std::string& failure) {
-          if (control.changes_model()) assembler.rebind(control.model_at(t_new));
-          VectorX trial = u;
-          NewtonOutcome outcome;
-          if (options.extrapolation > 0) {
-            extrapolate(path_t, path_u, options.extrapolation, t_new, trial);
-            outcome = solve_at(trial, t_new);
-            // Two cases where the previous equilibrium is the better start (MERLIN2's): past a
-            // limit point of the driven motion (a snap) the extrapolated guess lies beyond the
-            // end of the branch and Newton fails, where from the previous equilibrium it
-            // reaches the branch the structure snaps to; past a bifurcation the guess can land
-            // on an unstable branch where the previous equilibrium leads on along a stable
-            // one. Retry from there (before the increment is halved), and keep the result if
-            // it converged where the guess did not, or is more stable.
-            const bool failed = !accepted(outcome);
-            if (failed || outcome.negative_eigenvalues > previous_negative) {
-              VectorX plain = u;
-              const NewtonOutcome retry = solve_at(plain, t_new);
-              if (accepted(retry) &&
-                  (failed || (retry.negative_eigenvalues >= 0 &&
-                              retry.negative_eigenvalues < outcome.negative_eigenvalues))) {
-                trial = plain;
-                outcome = retry;
-              }
-            }
-          } else {
-            outcome = solve_at(trial, t_new);
-          }
-          if (!accepted(outcome)) {
-            failure = outcome.failure.empty()
-                          ? "Newton needed " + std::to_string(outcome.iterations) + " iterations"
-                          : outcome.failure;
-            return false;
-          }
-          PathStep step = record_step(assembler, trial, t_new, outcome, recorded, sign);
-          if (!finite_step(step)) {
-            failure = kStepNotFinite;
-            return false;
-          }
-          u = trial;
-          if (outcome.negative_eigenvalues >= 0) previous_negative = outcome.negative_eigenvalues;
-          result.steps.push_back(std::move(step));
-          path_t.push_back(t_new);
-          path_u.push_back(u);
-          if (path_t.size() > 4) {  // the cubic's four points at most
-            path_t.erase(path_t.begin());
-            path_u.erase(path_u.begin());
-          }
-          return true;
-        },
-        [&] { return options.stop && options.stop(result.steps.back()); },
-        [&](int k, double t, const std::string& reason) {
-          return control.failure_message(k, steps, t, options.max_bisections, reason);
-        });
+  // The secant start's last two equilibria: the one before u and the increment between.
+  VectorX previous_u;
+  double previous_size = 0.0;
+  auto attempt = [&](std::string& failure) {
+    const double t_new = increment.to;
+    if (control.changes_model()) assembler.rebind(control.model_at(t_new));
+    VectorX trial = u;
+    NewtonOutcome outcome;
+    if (options.secant_start) {
+      if (previous_size > 0.0) trial += (increment.size / previous_size) * (u - previous_u);
+      outcome = solve_at(trial);
+    } else if (options.extrapolation > 0 && increment.damping == 1.0) {
+      extrapolate(path_t, path_u, options.extrapolation, t_new, trial);
+      outcome = solve_at(trial);
+      // Two cases where the previous equilibrium is the better start (MERLIN2's): past a
+      // limit point of the driven motion (a snap) the extrapolated guess lies beyond the
+      // end of the branch and Newton fails, where from the previous equilibrium it reaches
+      // the branch the structure snaps to; past a bifurcation the guess can land on an
+      // unstable branch where the previous equilibrium leads on along a stable one. Retry
+      // from there (before the increment is halved), and keep the result if it converged
+      // where the guess did not, or is more stable.
+      const bool failed = !accepted(outcome);
+      if (failed || outcome.negative_eigenvalues > previous_negative) {
+        VectorX plain = u;
+        const NewtonOutcome retry = solve_at(plain);
+        if (accepted(retry) &&
+            (failed || (retry.negative_eigenvalues >= 0 &&
+                        retry.negative_eigenvalues < outcome.negative_eigenvalues))) {
+          trial = plain;
+          outcome = retry;
+        }
+      }
+    } else {
+      outcome = solve_at(trial);
+    }
+    if (!accepted(outcome)) {
+      failure = outcome.failure.empty()
+                    ? "Newton needed " + std::to_string(outcome.iterations) + " iterations"
+                    : outcome.failure;
+      return false;
+    }
+    if (options.check) {
+      failure = options.check(increment, trial, outcome);
+      if (!failure.empty()) return false;
+    }
+    PathStep step = record_step(assembler, trial, t_new, outcome, recorded, sign);
+    if (!finite_step(step)) {
+      failure = kStepNotFinite;
+      return false;
+    }
+    if (options.secant_start) {
+      previous_u = u;
+      previous_size = increment.size;
+    }
+    u = trial;
+    if (outcome.negative_eigenvalues >= 0) previous_negative = outcome.negative_eigenvalues;
+    result.steps.push_back(std::move(step));
+    path_t.push_back(t_new);
+    path_u.push_back(u);
+    if (path_t.size() > 4) {  // the cubic's four points at most
+      path_t.erase(path_t.begin());
+      path_u.erase(path_u.begin());
+    }
+    return true;
+  };
+  while (policy.next(increment)) {
+    check_interrupt();
+    ++result.attempted_increments;
+    std::string failure;
+    if (attempt(failure)) {
+      policy.accepted(increment);
+      if (options.stop && options.stop(result.steps.back())) {
+        result.completed = true;
+        return;
+      }
+    } else if (!policy.rejected(increment, failure)) {
+      break;
+    }
+  }
+  policy.finish(control, result);
+}
+
+void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSolver& solver,
+                 VectorX& u, int steps, const FollowOptions& options, PathResult& result) {
+  EqualIncrements policy(steps, options.max_bisections);
+  follow_path(control, assembler, solver, u, policy, options, result);
 }
 
 }  // namespace kresling::solvers

@@ -1,16 +1,21 @@
 #pragma once
 /// \file path_follower.hpp
-/// The incremental driver every fixed-step path shares: displacement control, force
-/// control, crease actuation (folding) and any other control (path_control.hpp). The
-/// parameter t goes from 0 to 1 in `steps` equal increments; each increment is a Newton
-/// solve of the control's model with its held DOFs and external force at the new t, from
-/// the previous equilibrium or an extrapolation along the path; an increment that fails is
-/// retried as two halves, recursively (increments.hpp).
+/// The incremental driver every stepped path shares: displacement control (equal
+/// increments or MERLIN2's step control), force control, crease actuation (folding) and
+/// any other control (path_control.hpp). A step policy (step_policy.hpp) proposes each
+/// increment of the path parameter t in [0, 1]; each is a Newton solve of the control's
+/// model with its held DOFs and external force at the new t, from the previous equilibrium
+/// or an extrapolation along the path; the policy hears whether it was accepted. (Adaptive
+/// increments with dense output, adaptive_path.hpp, follow the same controls.)
+
+#include <functional>
+#include <string>
 
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/solvers/newton.hpp"
 #include "kresling/solvers/path.hpp"
 #include "kresling/solvers/path_control.hpp"
+#include "kresling/solvers/step_policy.hpp"
 #include "kresling/solvers/tangent_solver.hpp"
 
 namespace kresling::solvers {
@@ -25,16 +30,31 @@ struct FollowOptions {
   /// rejected (MERLIN2's rule); 0: newton.max_iterations, and every converged increment is
   /// accepted.
   int reject_iterations = 0;
+  /// Start each increment from the secant through the last two equilibria, scaled by the
+  /// increments' sizes (u + size / previous size (u - u_previous)), instead of
+  /// `extrapolation` (the arm's ramps).
+  bool secant_start = false;
+  /// A caller's check of each converged increment before it is accepted, at the control's
+  /// model for the increment's end: the reason to reject it (empty: accept). A stability
+  /// or state condition (the arm's: stable, every cell in its state).
+  std::function<std::string(const Increment&, const VectorX& u, const NewtonOutcome&)> check;
   StopRule stop;                  ///< ends the path early (completed) when it returns true
   ExtraTerms* extra = nullptr;    ///< terms added to every Newton solve (optional)
 };
 
-/// Follow `control` in `steps` increments from `u` (all DOFs; the accepted state at t = 0,
+/// Follow `control` with the increments of `policy` from `u` (all DOFs; the accepted state at t = 0,
 /// left at the last accepted one). `assembler` is bound to a workspace whose rows leave out
 /// the supports and the control's held DOFs; it is rebound to the control's model at each
 /// attempt when the control changes the model, and `solver` keeps its factorisation
 /// between solves. Steps are appended to `result` (whose attempted increments count on);
 /// its recorded DOFs and families are set here.
+/// The caller's stop rule ends the path completed.
+void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSolver& solver,
+                 VectorX& u, StepPolicy& policy, const FollowOptions& options,
+                 PathResult& result);
+
+/// The same in `steps` equal increments with bisection (EqualIncrements, increments.hpp;
+/// options.max_bisections).
 void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSolver& solver,
                  VectorX& u, int steps, const FollowOptions& options, PathResult& result);
 

@@ -1,30 +1,16 @@
-/// \file adaptive_displacement_control.cpp
-/// Displacement control with adaptive increments and dense output
-/// (DisplacementControlOptions::adaptive; docs/model.md, 'Displacement control').
-///
-/// The path u(t), t in [0, 1] the fraction of the prescribed motion, is followed in
-/// increments whose size comes from an error estimate; the protocol's samples t_k = k/steps
-/// are taken between converged points. Each converged point carries its exact path
-/// derivatives (du/dt, the constraint forces' dF/dt, the energies' rates), so between two
-/// of them the displacements, forces and energies are cubic Hermite curves: the predictor
-/// of the next increment (extrapolated) and the samples inside (interpolated, no
-/// iteration). The force curve's error is estimated from how far the previous increment's
-/// curve, extrapolated, misses the new converged forces; an increment whose estimate is
-/// above the tolerance is retried shorter, but never shorter than to the next sample (which
-/// it then ends on, converged by Newton as in the fixed-step mode).
+#include "kresling/solvers/adaptive_path.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kresling/core/check.hpp"
 #include "kresling/core/interrupt.hpp"
-#include "kresling/elements/dihedral.hpp"
-#include "kresling/solvers/displacement_control.hpp"
-#include "kresling/solvers/newton.hpp"
+#include "kresling/solvers/limits.hpp"
+#include "kresling/solvers/path_point.hpp"
 
 namespace kresling::solvers {
 
@@ -34,166 +20,46 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // An increment's displacement predictor may miss its converged point by this much [mm]
 // (max-norm): Newton then converges in one or two iterations.
 constexpr double kPredictorError = 1e-4;
-// Stability changes and law kinks are located to this fraction of a sample spacing.
+// Stability changes, law kinks and cables going slack are located to this fraction of a
+// sample spacing.
 constexpr double kEventWidth = 1e-3;
-
-// A converged equilibrium of the path with its derivatives along the path.
-struct PathPoint {
-  double t = 0.0;
-  VectorX u;           // all DOFs
-  VectorX velocity;    // du/dt, all DOFs (at the imposed ones, the prescribed motion)
-  VectorX force;       // constraint forces (-f_int at the imposed DOFs)
-  VectorX force_rate;  // their derivative d/dt
-  VectorX energy;       // per element family, in the model's order
-  VectorX energy_rate;  // d/dt
-  int negative = -1;  // negative eigenvalues of the tangent there
-  // Per hinge, which piece of its law applies: -1 below the enhanced linear law's lower
-  // limit, 1 above its upper one, 0 in between (and for the other laws, which have no kink).
-  std::vector<signed char> pieces;
-  NewtonOutcome outcome;
-};
-
-std::vector<signed char> law_pieces(const model::Model& model, const VectorX& u) {
-  const auto& hinges = model.hinges();
-  std::vector<signed char> pieces(hinges.size(), 0);
-  const NodeMatrix& X = model.nodes();
-  auto at = [&](Index node) -> Vector3 {
-    return X.row(node).transpose() + u.segment<3>(3 * node);
-  };
-  for (std::size_t h = 0; h < hinges.size(); ++h) {
-    const model::Hinge& hinge = hinges[h];
-    if (hinge.law.kind != elements::SpringLawKind::EnhancedLinear || hinge.stiffness == 0.0) {
-      continue;
-    }
-    const auto& n = hinge.nodes;
-    const double theta = elements::dihedral_angle(at(n[0]), at(n[1]), at(n[2]), at(n[3]));
-    pieces[h] = theta < hinge.law.theta1 ? -1 : theta > hinge.law.theta2 ? 1 : 0;
-  }
-  return pieces;
-}
-
-// Where along the path, between a converged point `a` and a converged `e` past an event,
-// the first hinge whose law piece differs between them reaches the limit in between: for
-// each such hinge a Newton step on theta(t) = limit from each end (exact dtheta/dt there:
-// its gradient times the path tangent; the law's M and dM/dtheta are continuous at its
-// limits, so theta(t) is smooth to second order across), the one from the nearer end.
-// NaN when the event is a stability change or no estimate lies in (a.t, e.t).
-double predicted_kink(const model::Model& model, const PathPoint& a, const PathPoint& e) {
-  const double none = std::numeric_limits<double>::quiet_NaN();
-  if (a.negative != e.negative || a.pieces.size() != e.pieces.size()) return none;
-  const NodeMatrix& X = model.nodes();
-  // theta - limit and its rate at p for hinge h.
-  auto offset = [&](const PathPoint& p, const model::Hinge& hinge, double limit) {
-    auto at = [&](Index node) -> Vector3 {
-      return X.row(node).transpose() + p.u.segment<3>(3 * node);
-    };
-    const auto& n = hinge.nodes;
-    const elements::DihedralDerivatives d = elements::dihedral_angle_derivatives(
-        at(n[0]), at(n[1]), at(n[2]), at(n[3]), /*with_hessian=*/false);
-    double rate = 0.0;
-    for (int j = 0; j < 4; ++j) {
-      rate += d.gradient.segment<3>(3 * j).dot(p.velocity.segment<3>(3 * n[j]));
-    }
-    return std::make_pair(d.angle - limit, rate);
-  };
-  double first = none;
-  for (std::size_t h = 0; h < a.pieces.size(); ++h) {
-    const int from = a.pieces[h], to = e.pieces[h];
-    if (from == to) continue;
-    const model::Hinge& hinge = model.hinges()[h];
-    // The limit next to a's piece on e's side.
-    const double limit = to > from ? (from < 0 ? hinge.law.theta1 : hinge.law.theta2)
-                                   : (from > 0 ? hinge.law.theta2 : hinge.law.theta1);
-    const auto [ga, ra] = offset(a, hinge, limit);
-    const auto [ge, re] = offset(e, hinge, limit);
-    const double from_a = a.t - ga / ra, from_e = e.t - ge / re;
-    const bool a_ok = from_a > a.t && from_a < e.t, e_ok = from_e > a.t && from_e < e.t;
-    double t = none;
-    if (a_ok && e_ok) {
-      t = (from_a - a.t <= e.t - from_e) ? from_a : from_e;
-    } else if (a_ok) {
-      t = from_a;
-    } else if (e_ok) {
-      t = from_e;
-    }
-    if (std::isfinite(t) && !(t >= first)) first = t;  // the smallest (first is NaN at first)
-  }
-  return first;
-}
-
-// The cubic Hermite curve through (ta, ya, da) and (tb, yb, db) (values and derivatives)
-// at t: interpolation for t in [ta, tb], extrapolation beyond.
-template <typename V>
-V hermite(double ta, const V& ya, const V& da, double tb, const V& yb, const V& db, double t) {
-  const double h = tb - ta;
-  const double s = (t - ta) / h, s2 = s * s, s3 = s2 * s;
-  return (2 * s3 - 3 * s2 + 1) * ya + ((s3 - 2 * s2 + s) * h) * da + (3 * s2 - 2 * s3) * yb +
-         ((s3 - s2) * h) * db;
-}
-
-VectorX hermite_u(const PathPoint& a, const PathPoint& b, double t) {
-  return hermite<VectorX>(a.t, a.u, a.velocity, b.t, b.u, b.velocity, t);
-}
-
-// The state and path derivatives at the converged p.u, exactly (no finite differences of
-// forces: where bars are 1e5 times stiffer than hinges, those lose ~6 digits). One assembly
-// of every DOF (`full`, unshifted, lower triangle) gives the constraint forces, the
-// energies and K. K_ff v_f = -K_fi p is solved with the free tangent factorised last (at
-// p.u or within the Newton tolerance of it: a relative error of up to ~1e-6) and refined
-// with K's products until the constraint forces' rate dF/dt = -(K v)_imposed changes by
-// less than 1e-10 of itself (its rounding: ~3e-12). Each family's energy rate is its own
-// internal force dotted with v (assembly::energy_rates). Returns false when a value is not
-// finite.
-bool path_derivatives(assembly::Assembler& assembler, assembly::Assembler& full,
-                      const TangentSolver& solver, const VectorX& prescribed,
-                      const std::vector<Index>& imposed, PathPoint& p) {
-  VectorX force;
-  const assembly::Energies energies = full.assemble(p.u, force, /*with_matrix=*/true);
-  p.force.resize(static_cast<Index>(imposed.size()));
-  for (std::size_t k = 0; k < imposed.size(); ++k) {
-    p.force[static_cast<Index>(k)] = -force[imposed[k]];
-  }
-  p.energy = energies.vector();
-  if (!p.force.allFinite() || !p.energy.allFinite()) return false;
-  const auto K = full.matrix().selfadjointView<Eigen::Lower>();
-  VectorX direction = VectorX::Zero(p.u.size());
-  for (Index i : imposed) direction[i] = prescribed[i];
-  VectorX force_rate(static_cast<Index>(imposed.size()));
-  for (int round = 0; round < 6; ++round) {
-    const VectorX product = K * direction;
-    for (std::size_t k = 0; k < imposed.size(); ++k) {
-      force_rate[static_cast<Index>(k)] = -product[imposed[k]];
-    }
-    if (round > 1 && (force_rate - p.force_rate).lpNorm<Eigen::Infinity>() <=
-                         1e-10 * force_rate.lpNorm<Eigen::Infinity>()) {
-      break;
-    }
-    p.force_rate = force_rate;
-    const VectorX correction = solver.solve(VectorX(-gather_rows(assembler, product)));
-    if (!correction.allFinite()) return false;
-    scatter_add_rows(assembler, correction, direction);
-  }
-  p.force_rate = force_rate;
-  p.velocity = direction;
-  p.energy_rate = assembly::energy_rates(full.model(), p.u, direction);
-  return p.force_rate.allFinite() && p.energy_rate.allFinite();
-}
 
 }  // namespace
 
-PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int steps,
-                                               const std::vector<Index>& imposed,
-                                               const VectorX& start) {
+PathResult follow_adaptive(PathControl& control, assembly::Assembler& assembler,
+                           assembly::Assembler& full, TangentSolver& solver,
+                           const VectorX& start, int steps, const AdaptiveOptions& options) {
+  check_steps("steps", steps);
+  check_bisections(options.max_bisections);
   PathResult result;
-  result.constraint_dofs = imposed;
-  const model::Model& model = assembler_->model();
-  result.families = family_names(model);
+  const std::vector<Index> recorded = control.recorded_dofs();
+  const double sign = control.recorded_sign();
+  result.constraint_dofs = recorded;
+  result.families = family_names(control.model_at(0.0));
+  // Rebinds both assemblers to the model at t (for a control that changes it).
+  auto bind = [&](double t) {
+    if (!control.changes_model()) return;
+    const model::Model& at = control.model_at(t);
+    assembler.rebind(at);
+    full.rebind(at);
+  };
+  bind(0.0);
+  VectorX external = VectorX::Zero(start.size());
+  const int budget = options.reject_iterations;
+  // Newton stops at max_iterations even where reject_iterations would allow more.
+  const int newton_limit = budget > 0 ? std::min(budget, options.newton.max_iterations) : 0;
+  auto accepted = [&](const NewtonOutcome& o) {
+    return o.converged && (budget <= 0 || o.iterations < budget);
+  };
   const double spacing = 1.0 / steps;
-  const double smallest = std::ldexp(spacing, -options_.max_bisections);
+  const double smallest = std::ldexp(spacing, -options.max_bisections);
   const double event_width = kEventWidth * spacing;
   auto sample_at = [&](int k) { return k == steps ? 1.0 : k * spacing; };
   auto newton = [&](VectorX& w, double t) {
-    const NewtonOutcome outcome = equilibrium_at(w, t, start, prescribed, imposed);
+    bind(t);
+    control.apply(t, w, external);
+    const NewtonOutcome outcome = newton_equilibrium(assembler, solver, w, external,
+                                                     options.newton, newton_limit);
     result.newton_iterations += outcome.iterations;
     return outcome;
   };
@@ -203,14 +69,14 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
   };
   // A converged point's forces, energies, stability, law pieces and path derivatives.
   auto complete = [&](PathPoint& p) {
-    if (!path_derivatives(*assembler_, *full_assembler_, *solver_, prescribed, imposed, p)) {
+    if (!path_derivatives(assembler, full, solver, control, recorded, sign, p)) {
       p.outcome.failure =
           "the converged state's internal force, energy or path tangent is not finite (an "
           "element's law is singular there, e.g. a hinge folded flat)";
       return false;
     }
     p.negative = p.outcome.negative_eigenvalues;
-    p.pieces = law_pieces(model, p.u);
+    p.pieces = law_pieces(assembler.model(), p.u);
     return true;
   };
   // A converged point as a sample.
@@ -224,17 +90,9 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
     step.negative_eigenvalues = p.outcome.negative_eigenvalues;
     return step;
   };
-  double force_scale = 0.0;  // largest |drive force| of the path so far [N]
-  // The drive's force G = sum_k F_k U_k / max|U| of constraint forces F.
-  double largest_motion = 0.0;
-  for (Index i : imposed) largest_motion = std::max(largest_motion, std::abs(prescribed[i]));
-  auto drive_force = [&](const VectorX& F) {
-    double g = 0.0;
-    for (std::size_t k = 0; k < imposed.size(); ++k) {
-      g += F[static_cast<Index>(k)] * prescribed[imposed[k]];
-    }
-    return g / largest_motion;
-  };
+  // The monitored quantity's largest magnitude on the path so far.
+  double monitored_scale = 0.0;
+  auto monitored = [&](const PathPoint& p) { return control.monitored(p.force, p.energy); };
 
   // The start, brought to equilibrium (it usually is one: one iteration).
   PathPoint a;
@@ -274,7 +132,7 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
       // (two solves per kink where bisection from a few spacings takes ~12). Bisection for
       // a stability change, or when four aimed steps have not closed it.
       t1 = a.t + 0.5 * (event_end - a.t);
-      const double kink = predictions < 4 ? predicted_kink(model, a, event_point)
+      const double kink = predictions < 4 ? predicted_kink(assembler.model(), a, event_point)
                                           : std::numeric_limits<double>::quiet_NaN();
       if (std::isfinite(kink)) {
         const double aim = kink - a.t <= event_end - kink ? kink + 0.4 * event_width
@@ -326,24 +184,27 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
         event_point = std::move(b);
         continue;
       }
-      // The dense output's error, on the drive's force G = sum_k F_k U_k / max|U| (the
-      // force conjugate to the prescribed motion; the summed reaction of a uniform drive):
-      // its Hermite curve through the previous increment, extrapolated to b, misses b's by
-      // D/24 (b-p)^2 (b-a)^2 (D: its fourth derivative); the interpolant on (a, b) errs by at
-      // most D/24 ((b-a)/2)^4, that times (b-a)^2 / (16 (b-p)^2). How the drive's force is
-      // shared among the driven DOFs is determined only to the Newton tolerance (stiff bars
-      // redistribute it), in the fixed steps as here, so the estimate is not held to it.
+      // The dense output's error, on the monitored quantity G (the drive's force under
+      // displacement control: how it is shared among the driven DOFs is determined only to
+      // the Newton tolerance, stiff bars redistributing it, so the estimate is not held to
+      // that): its Hermite curve through the previous increment, extrapolated to b, misses
+      // b's by D/24 (b-p)^2 (b-a)^2 (D: its fourth derivative); the interpolant on (a, b)
+      // errs by at most D/24 ((b-a)/2)^4, that times (b-a)^2 / (16 (b-p)^2).
       const bool inside = next <= steps && sample_at(next) < b.t;
-      force_scale = std::max({force_scale, std::abs(drive_force(b.force)),
-                              std::abs(drive_force(a.force))});
-      const double allowed = options_.adaptive_tolerance * force_scale;
+      monitored_scale =
+          std::max({monitored_scale, std::abs(monitored(b)), std::abs(monitored(a))});
+      const double allowed = options.tolerance * monitored_scale;
       if (previous.t >= 0.0) {
         const VectorX extrapolated = hermite<VectorX>(previous.t, previous.force,
                                                       previous.force_rate, a.t, a.force,
                                                       a.force_rate, b.t);
+        const VectorX extrapolated_energy =
+            hermite<VectorX>(previous.t, previous.energy, previous.energy_rate, a.t, a.energy,
+                             a.energy_rate, b.t);
         const double span = b.t - previous.t;
-        const double estimate = std::abs(drive_force(b.force - extrapolated)) * length *
-                                length / (16.0 * span * span);
+        const double estimate =
+            std::abs(control.monitored(b.force - extrapolated, b.energy - extrapolated_energy)) *
+            length * length / (16.0 * span * span);
         error_factor = estimate > 0.0 ? 0.9 * std::pow(allowed / estimate, 0.25) : 4.0;
         if (inside && estimate > allowed && length > event_width) {
           // Never shorter than to the next sample: an increment with no sample inside has
@@ -369,7 +230,7 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
         } else if (same_stability) {
           step.load_factor = ts;
           step.displacement = hermite_u(a, b, ts);
-          for (Index i : imposed) step.displacement[i] = start[i] + ts * prescribed[i];
+          control.apply(ts, step.displacement, external);  // the held DOFs exactly
           step.constraint_force =
               hermite<VectorX>(a.t, a.force, a.force_rate, b.t, b.force, b.force_rate, ts);
           step.energies = hermite<VectorX>(a.t, a.energy, a.energy_rate, b.t, b.energy,
@@ -385,7 +246,7 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
             b.outcome.failure = "a sample inside the increment: " + why(o);
             break;
           }
-          step = record_step(*assembler_, w, ts, o, imposed, -1.0);
+          step = record_step(assembler, w, ts, o, recorded, sign);
           if (!finite_step(step)) {
             ok = false;
             b.outcome.failure = "a sample inside the increment: its force is not finite";
@@ -394,7 +255,7 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
         }
         result.steps.push_back(std::move(step));
         ++next;
-        if (options_.stop && options_.stop(result.steps.back())) {
+        if (options.stop && options.stop(result.steps.back())) {
           result.completed = true;
           return result;
         }
@@ -407,9 +268,9 @@ PathResult DisplacementControl::solve_adaptive(const VectorX& prescribed, int st
       if (h < smallest) {
         result.failed_increment = result.attempted_increments;
         result.message = "increment " + std::to_string(next) + " (of " + std::to_string(steps) +
-                         ", at " + format_number(a.t) + " of the prescribed motion) failed: " +
-                         "the adaptive increment fell below 1/2^" +
-                         std::to_string(options_.max_bisections) +
+                         ", at " + format_number(a.t) + " of " + control.parameter_name() +
+                         ") failed: the adaptive increment fell below 1/2^" +
+                         std::to_string(options.max_bisections) +
                          " of a sample spacing; at full size: " + first_failure;
         return result;
       }

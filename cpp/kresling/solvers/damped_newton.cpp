@@ -1,0 +1,35 @@
+#include "kresling/solvers/damped_newton.hpp"
+
+#include <string>
+
+#include "kresling/core/interrupt.hpp"
+
+namespace kresling::solvers {
+
+NewtonOutcome damped_newton(assembly::Assembler& assembler, TangentSolver& solver, VectorX& u,
+                            const NewtonOptions& options, double damping) {
+  NewtonOutcome out;
+  VectorX force;
+  while (out.iterations < options.max_iterations) {
+    check_interrupt();
+    ++out.iterations;
+    assembler.assemble(u, force, /*with_matrix=*/true);
+    const FactorizeInfo info = solver.factorize(assembler.matrix());
+    const VectorX du = info.ok ? solver.solve(gather_rows(assembler, -force)) : VectorX();
+    if (!info.ok || !du.allFinite()) {
+      out.failure = "the tangent stiffness is singular or the correction is not finite";
+      return out;
+    }
+    out.negative_eigenvalues = info.negative_eigenvalues;
+    scatter_add_rows(assembler, damping * du, u);
+    if (du.norm() <= options.tolerance) {
+      out.converged = true;
+      return out;
+    }
+  }
+  out.failure = "Newton did not converge in " + std::to_string(options.max_iterations) +
+                " iterations";
+  return out;
+}
+
+}  // namespace kresling::solvers
