@@ -29,8 +29,8 @@ def test_the_creases_extend_a_contracted_module_to_its_built_state(arm, extended
     assert (r.to, r.switched, r.configuration_before, r.configuration_after) == \
         ("extended", True, "0", "1")
     # The module's other stable state is its built one: each cell at the extended height the
-    # snap-through test of a lone cell gives (Le), to 1e-6 mm (measured 3e-8: the descent's
-    # tolerance; the neighbours, the guides and the slack tendons carry no load there).
+    # snap-through test of a lone cell gives (Le), to 1e-6 mm (measured 1.5e-10; the
+    # neighbours, the guides and the slack tendons carry no load there, so nothing else moves it).
     Le = snap_through(arm.design).extended_height
     np.testing.assert_allclose(r.after.cell_height, Le, atol=1e-6)
     np.testing.assert_allclose(r.after.tip_position, [0.0, 0.0, arm.tip_height], atol=1e-6)
