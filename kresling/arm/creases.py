@@ -164,10 +164,14 @@ def resting_state(arm: Arm, module: int, state: int, *, let_out: float | None = 
     start = ArmState.from_core(solver._core.evaluate(u, [-let_out] * 3, [0.0, 0.0, 0.0]))
     rest, converged, message = solver.release(start)
     cells = rest.cell_states[2 * module:2 * module + 2]
-    if not converged or cells != (state, state):
+    if not converged:
+        raise ValueError(f"state = {state} is invalid: released from module {module}'s "
+                         f"{'extended' if state else 'contracted'} geometry the arm finds no "
+                         f"rest ({message})")
+    if cells != (state, state):
         raise ValueError(f"state = {state} is invalid: module {module} does not rest "
                          f"{'extended' if state else 'contracted'} (released from there it "
-                         f"rests with cells {cells}{'; ' + message if message else ''})")
+                         f"rests with cells {cells}: the module is not bistable)")
     return rest
 
 
