@@ -93,16 +93,28 @@ double CreaseScan::change_range(const CreaseDrive& d, double sign) const {
 bool CreaseScan::probe(const CreaseDrive& d, double sign, double delta, VectorX& u,
                        solvers::PathStep& step) {
   const VectorX t = targets(d, sign, delta);
-  if (!(t.minCoeff() > 0.0 && t.maxCoeff() < kTwoPi)) return false;
+  if (!(t.minCoeff() > 0.0 && t.maxCoeff() < kTwoPi)) {
+    failure_ = "a rest angle would leave (0, 360) degrees";
+    return false;
+  }
   solvers::FoldOptions fo;
   fo.newton = o_.newton;
   fo.max_bisections = 0;  // the bracket is this analysis's to narrow
   const solvers::PathResult p = solvers::solve_fold(
       model_, {solvers::FoldStage{d.hinges, t}}, 1, VectorX::Zero(model_.num_dofs()), fo, u);
-  if (!p.completed || p.steps.size() != 1) return false;
+  if (!p.completed || p.steps.size() != 1) {
+    failure_ = "no equilibrium was found (" + p.message + ")";
+    return false;
+  }
   const solvers::PathStep& next = p.steps.back();
-  if (next.negative_eigenvalues != 0) return false;
-  if ((next.displacement - u).lpNorm<Eigen::Infinity>() > jump_) return false;
+  if (next.negative_eigenvalues != 0) {
+    failure_ = "the equilibrium found is not stable";
+    return false;
+  }
+  if ((next.displacement - u).lpNorm<Eigen::Infinity>() > jump_) {
+    failure_ = "the equilibrium found is on another branch (a node jumped)";
+    return false;
+  }
   u = next.displacement;
   step = next;
   return true;
@@ -158,7 +170,8 @@ void CreaseScan::land(SwitchResult& r, const CreaseDrive& d, double sign, Vector
   r.switched = std::abs(r.landing_height - r.start_height) > jump_;
   r.message = r.switched ? "snapped and landed at height " +
                                format_number(std::round(r.landing_height * 1e6) / 1e6) + " mm"
-                         : "snapped, but released it returned to its start state";
+                         : "snapped, but released it returned to its start state (past the end of the "
+                           "branch, " + failure_ + ")";
 }
 
 // Bisect the bracket [lo, hi] (lo on the branch at u, hi off it) to the resolution.

@@ -22,6 +22,7 @@
 /// the caller defines.
 
 #include <functional>
+#include <string>
 
 #include "kresling/analyses/switching.hpp"
 #include "kresling/model/model.hpp"
@@ -82,6 +83,7 @@ class CreaseScan {
   Height height_;
   solvers::EnergyMinimumOptions descent_;
   double last_force_ = 0.0;  // the rest angles' generalised force at the last record
+  std::string failure_;      // why the last probe that failed did
 };
 
 }  // namespace kresling::analyses
