@@ -15,7 +15,8 @@ STARTS = ("built", "contracted", "pulled")
 def add_arguments(parser, analysis) -> None:
     """The option on ``kresling arm`` and its settings."""
     analysis.add_argument("--crease-switch", type=int, metavar="MODULE",
-                          help="switch module MODULE (0-based from the base) by driving its "
+                          help="switch the module of this index (0-based from the base) by "
+                               "driving its "
                                "creases' rest angles instead of pulling the tendons (which "
                                "are let out), towards its other state; reports the change and "
                                "moment at the snap and where the released arm rests, beside "
