@@ -192,6 +192,14 @@ class ArmSolver:
             raise EquilibriumNotReached(f"pretension {tension} N", path.message)
         return ArmState.from_core(path.states[-1])
 
+    def release(self, start: ArmState, pulls=None) -> tuple:
+        """Where the arm comes to rest from ``start`` with ``pulls`` (default: ``start``'s;
+        a pull may be negative: the tendon let out) and no tip load: energy descent to a
+        stable equilibrium. Returns ``(state, converged, message)``."""
+        pulls = start.pulls if pulls is None else pulls
+        r = self._core.release(start._core, _pulls("pulls", pulls, allow_negative=True))
+        return ArmState.from_core(r.state), bool(r.converged), r.message
+
     def tip_compliance(self, state: ArmState) -> np.ndarray:
         """d(tip displacement)/d(tip load) at ``state``, (3, 3) [mm/N] (the tangent's)."""
         return np.asarray(self._core.tip_compliance(state._core))

@@ -11,6 +11,7 @@ from __future__ import annotations
 import sys
 
 from kresling.arm.structure import THESIS_DESIGN
+from kresling.cli import _arm_creases
 from kresling.cli._output import check_output_file, print_json, print_table
 from kresling.cli.design import add_design_arguments
 
@@ -61,6 +62,7 @@ def register(subparsers) -> None:
     analysis.add_argument("--switching", action="store_true",
                           help="pull all tendons, or one, from every configuration until a "
                                "module snaps: which configurations the pulls reach")
+    _arm_creases.add_arguments(parser, analysis)
     parser.add_argument("--plot", metavar="FILE.png",
                         help="with --table: write the load-capacity figure; with --protocol: "
                              "the markers of both models")
@@ -112,7 +114,8 @@ def run(args) -> int:
                                     ("--pull-tendon", args.pull_tendon is not None),
                                     ("--capacity", args.capacity),
                                     ("--table", args.table), ("--protocol", args.protocol),
-                                    ("--table5", args.table5), ("--switching", args.switching))
+                                    ("--table5", args.table5), ("--switching", args.switching),
+                                    ("--crease-switch", args.crease_switch is not None))
               if on]
     if len(chosen) > 1:
         raise ValueError(f"{' and '.join(chosen)}: give one analysis at a time")
@@ -134,6 +137,8 @@ def run(args) -> int:
                                tendon_stiffness=args.tendon_stiffness)
     arm = build_arm(configuration, n=args.n, lam=args.lam, Lc=args.Lc, R=args.R,
                     parameters=parameters)
+    if args.crease_switch is not None:
+        return _arm_creases.run(args, arm)
     solver = ArmSolver(arm)
     out = {"design": {"n": args.n, "lam": args.lam, "Lc": args.Lc, "R": args.R},
            "modules": arm.modules}

@@ -12,13 +12,15 @@ from hypothesis import strategies as st
 from _fuzz import attempt, edgy_floats, finite, fuzz, junk, mostly
 from kresling import Design
 from kresling.arm import build_arm, pull_until_snap, tip_load
+from kresling.arm.creases import crease_switch
 from kresling.model.kresling_specimen import kresling_specimen
 from kresling.solvers import solve_displacement_control
 from kresling.view import view_model, view_path, write_html
 
 ARM = ("configuration", "n", "lam", "Lc", "R", "design", "parameters", "load", "pulls",
        "pretension", "direction", "max_pull", "steps", "tolerance", "max_bisections", "arm",
-       "pull", "tendon")
+       "pull", "tendon", "module", "group", "to", "let_out", "start", "scan_step_deg",
+       "max_change_deg", "resolution_deg", "overshoot_deg")
 configurations = mostly(st.sampled_from(["111", "101", "000", "1", "11", "0"]),
                         st.text(alphabet="012 ", max_size=4), junk)
 vectors = mostly(st.lists(st.floats(-3, 3), min_size=3, max_size=3),
@@ -49,6 +51,26 @@ def test_arm_pull_until_snap(configuration, direction, max_pull):
     result = attempt(lambda: pull_until_snap(arm, direction, max_pull=max_pull), *ARM)
     if result is not None:
         finite(result.pulls)
+
+
+_ONE_MODULE = {c: build_arm(c) for c in ("1", "0")}
+
+
+@fuzz(10)
+@given(st.sampled_from(["1", "0"]), mostly(st.integers(0, 1), junk),
+       mostly(st.sampled_from(["fold", "valley", "mountain", "polygon"]), junk),
+       mostly(st.none(), st.sampled_from(["extended", "contracted"]), junk),
+       mostly(st.none(), st.floats(0, 200), edgy_floats, junk),
+       mostly(st.floats(2, 20), edgy_floats, junk), mostly(st.floats(0.5, 5), edgy_floats, junk))
+def test_arm_crease_switch(configuration, module, group, to, let_out, max_change, step):
+    arm = _ONE_MODULE[configuration]
+    result = attempt(lambda: crease_switch(arm, module, group=group, to=to, let_out=let_out,
+                                           max_change_deg=max_change, scan_step_deg=step,
+                                           compare_tendons=False), *ARM)
+    if result is not None:
+        assert result.message
+        if result.after is not None:
+            finite(result.after.cell_height, result.tip_displacement)
 
 
 _specimen = kresling_specimen(Design(4, 0.7, 30), [1])

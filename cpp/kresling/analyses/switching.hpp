@@ -50,6 +50,10 @@ enum class CreaseGroup { Valley, Mountain, PolygonEdge, Folds };
 /// "valley", "mountain", "polygon" or "fold".
 const char* crease_group_name(CreaseGroup group);
 
+/// Whether a crease of family `family` belongs to `group` (Folds: every family but the
+/// polygon spokes).
+bool in_crease_group(model::EdgeFamily family, CreaseGroup group);
+
 struct SwitchingOptions {
   model::SpecimenParameters specimen;
   int snap_through_steps = 100;        ///< the snap-through test's increments
