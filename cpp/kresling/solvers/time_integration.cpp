@@ -94,11 +94,8 @@ void check_options(const TimeIntegrationOptions& o) {
 
 }  // namespace
 
-TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
-                              const VectorX& forces, const std::function<double(double)>& load_factor,
-                              const TimeIntegrationOptions& options, const VectorX& u0,
-                              const VectorX& v0) {
-  check_options(options);
+void check_motion_input(const model::Model& model, const VectorX& masses, const TimeLoad& load,
+                        const VectorX& u0, const VectorX& v0) {
   const Index n = model.num_dofs();
   auto check_vector = [&](const char* name, const VectorX& x, bool allow_empty) {
     if ((allow_empty && x.size() == 0)) return;
@@ -108,7 +105,7 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
     }
   };
   check_vector("masses", masses, false);
-  check_vector("forces", forces, false);
+  for (const auto& term : load.terms) check_vector("forces", term.forces, false);
   check_vector("initial displacement", u0, true);
   check_vector("initial velocity", v0, true);
   for (Index i = 0; i < n; ++i) {
@@ -118,11 +115,31 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
                                   format_number(masses[i]) + ": every free DOF needs a mass > 0");
     }
   }
-  auto factor = [&](double t) {
-    const double f = load_factor ? load_factor(t) : 1.0;
+}
+
+VectorX TimeLoad::at(double t, Index n) const {
+  VectorX out = VectorX::Zero(n);
+  for (const auto& term : terms) {
+    const double f = term.factor ? term.factor(t) : 1.0;
     if (!std::isfinite(f)) throw std::invalid_argument("load_factor: not finite at t = " + format_number(t));
-    return f;
-  };
+    out += f * term.forces;
+  }
+  return out;
+}
+
+TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
+                              const VectorX& forces, const std::function<double(double)>& load_factor,
+                              const TimeIntegrationOptions& options, const VectorX& u0,
+                              const VectorX& v0) {
+  return integrate_newmark(model, masses, TimeLoad{{{forces, load_factor}}}, options, u0, v0);
+}
+
+TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
+                              const TimeLoad& time_load, const TimeIntegrationOptions& options,
+                              const VectorX& u0, const VectorX& v0) {
+  check_options(options);
+  check_motion_input(model, masses, time_load, u0, v0);
+  const Index n = model.num_dofs();
 
   const double alpha = options.hht_alpha;
   const double beta = 0.25 * (1.0 - alpha) * (1.0 - alpha), gamma = 0.5 - alpha;
@@ -145,7 +162,7 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
   const std::vector<double> k0_values(assembler.matrix().valuePtr(),
                                       assembler.matrix().valuePtr() + assembler.matrix().nonZeros());
   s.internal = force;
-  s.load = factor(0.0) * forces;
+  s.load = time_load.at(0.0, n);
   {
     StepTerms none(s, 1.0, 0.0, 0.25, 0.5, masses, options.mass_damping, options.stiffness_damping,
                    k0, k0_values);
@@ -158,6 +175,7 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
   }
 
   TimeHistory h;
+  h.time_step = options.time_step;
   std::vector<Index> supported;
   for (Index i = 0; i < n; ++i) {
     if (model.fixed()[i]) supported.push_back(i);
@@ -178,7 +196,7 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
     StepTerms terms(s, dt, alpha, beta, gamma, masses, options.mass_damping,
                     options.stiffness_damping, k0, k0_values);
     const double t_new = s.t + dt;
-    const VectorX load = factor(t_new) * forces;
+    const VectorX load = time_load.at(t_new, n);
     const VectorX external = (1.0 + alpha) * load - alpha * s.load;
     VectorX u = s.u + dt * s.v + (0.5 - beta) * dt * dt * s.a;  // the step's predictor
     NewtonOutcome out = newton_equilibrium(assembler, solver, u, external, options.newton, 0, &terms);
