@@ -121,7 +121,10 @@ TimeHistory integrate_explicit(const model::Model& model, const VectorX& masses,
     load.swap(next_load);
     const double kinetic = 0.5 * v.dot(masses.cwiseProduct(v)), strain = energies.total();
     const bool finite = std::isfinite(kinetic) && std::isfinite(strain) && u.allFinite();
-    const bool grown = kinetic + strain > kEnergyGrowthLimit * put_in;
+    // The energy at a whole step is half a step ahead of the work summed so far (v_n holds
+    // dt a_n / 2 of the current load): that half step's work is in play too.
+    const double ahead = 0.5 * dt * std::abs(v.dot(load));
+    const bool grown = kinetic + strain > kEnergyGrowthLimit * (put_in + ahead);
     const bool last = k == steps || !finite || grown;
     if (last || k % o.record_every == 0) {
       PathStep step;
@@ -145,7 +148,7 @@ TimeHistory integrate_explicit(const model::Model& model, const VectorX& masses,
       h.path.message = "unstable at t = " + format_number(t) + " s: " +
                        (finite ? "the energy grew to " + format_number(kinetic + strain) +
                                      " N mm, over " + format_number(kEnergyGrowthLimit) +
-                                     " times the " + format_number(put_in) +
+                                     " times the " + format_number(put_in + ahead) +
                                      " N mm put in (the tangent stiffened beyond the start's "
                                      "stable step: take a smaller time_step)"
                               : std::string("the state is not finite"));

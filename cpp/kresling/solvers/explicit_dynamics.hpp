@@ -16,8 +16,9 @@
 /// dissipated (sum of dt v_{n+1/2}^T C v_{n+1/2}) and the loads' work (trapezoidal in u);
 /// their balance holds to O((w dt)^2). The run stops with a message, never silently, when
 /// the state stops being finite or its energy (kinetic + stored) exceeds kEnergyGrowthLimit
-/// times what the start and the loads put in (the sum of the start's energy and of the
-/// loads' work's increments' magnitudes): an instability, e.g. a tangent stiffened beyond
+/// times what the start and the loads put in (the start's energy, the magnitudes of the
+/// loads' work's increments and the half step of work the velocity at a whole step is
+/// ahead by, dt |v . f| / 2): an instability, e.g. a tangent stiffened beyond
 /// the start's stable step. (A stable run's energy at the whole steps stays within
 /// 1 / (1 - (w dt)^2 / 4) of the scheme's conserved one, far below that limit.)
 

@@ -3,10 +3,34 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
 
 #include "kresling/assembly/assembler.hpp"
 
 namespace kresling::solvers {
+
+namespace {
+
+// Lanczos steps at most: the highest eigenvalue of a bar-and-hinge tangent converges in a
+// few tens (its spectrum's top is well separated relative to its width).
+constexpr Index kMaxLanczos = 300;
+
+// The largest eigenvalue of the symmetric tridiagonal matrix (diagonal alphas, off-diagonal
+// betas) and the last component of its unit eigenvector.
+std::pair<double, double> top_ritz_value(const std::vector<double>& alphas,
+                                         const std::vector<double>& betas) {
+  const Index k = static_cast<Index>(alphas.size());
+  VectorX diagonal = Eigen::Map<const VectorX>(alphas.data(), k);
+  VectorX sub = k > 1 ? VectorX(Eigen::Map<const VectorX>(betas.data(), k - 1)) : VectorX(0);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
+  eigen.computeFromTridiagonal(diagonal, sub, Eigen::ComputeEigenvectors);
+  return {eigen.eigenvalues()[k - 1], eigen.eigenvectors()(k - 1, k - 1)};
+}
+
+}  // namespace
 
 double damped_stable_step(double omega, double mass_damping, double stiffness_damping) {
   if (!(omega > 0.0)) {
@@ -45,28 +69,41 @@ StableStep stable_time_step(const model::Model& model, const VectorX& masses, co
     }
   }
   out.omega_bound = std::sqrt(row_sums.maxCoeff());
-  // Power iteration from a fixed pseudo-random start (every mode present in it).
-  VectorX x(m);
+  // Lanczos from a fixed pseudo-random start (every mode present in it): the largest
+  // eigenvalue theta of its tridiagonal T_k approaches lambda_max from below, and the
+  // residual r = beta_k |s_k| of its Ritz vector bounds the distance to an eigenvalue, so
+  // theta + r is taken (capped by Gershgorin's bound).
+  VectorX q(m), previous = VectorX::Zero(m), w(m);
   std::uint64_t state = 0x9E3779B97F4A7C15ull;
   for (Index i = 0; i < m; ++i) {
     state = state * 6364136223846793005ull + 1442695040888963407ull;
-    x[i] = static_cast<double>(state >> 11) * 0x1.0p-53 - 0.5;
+    q[i] = static_cast<double>(state >> 11) * 0x1.0p-53 - 0.5;
   }
-  x.normalize();
-  double rho = 0.0, checkpoint = 0.0;
-  constexpr int kMaxIterations = 5000;
-  for (int k = 1; k <= kMaxIterations; ++k) {
-    VectorX y = d.cwiseProduct(K * d.cwiseProduct(x));
-    rho = x.dot(y);
+  q.normalize();
+  std::vector<double> alphas, betas;
+  double beta = 0.0, rho = 0.0;
+  const int most = static_cast<int>(std::min<Index>(m, kMaxLanczos));
+  for (int k = 1; k <= most; ++k) {
+    w = d.cwiseProduct(K * d.cwiseProduct(q)) - beta * previous;
+    const double alpha = q.dot(w);
+    w -= alpha * q;
+    beta = w.norm();
+    alphas.push_back(alpha);
     out.iterations = k;
-    const double norm = y.norm();
-    if (!(norm > 0.0)) break;  // no stiffness along x: w_max = 0 (or x lies in K's null space)
-    x = y / norm;
-    if (k % 10 == 0) {
-      if (std::abs(rho - checkpoint) <= 1e-6 * std::abs(rho)) break;
-      checkpoint = rho;
+    if (k % 5 != 0 && k != most && beta > 1e-14 * std::abs(alpha)) {
+      betas.push_back(beta);
+      previous.swap(q);
+      q = w / beta;
+      continue;
     }
+    const auto [theta, last] = top_ritz_value(alphas, betas);
+    rho = theta + beta * std::abs(last);
+    if (beta * std::abs(last) <= 1e-10 * std::abs(theta) || beta <= 1e-14 * std::abs(alpha)) break;
+    betas.push_back(beta);
+    previous.swap(q);
+    q = w / beta;
   }
+  rho = std::min(rho, row_sums.maxCoeff());
   out.omega_max = std::sqrt(std::max(rho, 0.0));
   out.time_step = damped_stable_step(out.omega_max, mass_damping, stiffness_damping);
   return out;
