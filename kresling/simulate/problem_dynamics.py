@@ -92,16 +92,16 @@ def read_dynamics(t, number, positive, vector3) -> Dynamics:
 
 def read_load_time(t, number, positive) -> LoadTime | None:
     """A ``[[load]]`` entry's ``time`` and ``ramp_time`` (None when it names neither)."""
-    if not t.has("time"):
-        if t.has("ramp_time"):
-            t.fail("ramp_time", "applies only with time = \"ramp\"")
-        return None
-    value = t.get("time", lambda t_, k, v, a: v)
-    if value == "ramp":
-        return LoadTime("ramp", ramp_time=t.get("ramp_time", positive, required=True,
-                                                allowed="the ramp's duration [s] (> 0)"))
-    if t.has("ramp_time"):
+    value = t.get("time", lambda t_, k, v, a: v, None)
+    ramp_time = t.get("ramp_time", positive, None)
+    if (value == "ramp") != (ramp_time is not None):
+        if value == "ramp":
+            t.fail("ramp_time", "is missing: time = \"ramp\" needs the ramp's duration [s]")
         t.fail("ramp_time", f"applies only with time = \"ramp\" (given: {value!r})")
+    if value is None:
+        return None
+    if value == "ramp":
+        return LoadTime("ramp", ramp_time=ramp_time)
     if value == "step":
         return LoadTime("step")
     if isinstance(value, dict):
