@@ -72,7 +72,12 @@ TimeHistory integrate_explicit(const model::Model& model, const VectorX& masses,
       inverse_mass[i] = 1.0 / masses[i];
     }
   }
-  const StableStep stable = stable_time_step(model, masses, u, o.mass_damping, o.stiffness_damping);
+  StableStep stable;
+  try {
+    stable = stable_time_step(model, masses, u, o.mass_damping, o.stiffness_damping);
+  } catch (const std::invalid_argument& error) {  // name the start, as the caller gave it
+    throw std::invalid_argument(std::string("initial displacement: ") + error.what());
+  }
   refuse_unstable(o, stable);
   const double dt = o.duration / static_cast<double>(steps);
 

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
 
 #include "kresling/assembly/assembler.hpp"
+#include "kresling/core/check.hpp"
 
 namespace kresling::solvers {
 
@@ -43,13 +46,29 @@ double damped_stable_step(double omega, double mass_damping, double stiffness_da
 
 StableStep stable_time_step(const model::Model& model, const VectorX& masses, const VectorX& u,
                             double mass_damping, double stiffness_damping) {
+  require_positive("mass_damping", mass_damping, /*allow_zero=*/true);
+  require_positive("stiffness_damping", stiffness_damping, /*allow_zero=*/true);
   const Index n = model.num_dofs();
+  if (masses.size() != n || (u.size() != 0 && u.size() != n)) {
+    throw std::invalid_argument("masses and u: must have one entry per DOF (" +
+                                std::to_string(n) + ")");
+  }
+  for (Index i = 0; i < n; ++i) {
+    if (!model.fixed()[i] && !(masses[i] > 0.0 && std::isfinite(masses[i]))) {
+      throw std::invalid_argument("masses: DOF " + std::to_string(i) + " is free and has mass " +
+                                  format_number(masses[i]) + ": every free DOF needs a mass > 0");
+    }
+  }
   assembly::Assembler assembler(model, assembly::unmasked_dofs(model.fixed()), 0.0,
                                 assembly::Storage::Full);
   VectorX force;
   assembler.assemble(u.size() ? u : VectorX::Zero(n), force, true);
   const assembly::SparseMatrix& K = assembler.matrix();
   const Index m = assembler.size();
+  if (!Eigen::Map<const VectorX>(K.valuePtr(), K.nonZeros()).allFinite()) {
+    throw std::invalid_argument("u: the tangent stiffness there is not finite (an element "
+                                "degenerated), so it has no stable time step");
+  }
   StableStep out;
   if (m == 0) {
     out.time_step = damped_stable_step(0.0, mass_damping, stiffness_damping);
