@@ -37,6 +37,7 @@ from kresling.simulate.output_table import Output, read_output
 from kresling.simulate.problem_actuation import read_actuations, read_springs
 from kresling.simulate.problem_contact import read_contact
 from kresling.simulate.problem_dynamics import read_dynamics, read_load_time
+from kresling.simulate.problem_modes import read_about
 from kresling.simulate.problem_file import read_toml
 from kresling.simulate.problem_mass import SheetMass, read_masses, read_sheet_mass
 
@@ -44,7 +45,8 @@ __all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_proble
 
 #: Analysis methods and what each needs.
 METHODS = ("displacement_control", "force_control", "mgdcm", "fold", "modes", "dynamic")
-#: The states vibration modes (``method = "modes"``) are computed about.
+#: The named states vibration modes (``method = "modes"``) are computed about (besides a
+#: loaded one, an ``[analysis.about]`` table).
 ABOUT = ("rest",)
 #: How displacement control steps between its samples.
 INCREMENTS = ("fixed", "adaptive")
@@ -113,9 +115,10 @@ class Analysis:
     #: path through the last equilibria; a start other than "previous" uses bisection, not
     #: MERLIN2's step control, under merlin2_compat).
     predictor: str = "previous"
-    #: ``method = "modes"``: how many of the lowest modes, about which state (ABOUT).
+    #: ``method = "modes"``: how many of the lowest modes, about which state: "rest" or a
+    #: :class:`~kresling.simulate.problem_modes.LoadedState`.
     modes: int = 10
-    about: str = "rest"
+    about: object = "rest"
 
 
 @dataclass(frozen=True)
@@ -494,7 +497,8 @@ def _read_analysis(t, num_nodes):
         pass  # the steps are [dynamics]'s
     elif method == "modes":
         settings["modes"] = t.get("modes", _count, 10)
-        settings["about"] = t.get("about", _string, "rest", choices=ABOUT)
+        settings["about"] = read_about(
+            t, lambda value: _Table(value, "analysis.about", t.source, t.text), _number, _count)
         t.finish()
         return Analysis(**settings)
     else:
@@ -605,9 +609,14 @@ def _check_consistency(problem, t_analysis):
 
 
 def _check_modes(problem, t_analysis):
-    if problem.loads:
+    kinds = {load.kind for load in problem.loads}
+    if problem.analysis.about == "rest" and problem.loads:
         t_analysis.fail("about", "= 'rest': the modes are about the rest state, so a [[load]] "
-                                 "would have no effect; remove it")
+                                 "would have no effect; remove it, or give an [analysis.about] "
+                                 "table (the modes about the loaded state)")
+    if problem.analysis.about != "rest" and kinds != {"force"}:
+        t_analysis.fail("about", "is a loaded state: it needs [[load]] forces (and forces "
+                                 f"only; given: {sorted(kinds) or 'none'})")
     if problem.sheet_mass.density is None and not problem.masses:
         t_analysis.fail("method", "= 'modes' needs masses: [material] density [t/mm^3] (with "
                                   "the sheet's thickness) or [[mass]] entries")
