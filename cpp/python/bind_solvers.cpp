@@ -160,6 +160,26 @@ TimeLoad time_load(const std::vector<LoadTerm>& terms) {
   return load;
 }
 
+// A time integrator taking (model, masses, load terms, options, u0, v0), the GIL released
+// while it runs.
+template <typename Options, typename Integrate>
+void bind_integrator(py::module_& m, const char* name, Integrate integrate, const char* doc) {
+  m.def(
+      name,
+      [integrate](const Model& model, const VectorX& masses, const std::vector<LoadTerm>& terms,
+                  const Options& options, const VectorX& u0, const VectorX& v0) {
+        const TimeLoad load = time_load(terms);
+        TimeHistory h;
+        {
+          py::gil_scoped_release release;
+          h = integrate(model, masses, load, options, u0, v0);
+        }
+        return h;
+      },
+      py::arg("model"), py::arg("masses"), py::arg("terms"), py::arg("options"),
+      py::arg("u0"), py::arg("v0"), doc);
+}
+
 }  // namespace
 
 void bind_solvers(py::module_& m) {
@@ -282,20 +302,12 @@ void bind_solvers(py::module_& m) {
       .def_property(
           "stop", [](const ExplicitOptions& o) { return static_cast<bool>(o.stop); },
           [](ExplicitOptions& o, const py::object& f) { o.stop = stop_rule(f); });
-  m.def(
-      "integrate_explicit",
-      [](const Model& model, const VectorX& masses, const std::vector<LoadTerm>& terms,
+  bind_integrator<ExplicitOptions>(
+      m, "integrate_explicit",
+      [](const Model& model, const VectorX& masses, const TimeLoad& load,
          const ExplicitOptions& options, const VectorX& u0, const VectorX& v0) {
-        const TimeLoad load = time_load(terms);
-        TimeHistory h;
-        {
-          py::gil_scoped_release release;
-          h = integrate_explicit(model, masses, load, options, u0, v0);
-        }
-        return h;
+        return integrate_explicit(model, masses, load, options, u0, v0);
       },
-      py::arg("model"), py::arg("masses"), py::arg("terms"), py::arg("options"),
-      py::arg("u0"), py::arg("v0"),
       "Explicit central differences with lumped masses under load terms");
   py::class_<StableStep>(m, "StableStep")
       .def_readonly("time_step", &StableStep::time_step)
@@ -312,20 +324,12 @@ void bind_solvers(py::module_& m) {
       py::arg("model"), py::arg("masses"), py::arg("u"), py::arg("mass_damping"),
       py::arg("stiffness_damping"));
 
-  m.def(
-      "integrate_newmark",
-      [](const Model& model, const VectorX& masses, const std::vector<LoadTerm>& terms,
+  bind_integrator<TimeIntegrationOptions>(
+      m, "integrate_newmark",
+      [](const Model& model, const VectorX& masses, const TimeLoad& load,
          const TimeIntegrationOptions& options, const VectorX& u0, const VectorX& v0) {
-        const TimeLoad load = time_load(terms);
-        TimeHistory h;
-        {
-          py::gil_scoped_release release;
-          h = integrate_newmark(model, masses, load, options, u0, v0);
-        }
-        return h;
+        return integrate_newmark(model, masses, load, options, u0, v0);
       },
-      py::arg("model"), py::arg("masses"), py::arg("terms"), py::arg("options"),
-      py::arg("u0"), py::arg("v0"),
       "Newmark / HHT-alpha time integration under load terms (forces, times, factors, "
       "amplitude, frequency_hz)");
 

@@ -11,21 +11,14 @@
 #include <gtest/gtest.h>
 
 #include "kresling/model/model.hpp"
-#include "kresling/model/spring_family.hpp"
+#include "oscillator_test_helpers.hpp"
 #include "kresling/solvers/explicit_dynamics.hpp"
 #include "kresling/solvers/stable_time_step.hpp"
 
 using namespace kresling;
+using kresling::test::oscillator;
 
 namespace {
-
-model::Model oscillator(double k) {
-  NodeMatrix X(1, 3);
-  X << 0.0, 0.0, 0.0;
-  auto springs = std::make_shared<model::SpringFamily>(
-      std::vector<model::AnchorSpring>{{0, Vector3(k, k, k), Vector3::Zero()}});
-  return model::Model(X, std::vector<std::uint8_t>(3, 0), {springs});
-}
 
 solvers::ExplicitOptions options(double dt, double duration) {
   solvers::ExplicitOptions o;

@@ -14,23 +14,15 @@
 #include <gtest/gtest.h>
 
 #include "kresling/model/model.hpp"
-#include "kresling/model/spring_family.hpp"
+#include "oscillator_test_helpers.hpp"
 #include "kresling/solvers/time_integration.hpp"
 
 using namespace kresling;
+using kresling::test::oscillator;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// One node on an isotropic anchor spring of stiffness k [N/mm] at the origin.
-model::Model oscillator(double k) {
-  NodeMatrix X(1, 3);
-  X << 0.0, 0.0, 0.0;
-  auto springs = std::make_shared<model::SpringFamily>(
-      std::vector<model::AnchorSpring>{{0, Vector3(k, k, k), Vector3::Zero()}});
-  return model::Model(X, std::vector<std::uint8_t>(3, 0), {springs});
-}
 
 solvers::TimeIntegrationOptions options(double dt, double duration) {
   solvers::TimeIntegrationOptions o;

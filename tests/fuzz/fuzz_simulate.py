@@ -95,7 +95,7 @@ KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices"
         "predictor", "density", "mass", "modes", "about", "contact", "distance", "planes",
         "point", "normal", "self", "unit", "scale", "frame", "assignments", "dynamics",
         "scheme", "time_step", "duration", "damping", "gravity", "hht_alpha", "record_every",
-        "time", "ramp_time", "alpha", "beta", "unknown_key"]
+        "time", "ramp_time", "alpha", "beta", "load_factor", "unknown_key"]
 values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_001, 10**6]),
                    st.sampled_from(
     ["xyz", "z", "w", "N5B8", "N4B5", "auto", "manual", "linear", "mgdcm", "force_control",
@@ -109,7 +109,8 @@ values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_0
      "origami_simulator", "dynamic", "newmark", "hht", "explicit", "step", "ramp",
      [[0.0, 0.0], [1e-3, 1.0]], [[1e-3, 0.0], [0.0, 1.0]], [[0.0]], {"harmonic": [1.0, 50.0]},
      {"harmonic": [1.0, 0.0]}, {"harmonic": [1e300, 1e300]}, {"alpha": 5.0}, {"beta": -1.0},
-     {"gamma": 1.0}, [0.0, 0.0, -9810.0], 1e-9, 1e-4, -0.05, -0.5]))
+     {"gamma": 1.0}, [0.0, 0.0, -9810.0], 1e-9, 1e-4, -0.05, -0.5,
+     {"load_factor": 1.0, "steps": 2}, {"load_factor": 1e300}]))
 
 
 def mutate(problem, edits):
