@@ -22,7 +22,7 @@ SCHEMES = ("newmark", "hht", "explicit")
 #: The words ``[[load]] time`` may be (besides a table and a harmonic).
 TIME_KINDS = ("step", "ramp")
 #: HHT-alpha's parameter when ``scheme = "hht"`` names none: mild damping of the modes the
-#: step does not resolve, its error on the resolved ones O((w dt)^3) per step.
+#: step does not resolve, a resolved mode's amplitude loss per step falling as (w dt)^4.
 DEFAULT_HHT_ALPHA = -0.05
 
 
