@@ -6,7 +6,9 @@ few sizes, with one panel held:
   control of the same sheet (one corner lifted), the same number of increments: time per
   increment and per Newton iteration;
 - an implicit time step (``solve_dynamics``, average acceleration) against a static
-  Newton iteration (force control) on the same sheet.
+  Newton iteration (force control) on the same sheet;
+- an explicit time step (central differences, at 0.9 of the stable step, every 100th step
+  recorded) per element (bars and hinges) and step, beside the stable step's estimate.
 Iterations count every Newton iteration, of rejected attempts too; the times include each
 solver's set-up (pattern, symbolic factorisation), which the small sheets feel most.
 Run: ``python benchmarks/new_physics_speed.py [--repeat 3]``.
@@ -22,7 +24,7 @@ import numpy as np
 from kresling.io.miura import miura_sheet
 from kresling.model import CreaseLaws, HingeLaw, ManualProperties, build_pattern_model
 from kresling.solvers import (fold, solve_displacement_control, solve_dynamics,
-                              solve_force_control)
+                              solve_force_control, stable_time_step)
 from solver_speed import best_time  # the same timing as the other benchmarks
 
 MATERIAL = ManualProperties(bar_modulus=1e5, bar_area=1.0, fold_stiffness=1.0,
@@ -76,7 +78,33 @@ def main(repeat):
               f"{c / d:>6.2f} {e:>12.3f} {f:>13.3f} {e / f:>6.2f}")
 
 
+def explicit_table(repeat, steps=2000):
+    """The explicit scheme's cost per element and step on the sheets."""
+    print(f"\nExplicit central differences, {steps} steps at 0.9 of the stable step, best of "
+          f"{repeat}.")
+    print(f"{'DOFs':>6} {'elements':>9} {'stable dt [s]':>14} {'estimate ms':>12} "
+          f"{'us/step':>9} {'us/element/step':>16}")
+    for size in (4, 8, 16, 32):
+        _, pm, _ = sheet(size)
+        model = pm.model
+        masses = np.full(model.num_nodes, 1e-6)
+        t_est, stable = best_time(lambda: stable_time_step(model, masses), repeat)
+        dt = 0.9 * stable.time_step
+        force = np.zeros(model.num_dofs)
+        force[-1] = 1e-3
+        t_run, run = best_time(lambda: solve_dynamics(model, masses, dt, steps * dt,
+                                                      forces=force, scheme="explicit",
+                                                      record_every=100), repeat)
+        assert run.completed, run.path.message
+        elements = len(model.bars) + len(model.hinges)
+        per_step = 1e6 * (t_run - t_est) / steps    # the run estimates the step once too
+        print(f"{model.num_dofs:>6} {elements:>9} {stable.time_step:>14.4g} {1e3 * t_est:>12.3f} "
+              f"{per_step:>9.2f} {per_step / elements:>16.4f}")
+
+
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=3)
-    main(parser.parse_args().repeat)
+    arguments = parser.parse_args()
+    main(arguments.repeat)
+    explicit_table(arguments.repeat)

@@ -42,6 +42,16 @@ VARIANTS = [
                            "stop": {"node": 3, "axis": "z", "beyond": 1.0}}},
     {**FORCE, "analysis": {"method": "mgdcm", "stop": {"nodes": [3], "axis": "z", "beyond": 1.0}}},
     {"support": [{"node": 0, "fix": "xyz"}, {"nodes": [1, 2], "fix": "xyz"}]},
+    {"load": [{"nodes": [3], "force": [0.0, 0.0, 0.1], "time": "ramp", "ramp_time": 0.1}],
+     "mass": [{"node": 3, "mass": 1e-6}],
+     "dynamics": {"scheme": "hht", "time_step": 1e-3, "duration": 0.01,
+                  "damping": {"alpha": 1.0}, "gravity": [0.0, 0.0, -9810.0],
+                  "hht_alpha": -0.1},
+     "analysis": {"method": "dynamic", "stop": {"node": 3, "axis": "z", "beyond": 1.0}}},
+    {**FORCE, "mass": [{"node": 3, "mass": 1e-6}],
+     "dynamics": {"scheme": "explicit", "time_step": 1e-5, "duration": 0.01,
+                  "record_every": 10},
+     "analysis": {"method": "dynamic", "stop": {"node": 3, "axis": "z", "beyond": 1.0}}},
 ]
 # The page's heading of each table, and where in the problem the unknown key goes.
 TABLES = {
@@ -51,6 +61,7 @@ TABLES = {
     "[[support]]": (("support", 0),),
     "[[load]]": (("load", 0),),
     "[analysis]": (("analysis",), ("analysis", "stop")),
+    "[dynamics]": (("dynamics",),),
 }
 
 
@@ -94,7 +105,8 @@ def accepted(tmp_path_factory):
             problem["pattern"]["file"] = str(folder / "square.obj")
         for heading, places in TABLES.items():
             for where in places:
-                keys[heading] |= _allowed(problem, where, folder)
+                if where[0] in problem:   # ([dynamics] is in the dynamic variants only)
+                    keys[heading] |= _allowed(problem, where, folder)
     return keys
 
 

@@ -76,3 +76,54 @@ def test_massless_free_node_is_named():
     problem["material"].pop("thickness")
     with pytest.raises(ValueError, match=r"zero at free node\(s\) \[1, 4, 5"):
         simulate(problem)
+
+
+LOADED = dict(copy.deepcopy(PROBLEM),
+              support=[{"nodes": [0, 3, 6], "fix": "xyz"}, {"node": 1, "fix": "z"}],
+              load=[{"nodes": [2, 8], "force": [0.0, 0.0, -0.05]}],
+              analysis={"method": "modes", "modes": 4,
+                        "about": {"load_factor": 0.5, "steps": 4}})
+
+
+def test_modes_about_a_loaded_state_are_the_library_s(tmp_path):
+    """[analysis.about]: force control to the loaded equilibrium, then the modes of the
+    tangent there (its stress stiffness included), bit for bit as from Python."""
+    from kresling.simulate import build_problem_model
+    from kresling.simulate.problem_mass import problem_masses
+    from kresling.solvers import solve_force_control
+
+    run = simulate(LOADED)
+    pm = build_problem_model(LOADED)
+    forces = np.zeros(pm.model.num_dofs)
+    forces[[3 * 2 + 2, 3 * 8 + 2]] = -0.05
+    path = solve_force_control(pm.model, 0.5 * forces, 4,
+                               tolerance=load_problem(LOADED).analysis.tolerance)
+    expected = vibration_modes(pm.model, problem_masses(load_problem(LOADED), pm), k=4,
+                               u=path.displacement[-1])
+    np.testing.assert_array_equal(run.modes.frequencies_hz, expected.frequencies_hz)
+    np.testing.assert_array_equal(run.state, path.displacement[-1])
+    at_rest = simulate(dict(copy.deepcopy(LOADED), load=[],
+                            analysis={"method": "modes", "modes": 4}))
+    # The load moves the frequencies (a prestressed, displaced sheet), not by rounding.
+    assert np.abs(run.modes.frequencies_hz / at_rest.modes.frequencies_hz - 1).max() > 1e-3
+    written = run.write(tmp_path)
+    assert json.loads(written["summary"].read_text())["about"] == {"load_factor": 0.5,
+                                                                    "steps": 4}
+    fold = json.loads(written["fold"].read_text())
+    np.testing.assert_allclose(np.asarray(fold["vertices_coords"]),
+                               pm.model.nodes + path.displacement[-1].reshape(-1, 3),
+                               atol=1e-12)
+
+
+@pytest.mark.parametrize("change, match", [
+    (lambda p: p.pop("load"), r"loaded state: it needs \[\[load\]\] forces"),
+    (lambda p: p["load"].append({"node": 4, "displacement": [0, 0, 1.0]}), "forces only"),
+    (lambda p: p["analysis"]["about"].update(steps=0), r"\[analysis.about\] key 'steps'"),
+    (lambda p: p["analysis"]["about"].update(extra=1), r"key 'extra' is unknown"),
+    (lambda p: p["analysis"].update(about=3), r"must be \"rest\" or an \[analysis.about\]"),
+])
+def test_bad_loaded_states(change, match):
+    problem = copy.deepcopy(LOADED)
+    change(problem)
+    with pytest.raises(ValueError, match=match):
+        load_problem(problem)

@@ -3,15 +3,19 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <functional>
+#include <tuple>
 #include <memory>
 
 #include "bindings.hpp"
 #include "kresling/solvers/displacement_control.hpp"
+#include "kresling/solvers/explicit_dynamics.hpp"
 #include "kresling/solvers/fold.hpp"
 #include "kresling/solvers/force_control.hpp"
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/linear_stiffness.hpp"
+#include "kresling/solvers/stable_time_step.hpp"
 #include "kresling/solvers/tangent_solver.hpp"
 #include "kresling/solvers/time_integration.hpp"
 
@@ -119,6 +123,61 @@ py::class_<Options> bind_path_options(py::module_& m, const char* name) {
           "stop", [](const Options& o) { return static_cast<bool>(o.stop); },
           [](Options& o, const py::object& f) { o.stop = stop_rule(f); });
   return options;
+}
+
+// The load's time function: piecewise linear through the table [t, factor], constant
+// beyond its ends (no table: empty, a factor of 1).
+std::function<double(double)> table_factor(const VectorX& times, const VectorX& factors) {
+  if (times.size() != factors.size()) {
+    throw std::invalid_argument("load table: needs one factor per time");
+  }
+  if (!times.size()) return {};
+  return [times, factors](double t) {
+    if (t <= times[0]) return factors[0];
+    for (Index i = 1; i < times.size(); ++i) {
+      if (t <= times[i]) {
+        const double s = (t - times[i - 1]) / (times[i] - times[i - 1]);
+        return factors[i - 1] + s * (factors[i] - factors[i - 1]);
+      }
+    }
+    return factors[times.size() - 1];
+  };
+}
+
+// A load of terms (forces, times, factors, amplitude, frequency_hz): a harmonic factor
+// amplitude sin(2 pi frequency_hz t) when frequency_hz > 0, else the table's.
+using LoadTerm = std::tuple<VectorX, VectorX, VectorX, double, double>;
+TimeLoad time_load(const std::vector<LoadTerm>& terms) {
+  TimeLoad load;
+  for (const auto& [forces, times, factors, amplitude, frequency] : terms) {
+    if (frequency > 0.0) {
+      const double w = 2.0 * 3.14159265358979323846 * frequency, a = amplitude;
+      load.terms.push_back({forces, [w, a](double t) { return a * std::sin(w * t); }});
+    } else {
+      load.terms.push_back({forces, table_factor(times, factors)});
+    }
+  }
+  return load;
+}
+
+// A time integrator taking (model, masses, load terms, options, u0, v0), the GIL released
+// while it runs.
+template <typename Options, typename Integrate>
+void bind_integrator(py::module_& m, const char* name, Integrate integrate, const char* doc) {
+  m.def(
+      name,
+      [integrate](const Model& model, const VectorX& masses, const std::vector<LoadTerm>& terms,
+                  const Options& options, const VectorX& u0, const VectorX& v0) {
+        const TimeLoad load = time_load(terms);
+        TimeHistory h;
+        {
+          py::gil_scoped_release release;
+          h = integrate(model, masses, load, options, u0, v0);
+        }
+        return h;
+      },
+      py::arg("model"), py::arg("masses"), py::arg("terms"), py::arg("options"),
+      py::arg("u0"), py::arg("v0"), doc);
 }
 
 }  // namespace
@@ -231,41 +290,50 @@ void bind_solvers(py::module_& m) {
       .def_readonly("kinetic", &TimeHistory::kinetic)
       .def_readonly("strain", &TimeHistory::strain)
       .def_readonly("dissipated", &TimeHistory::dissipated)
-      .def_readonly("work", &TimeHistory::work);
+      .def_readonly("work", &TimeHistory::work)
+      .def_readonly("stable_time_step", &TimeHistory::stable_time_step)
+      .def_readonly("time_step", &TimeHistory::time_step);
 
-  m.def(
-      "integrate_newmark",
-      [](const Model& model, const VectorX& masses, const VectorX& forces, const VectorX& times,
-         const VectorX& factors, const TimeIntegrationOptions& options, const VectorX& u0,
-         const VectorX& v0) {
-        if (times.size() != factors.size()) {
-          throw std::invalid_argument("load table: needs one factor per time");
-        }
-        // The load's time function: piecewise linear through the table, constant beyond its
-        // ends (no table: 1).
-        std::function<double(double)> factor;
-        if (times.size()) {
-          factor = [times, factors](double t) {
-            if (t <= times[0]) return factors[0];
-            for (Index i = 1; i < times.size(); ++i) {
-              if (t <= times[i]) {
-                const double s = (t - times[i - 1]) / (times[i] - times[i - 1]);
-                return factors[i - 1] + s * (factors[i] - factors[i - 1]);
-              }
-            }
-            return factors[times.size() - 1];
-          };
-        }
-        TimeHistory h;
-        {
-          py::gil_scoped_release release;
-          h = integrate_newmark(model, masses, forces, factor, options, u0, v0);
-        }
-        return h;
+  py::class_<ExplicitOptions>(m, "ExplicitOptions")
+      .def(py::init<>())
+      .def_readwrite("time_step", &ExplicitOptions::time_step)
+      .def_readwrite("duration", &ExplicitOptions::duration)
+      .def_readwrite("mass_damping", &ExplicitOptions::mass_damping)
+      .def_readwrite("stiffness_damping", &ExplicitOptions::stiffness_damping)
+      .def_readwrite("record_every", &ExplicitOptions::record_every)
+      .def_property(
+          "stop", [](const ExplicitOptions& o) { return static_cast<bool>(o.stop); },
+          [](ExplicitOptions& o, const py::object& f) { o.stop = stop_rule(f); });
+  bind_integrator<ExplicitOptions>(
+      m, "integrate_explicit",
+      [](const Model& model, const VectorX& masses, const TimeLoad& load,
+         const ExplicitOptions& options, const VectorX& u0, const VectorX& v0) {
+        return integrate_explicit(model, masses, load, options, u0, v0);
       },
-      py::arg("model"), py::arg("masses"), py::arg("forces"), py::arg("times"),
-      py::arg("factors"), py::arg("options"), py::arg("u0"), py::arg("v0"),
-      "Newmark / HHT-alpha time integration; the load's factor piecewise linear in time");
+      "Explicit central differences with lumped masses under load terms");
+  py::class_<StableStep>(m, "StableStep")
+      .def_readonly("time_step", &StableStep::time_step)
+      .def_readonly("omega_max", &StableStep::omega_max)
+      .def_readonly("omega_bound", &StableStep::omega_bound)
+      .def_readonly("iterations", &StableStep::iterations);
+  m.def(
+      "stable_time_step",
+      [](const Model& model, const VectorX& masses, const VectorX& u, double mass_damping,
+         double stiffness_damping) {
+        py::gil_scoped_release release;
+        return stable_time_step(model, masses, u, mass_damping, stiffness_damping);
+      },
+      py::arg("model"), py::arg("masses"), py::arg("u"), py::arg("mass_damping"),
+      py::arg("stiffness_damping"));
+
+  bind_integrator<TimeIntegrationOptions>(
+      m, "integrate_newmark",
+      [](const Model& model, const VectorX& masses, const TimeLoad& load,
+         const TimeIntegrationOptions& options, const VectorX& u0, const VectorX& v0) {
+        return integrate_newmark(model, masses, load, options, u0, v0);
+      },
+      "Newmark / HHT-alpha time integration under load terms (forces, times, factors, "
+      "amplitude, frequency_hz)");
 
   m.def(
       "condensed_stiffness",

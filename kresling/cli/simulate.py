@@ -16,7 +16,13 @@ def register(subparsers) -> None:
                     "loads, follow the equilibrium path (displacement control, force control, "
                     "MGDCM, or folding by crease actuation with [[actuation]] tables and "
                     "method = \"fold\") and write history.csv, displacements.csv, path.fold, "
-                    "summary.json and view.html. Node indices are 0-based in the pattern's "
+                    "summary.json and view.html; or compute vibration modes (method = "
+                    "\"modes\": modes.csv), or integrate the motion in time (method = "
+                    "\"dynamic\" with a [dynamics] table: scheme \"newmark\", \"hht\" or "
+                    "\"explicit\", time_step, duration, damping, gravity; each [[load]]'s "
+                    "time \"step\", \"ramp\", a [t, factor] table or a harmonic; history.csv "
+                    "with time and the energies, velocities.csv, a view played in scaled real "
+                    "time). Node indices are 0-based in the pattern's "
                     "vertex order; N5B8 centre nodes follow the vertices. Exits 0 when the "
                     "path ran to its end, 1 when it stopped early (the files still hold "
                     "every converged increment), 2 for a bad problem.",
@@ -57,7 +63,8 @@ def run(args) -> int:
         rows = [(key, "" if summary[key] is None else summary[key])
                 for key in ("method", "stepping", "nodes", "bars", "hinges", "supported_dofs",
                             "increments", "newton_iterations", "attempted_increments",
-                            "attempted_newton_iterations", "final_load_factor", "completed")
+                            "attempted_newton_iterations", "final_load_factor", "time_step",
+                            "stable_time_step", "final_time", "completed")
                 if key in summary]   # (a modes run has no path: no increments)
         rows += [(f"mode {j + 1} [Hz]", f"{f:.6g}")
                  for j, f in enumerate(summary.get("frequencies_hz", []))]

@@ -7,7 +7,8 @@ motion, the force that does the drive's work over the driven displacement of the
 component); under force control and MGDCM, the load factor against the monitored
 displacement (``[analysis.stop]``), else against the displacement that grows largest; a
 fold (``method = "fold"``), the stored energy against the fold's progress in per cent (100
-per stage).
+per stage); a motion in time (``method = "dynamic"``), the monitored displacement (or the
+one that grows largest) against time.
 ``[output] curve = { x = "...", y = "..." }`` names any two quantities instead: a column of
 history.csv (``step``, ``load_factor``, ``reaction_<node>_<axis>``, ``energy_bars``, ...,
 ``iterations``) or ``u_<node>_<axis>``, the displacement of any node [mm].
@@ -23,7 +24,8 @@ __all__ = ["path_curve", "quantity"]
 
 _AXES = "xyz"
 _DISPLACEMENT = re.compile(r"u_(\d+)_([xyz])")
-_UNITS = {"step": "-", "load_factor": "-", "iterations": "-"}
+_UNITS = {"step": "-", "load_factor": "-", "iterations": "-", "time": "s",
+          "work_external": "N*mm"}
 
 
 def quantity(simulation, name, columns) -> tuple:
@@ -92,12 +94,20 @@ def path_curve(simulation, columns) -> tuple:
                 np.asarray(columns["energy_total"], dtype=float), "fold [%]",
                 "energy_total [N*mm]")
     load_factor = np.asarray(simulation.path.load_factor, dtype=float)
-    stop = analysis.stop
+    if analysis.method == "dynamic":   # the motion in time: the monitored or busiest DOF
+        u, label = _moving(simulation, analysis.stop)
+        return load_factor, u, "time [s]", label
+    u, label = _moving(simulation, analysis.stop)
+    return u, load_factor, label, "load factor [-]"
+
+
+def _moving(simulation, stop):
+    """The monitored DOF's displacement (or, without a monitor, the DOF that moves most)
+    [mm] and its label."""
     if stop is not None:
-        u = np.asarray(simulation.path.displacement)[:, stop.dof]
-        return u, load_factor, f"u{stop.axis} of node {stop.node} [mm]", "load factor [-]"
+        return (np.asarray(simulation.path.displacement)[:, stop.dof],
+                f"u{stop.axis} of node {stop.node} [mm]")
     u = np.asarray(simulation.path.displacement, dtype=float)
     dof = int(np.argmax(np.abs(u).max(axis=0)))
     node, axis = divmod(dof, 3)
-    return u[:, dof], load_factor, f"u{_AXES[axis]} of node {node} [mm] (moves most)", \
-        "load factor [-]"
+    return u[:, dof], f"u{_AXES[axis]} of node {node} [mm] (moves most)"

@@ -1,4 +1,5 @@
-"""``method = "modes"``: a problem's vibration modes about its rest state, and their files.
+"""``method = "modes"``: a problem's vibration modes about its rest state (or the loaded
+equilibrium an ``[analysis.about]`` table names), and their files.
 
 A modes run builds the problem's model with its supports, its node masses (the sheet's
 density and ``[[mass]]``, :mod:`kresling.simulate.problem_mass`) and the lowest
@@ -26,6 +27,7 @@ from kresling.analyses.modes import Modes, vibration_modes
 from kresling.io import write_fold
 from kresling.simulate.outputs import _write_csv, path_fold_edges
 from kresling.simulate.problem_mass import problem_masses
+from kresling.solvers import solve_force_control
 
 __all__ = ["ModesRun", "run_modes", "SHAPE_SCALE"]
 
@@ -35,7 +37,7 @@ SHAPE_SCALE = 0.1
 
 @dataclass(frozen=True)
 class ModesRun:
-    """A problem, its model and masses, and the modes about its rest state.
+    """A problem, its model and masses, and the modes about its rest (or loaded) state.
 
     Attributes
     ----------
@@ -52,6 +54,8 @@ class ModesRun:
     modes: Modes
     #: A modes run has no path that may stop early.
     completed: bool = True
+    #: The displacement of the state the modes are about (all DOFs [mm]; None: the rest).
+    state: np.ndarray | None = None
 
     @property
     def model(self):
@@ -59,8 +63,10 @@ class ModesRun:
 
     def summary(self) -> dict:
         model, modes = self.model, self.modes
+        about = self.problem.analysis.about
+        about = about if isinstance(about, str) else about.describe()
         return {"source": self.problem.source, "method": "modes",
-                "about": self.problem.analysis.about, "nodes": model.num_nodes,
+                "about": about, "nodes": model.num_nodes,
                 "bars": len(model.bars), "hinges": len(model.hinges),
                 "supported_dofs": int(model.fixed.sum()), "modes": modes.count,
                 "total_mass_t": float(self.masses.sum()),
@@ -90,13 +96,16 @@ class ModesRun:
     def _write_fold(self, path):
         model, m = self.model, self.modes
         nodes = np.asarray(model.nodes)
+        if self.state is not None:       # the shapes about the loaded state
+            nodes = nodes + self.state.reshape(-1, 3)
         size = float(np.ptp(nodes, axis=0).max())
         shapes = m.shapes.reshape(m.count, model.num_nodes, 3)
         largest = np.linalg.norm(shapes, axis=2).max(axis=1)
         scale = np.where(largest > 0, SHAPE_SCALE * size / np.where(largest > 0, largest, 1), 0)
         frames = nodes[None] + scale[:, None, None] * shapes
         edges, assignment = path_fold_edges(self.pattern_model)
-        titles = [f"{Path(self.problem.source).name}: rest state"] + [
+        state = "rest state" if self.state is None else "loaded state"
+        titles = [f"{Path(self.problem.source).name}: {state}"] + [
             f"mode {j + 1}: {m.frequencies_hz[j]:.6g} Hz" for j in range(m.count)]
         write_fold(path, nodes, [tuple(t) for t in self.pattern_model.elements.triangles],
                    edges=edges, edges_assignment=assignment, frames=frames, frame_title=titles,
@@ -104,11 +113,35 @@ class ModesRun:
                                                  "simulate; one frame per mode"})
 
 
-def run_modes(problem, pattern_model) -> ModesRun:
-    """The lowest ``problem.analysis.modes`` modes of the problem's model at rest."""
-    masses = problem_masses(problem, pattern_model)
+def _loaded_state(problem, model):
+    """The equilibrium an [analysis.about] table names: force control under its load
+    factor times the [[load]] forces (all DOFs [mm])."""
+    about, analysis = problem.analysis.about, problem.analysis
+    forces = np.zeros(model.num_dofs)
+    for load in problem.loads:
+        for node in load.nodes:
+            forces[3 * node:3 * node + 3] += load.vector
     try:
-        modes = vibration_modes(pattern_model.model, masses, k=problem.analysis.modes)
+        path = solve_force_control(model, about.load_factor * forces, about.steps,
+                                   tolerance=analysis.tolerance,
+                                   max_iterations=analysis.max_iterations)
+    except ValueError as error:
+        raise ValueError(f"{problem.source}: [analysis.about]: {error}") from None
+    if not path.completed:
+        raise ValueError(f"{problem.source}: [analysis.about]: force control did not reach "
+                         f"load factor {about.load_factor:g} ({path.message}): the modes "
+                         "need an equilibrium")
+    return np.asarray(path.displacement[-1])
+
+
+def run_modes(problem, pattern_model) -> ModesRun:
+    """The lowest ``problem.analysis.modes`` modes of the problem's model at rest, or about
+    the loaded equilibrium its ``[analysis.about]`` names."""
+    masses = problem_masses(problem, pattern_model)
+    model = pattern_model.model
+    state = None if problem.analysis.about == "rest" else _loaded_state(problem, model)
+    try:
+        modes = vibration_modes(model, masses, k=problem.analysis.modes, u=state)
     except ValueError as error:
         raise ValueError(f"{problem.source}: [analysis] method = 'modes': {error}") from None
-    return ModesRun(problem, pattern_model, masses, modes)
+    return ModesRun(problem, pattern_model, masses, modes, state=state)

@@ -15,7 +15,10 @@ __all__ = ["Output", "read_output"]
 
 #: The quantities a curve may name: history.csv's columns and any node's displacement.
 _NAMED = re.compile(r"step|load_factor|iterations|energy_(?:bars|folds|bends|total)|"
+                    r"time|energy_(?:kinetic|strain|damping)|work_external|"
                     r"(u|reaction)_(\d+)_([xyz])")
+#: The quantities of a motion in time (``method = "dynamic"``) only.
+_IN_TIME = ("time", "energy_kinetic", "energy_strain", "energy_damping", "work_external")
 
 
 @dataclass(frozen=True)
@@ -54,12 +57,16 @@ def read_output(table, num_nodes, method, driven) -> Output:
 
 def _check_quantity(table, axis, name, num_nodes, method, driven):
     allowed = ("must be step, load_factor, iterations, energy_bars, energy_folds, "
-               "energy_bends, energy_total, u_<node>_<axis> or (displacement control) "
-               "reaction_<node>_<axis> of a driven DOF")
+               "energy_bends, energy_total, u_<node>_<axis>, (displacement control) "
+               "reaction_<node>_<axis> of a driven DOF or (method = 'dynamic') time, "
+               "energy_kinetic, energy_strain, energy_damping or work_external")
     match = _NAMED.fullmatch(name) if isinstance(name, str) else None
     if match is None:
         table.fail("curve", f"{axis} = {name!r} is invalid: {allowed}")
     if match.group(1) is None:
+        if method != "dynamic" and name in _IN_TIME:
+            table.fail("curve", f"{axis} = {name!r} is a quantity of a motion in time: "
+                                "[analysis] method = 'dynamic' only")
         return
     node, where = int(match.group(2)), (int(match.group(2)), match.group(3))
     if node >= num_nodes:

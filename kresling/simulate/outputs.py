@@ -167,7 +167,7 @@ def write_outputs(simulation, directory, *, view=True, every=None) -> dict:
     written["fold"] = directory / "path.fold"
     write_fold(written["fold"], model.nodes, triangles, edges=edges, edges_assignment=assignment,
                edges_fold_angle=angles[0], frames=frames, frame_fold_angles=list(angles[1:]),
-               frame_title=f"{Path(simulation.problem.source).name}: reference state",
+               frame_title=_frame_titles(simulation, rows),
                metadata={"file_description": "equilibrium path computed by kresling simulate; "
                                              "one frame per converged increment",
                          "frame_unit": "mm"})
@@ -180,6 +180,16 @@ def write_outputs(simulation, directory, *, view=True, every=None) -> dict:
     elif view:
         written.update(_write_view(simulation, directory, rows, columns))
     return written
+
+
+def _frame_titles(simulation, rows):
+    """The reference state's title, and (a motion in time) each kept frame's time."""
+    first = f"{Path(simulation.problem.source).name}: reference state"
+    playback = getattr(simulation, "playback", None)
+    if playback is None:
+        return first
+    times = playback()[0][rows]
+    return [first] + [f"t = {t:.6g} s" for t in times]
 
 
 class _Kept:
@@ -199,10 +209,15 @@ def _write_view(simulation, directory, rows, columns) -> dict:
     if len(rows):   # (a path without increments: the page says there is nothing to show)
         x, y, x_label, y_label = path_curve(simulation, columns)
         curve = (np.asarray(x)[rows], np.asarray(y)[rows], x_label, y_label)
+    timing = {}
+    if getattr(simulation, "playback", None) is not None:   # a motion: played in time
+        times, scale = simulation.playback()
+        timing = {"times": times[rows], "time_scale": scale}
     try:
         page = write_path_page(simulation.pattern_model, _Kept(simulation.path, rows),
                                directory / "view.html", curve=curve, increments=rows + 1,
-                               total=simulation.path.num_steps, title=view_title(simulation))
+                               total=simulation.path.num_steps, title=view_title(simulation),
+                               **timing)
     except ImportError as error:  # plotly missing: the other files still stand
         logger.warning("view.html not written: %s", error)
         return {}
@@ -215,5 +230,12 @@ def view_title(simulation) -> str:
     where = f"{source.parent.name}/{source.name}" if source.parent.name else source.name
     model = simulation.model
     method = simulation.problem.analysis.method.replace("_", " ")
+    sizes = f"{model.num_nodes} nodes, {len(model.bars)} bars, {len(model.hinges)} hinges"
+    if getattr(simulation, "playback", None) is not None:
+        scale = simulation.playback()[1]
+        duration = simulation.problem.dynamics.duration
+        return (f"kresling simulate {where}: {method} ({simulation.problem.dynamics.scheme}), "
+                f"{simulation.path.num_steps} steps<br>{sizes}; played in real time scaled "
+                f"by {scale:.3g} (its {duration:g} s in {duration * scale:.3g} s)")
     return (f"kresling simulate {where}: {method}, {simulation.path.num_steps} increments"
-            f"<br>{model.num_nodes} nodes, {len(model.bars)} bars, {len(model.hinges)} hinges")
+            f"<br>{sizes}")

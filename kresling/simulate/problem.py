@@ -36,6 +36,8 @@ from kresling.laws import BAR_LAWS, SPRING_LAWS
 from kresling.simulate.output_table import Output, read_output
 from kresling.simulate.problem_actuation import read_actuations, read_springs
 from kresling.simulate.problem_contact import read_contact
+from kresling.simulate.problem_dynamics import read_dynamics, read_load_time
+from kresling.simulate.problem_modes import read_about
 from kresling.simulate.problem_file import read_toml
 from kresling.simulate.problem_mass import SheetMass, read_masses, read_sheet_mass
 
@@ -44,8 +46,9 @@ __all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_proble
 #: MGDCM's defaults, as the core declares them.
 _MGDCM = _core.solvers.MgdcmOptions()
 #: Analysis methods and what each needs.
-METHODS = ("displacement_control", "force_control", "mgdcm", "fold", "modes")
-#: The states vibration modes (``method = "modes"``) are computed about.
+METHODS = ("displacement_control", "force_control", "mgdcm", "fold", "modes", "dynamic")
+#: The named states vibration modes (``method = "modes"``) are computed about (besides a
+#: loaded one, an ``[analysis.about]`` table).
 ABOUT = ("rest",)
 #: How displacement control and folding step between their samples.
 INCREMENTS = ("fixed", "adaptive")
@@ -71,11 +74,14 @@ class Support:
 
 @dataclass(frozen=True)
 class Load:
-    """A force [N] or a prescribed displacement [mm] on each of ``nodes``."""
+    """A force [N] or a prescribed displacement [mm] on each of ``nodes``; ``time`` (a
+    :class:`~kresling.simulate.problem_dynamics.LoadTime`, ``method = "dynamic"`` only) its
+    factor in time, None when the entry names none."""
 
     nodes: tuple
     kind: str  # "force" | "displacement"
     vector: tuple
+    time: object = None
 
 
 @dataclass(frozen=True)
@@ -112,9 +118,10 @@ class Analysis:
     #: path through the last equilibria; a start other than "previous" uses bisection, not
     #: MERLIN2's step control, under merlin2_compat).
     predictor: str = "previous"
-    #: ``method = "modes"``: how many of the lowest modes, about which state (ABOUT).
+    #: ``method = "modes"``: how many of the lowest modes, about which state: "rest" or a
+    #: :class:`~kresling.simulate.problem_modes.LoadedState`.
     modes: int = 10
-    about: str = "rest"
+    about: object = "rest"
 
 
 @dataclass(frozen=True)
@@ -164,6 +171,8 @@ class Problem:
     masses: tuple = ()
     #: Rigid planes the nodes are kept off (``[contact]``), or None.
     contact: object = None
+    #: ``[dynamics]`` (``method = "dynamic"``): a Dynamics, or None.
+    dynamics: object = None
 
 
 class _Table:
@@ -485,9 +494,12 @@ def _read_analysis(t, num_nodes):
             t.fail("predictor", "applies to fixed increments only: adaptive increments start "
                                 "each Newton solve from their own cubic Hermite curves")
         settings["predictor"] = t.get("predictor", _string, "previous", choices=PREDICTORS)
+    elif method == "dynamic":
+        pass  # the steps are [dynamics]'s
     elif method == "modes":
         settings["modes"] = t.get("modes", _count, 10)
-        settings["about"] = t.get("about", _string, "rest", choices=ABOUT)
+        settings["about"] = read_about(
+            t, lambda value: _Table(value, "analysis.about", t.source, t.text), _number, _count)
         t.finish()
         return Analysis(**settings)
     else:
@@ -497,7 +509,7 @@ def _read_analysis(t, num_nodes):
             t.fail("initial_load_factor", "= 0 is invalid: must be non-zero (its sign sets "
                                           "the loading direction)")
         settings["max_increments"] = t.get("max_increments", _count, 100)
-    if method not in ("displacement_control", "fold"):
+    if method not in ("displacement_control", "fold", "dynamic"):
         settings["max_load_factor"] = t.get("max_load_factor", _positive, math.inf)
     if t.has("stop"):
         sub = _Table(t.get("stop", lambda t_, k, v, a: v), "analysis.stop", t.source, t.text)
@@ -534,7 +546,8 @@ def _read_loads(entries, source, text, num_nodes):
             t.fail(None, f"(entry {i}) needs exactly one of 'force' [N] or 'displacement' [mm]")
         kind = "force" if t.has("force") else "displacement"
         vector = t.get(kind, _vector3)
-        loads.append(Load(_node_list(t, num_nodes), kind, vector))
+        time = read_load_time(t, _number, _positive)
+        loads.append(Load(_node_list(t, num_nodes), kind, vector, time))
         t.finish()
     return tuple(loads)
 
@@ -554,8 +567,21 @@ def _check_consistency(problem, t_analysis):
                              "drives the creases it names")
         raise ValueError(f"{problem.source}: [[actuation]] drives creases only with "
                          f"[analysis] method = 'fold' (given: {method!r})")
+    if (method == "dynamic") != (problem.dynamics is not None):
+        if method == "dynamic":
+            t_analysis.fail("method", "= 'dynamic' needs a [dynamics] table (scheme, time_step, "
+                                      "duration)")
+        raise ValueError(f"{problem.source}: [dynamics] applies only with [analysis] method = "
+                         f"'dynamic' (given: {method!r})")
+    timed = [i for i, load in enumerate(problem.loads) if load.time is not None]
+    if timed and method != "dynamic":
+        raise ValueError(f"{problem.source}: load[{timed[0]}] key 'time' applies only with "
+                         f"[analysis] method = 'dynamic' (given: {method!r})")
     if method == "modes":
         _check_modes(problem, t_analysis)
+        return
+    if method == "dynamic":
+        _check_dynamic(problem, t_analysis, kinds)
         return
     if method == "fold":
         if kinds - {"force"}:
@@ -585,12 +611,30 @@ def _check_consistency(problem, t_analysis):
 
 
 def _check_modes(problem, t_analysis):
-    if problem.loads:
+    kinds = {load.kind for load in problem.loads}
+    if problem.analysis.about == "rest" and problem.loads:
         t_analysis.fail("about", "= 'rest': the modes are about the rest state, so a [[load]] "
-                                 "would have no effect; remove it")
+                                 "would have no effect; remove it, or give an [analysis.about] "
+                                 "table (the modes about the loaded state)")
+    if problem.analysis.about != "rest" and kinds != {"force"}:
+        t_analysis.fail("about", "is a loaded state: it needs [[load]] forces (and forces "
+                                 f"only; given: {sorted(kinds) or 'none'})")
     if problem.sheet_mass.density is None and not problem.masses:
         t_analysis.fail("method", "= 'modes' needs masses: [material] density [t/mm^3] (with "
                                   "the sheet's thickness) or [[mass]] entries")
+
+
+def _check_dynamic(problem, t_analysis, kinds):
+    if kinds - {"force"}:
+        t_analysis.fail("method", "= 'dynamic' takes force loads only (each with its time); a "
+                                  "prescribed displacement is not one")
+    if problem.sheet_mass.density is None and not problem.masses:
+        t_analysis.fail("method", "= 'dynamic' needs masses: [material] density [t/mm^3] (with "
+                                  "the sheet's thickness) or [[mass]] entries")
+    if problem.contact is not None and problem.dynamics.scheme == "explicit":
+        raise ValueError(f"{problem.source}: [dynamics] scheme = 'explicit' cannot keep "
+                         "[contact]'s barriers (each step must not cross them): use 'newmark' "
+                         "or 'hht'")
 
 
 def load_problem(problem) -> Problem:
@@ -653,6 +697,10 @@ def load_problem(problem) -> Problem:
     masses = read_masses(root.get("mass", _array_of_tables, []),
                          lambda entry, i: _Table(entry, "mass", source, text, occurrence=i),
                          _number, lambda t: _node_list(t, count))
+    dynamics = None
+    if root.has("dynamics"):
+        dynamics = read_dynamics(_Table(root.get("dynamics", lambda t, k, v, a: v), "dynamics",
+                                        source, text), _number, _positive, _vector3)
     contact = None
     if root.has("contact"):
         contact = read_contact(_Table(root.get("contact", lambda t, k, v, a: v), "contact", source,
@@ -662,6 +710,6 @@ def load_problem(problem) -> Problem:
     root.finish()
     result = Problem(pattern, split, material, compat, laws, supports, loads, analysis, source,
                      centre, output, actuations, springs, convention, sheet_mass, masses,
-                     contact)
+                     contact, dynamics)
     _check_consistency(result, t_analysis)
     return result

@@ -175,6 +175,10 @@ class Simulation:
 def stepping(problem) -> str:
     """How the problem's path is stepped, in words (the summary's record of it)."""
     analysis = problem.analysis
+    if analysis.method == "dynamic":
+        return {"newmark": "time steps of Newmark's average acceleration scheme",
+                "hht": f"time steps of HHT-alpha (alpha = {problem.dynamics.hht_alpha:g})",
+                "explicit": "explicit central-difference time steps"}[problem.dynamics.scheme]
     if analysis.method == "fold":
         if analysis.increments == "adaptive":
             return ("adaptive increments of the creases' rest angles, the equal samples read "
@@ -307,8 +311,10 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
 
     Returns
     -------
-    Simulation or ModesRun
-        A :class:`~kresling.simulate.modes_output.ModesRun` for ``method = "modes"``;
+    Simulation, ModesRun or DynamicRun
+        A :class:`~kresling.simulate.modes_output.ModesRun` for ``method = "modes"``, a
+        :class:`~kresling.simulate.dynamics_output.DynamicRun` for ``method = "dynamic"``
+        (its ``stop`` sees the time as the load factor);
         ``completed`` is False when the path stopped early; ``path.message`` says why.
 
     Raises
@@ -321,6 +327,8 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
     pm = build_problem_model(problem)
     if problem.analysis.method == "modes":   # no path: the modes about the rest state
         return run_modes(problem, pm)
+    if problem.analysis.method == "dynamic":
+        return _run_dynamic(problem, pm, stop)
     model = pm.model
     analysis = problem.analysis
     vector = _load_vector(problem, model.num_dofs)
@@ -382,6 +390,26 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
               else np.flatnonzero(vector))
     return Simulation(problem, pm, path, np.asarray(driven, dtype=np.int64),
                       plan if analysis.method == "fold" else None)
+
+
+def _run_dynamic(problem, pm, stop):
+    """``method = "dynamic"``, with the problem's monitor and the caller's stopping rule."""
+    from kresling.simulate.dynamics_output import run_dynamics
+
+    monitor, count = problem.analysis.stop, [0]
+
+    def rule(time, u):
+        count[0] += 1
+        if monitor is not None and abs(u[monitor.dof]) > monitor.beyond:
+            return True
+        return stop is not None and bool(
+            stop(PathState(count[0], float(time), np.asarray(u).reshape(-1, 3))))
+
+    run = run_dynamics(problem, pm, stop=rule if monitor is not None or stop else None)
+    if not run.path.completed:
+        logger.warning("%s: the motion stopped after %d steps: %s", problem.source,
+                       run.path.num_steps, run.path.message)
+    return run
 
 
 class _Bar:

@@ -1,14 +1,15 @@
 """Nonlinear solvers: displacement control (the thesis's mode), Newton and MGDCM path
-following under force control, folding by crease actuation, implicit time integration,
+following under force control, folding by crease actuation, time integration (implicit and explicit),
 and the linearised stiffness. Each path solver returns a
 :class:`PathResult`; a solver that stops early says so (``completed``, ``message``)."""
 
 from kresling.solvers.displacement_control import solve_displacement_control
-from kresling.solvers.dynamics import TimeHistory, solve_dynamics
+from kresling.solvers.dynamics import StableStep, TimeHistory, solve_dynamics, stable_time_step
 from kresling.solvers.fold import FoldResult, fold, solve_fold
 from kresling.solvers.force_control import solve_force_control, solve_mgdcm
 from kresling.solvers.linear import condensed_stiffness
 from kresling.solvers.path import PathResult
 
 __all__ = ["PathResult", "solve_displacement_control", "solve_force_control", "solve_mgdcm",
-           "condensed_stiffness", "solve_fold", "fold", "FoldResult", "solve_dynamics", "TimeHistory"]
+           "condensed_stiffness", "solve_fold", "fold", "FoldResult", "solve_dynamics", "TimeHistory",
+           "stable_time_step", "StableStep"]

@@ -10,7 +10,9 @@ frames are: their names, rows, the box, the polylines' node orders) and
 It sets ``window.kreslingShowIncrement(K)`` (the frame nearest increment K) and
 ``window.kreslingReady`` (a promise, resolved once the first frame is drawn), reads
 ``#frame=K`` from the address and follows its changes, and plays and pauses with the
-buttons. A browser without ``DecompressionStream`` gets a line saying what it needs.
+buttons: one frame every 60 ms, or, for a motion in time (``frames.times`` [s] and
+``frames.scale``, wall seconds per second of the motion), each frame at its own time.
+A browser without ``DecompressionStream`` gets a line saying what it needs.
 """
 
 __all__ = ["PAGE_SCRIPT"]
@@ -98,10 +100,21 @@ PAGE_SCRIPT = r"""
     var m = /(?:^#|&)frame=(\d+)/.exec(window.location.hash);
     return m ? parseInt(m[1], 10) : null;
   }
+  var clock = null;                     // a motion in time: when and where play started
   function play() {
     if (!playing) { return; }
     if (shown >= F - 1) { playing = false; return; }
-    show(shown + 1).then(function () { setTimeout(play, info.duration); });
+    if (!info.times) {
+      show(shown + 1).then(function () { setTimeout(play, info.duration); });
+      return;
+    }
+    // Each frame at its own time, scaled: frame i is due at the start's wall time plus
+    // (t_i - t_start) * scale (late frames are drawn at once, so the clock is kept).
+    var next = shown + 1;
+    var due = clock.wall + (info.times[next] - info.times[clock.frame]) * info.scale * 1000;
+    setTimeout(function () {
+      if (playing) { show(next).then(play); }
+    }, Math.max(0, due - performance.now()));
   }
   function start() {
     var first = fromHash() === null ? 0 : nearest(fromHash());
@@ -127,7 +140,8 @@ PAGE_SCRIPT = r"""
           if (!playing) {
             playing = true;
             if (shown >= F - 1) { shown = -1; }
-            play();
+            clock = {wall: performance.now(), frame: Math.max(shown, 0)};
+            if (info.times && shown < 0) { show(0).then(play); } else { play(); }
           }
         } else if (what === 'pause') { playing = false; }
       });

@@ -24,7 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
-from kresling._validation import as_integer
+from kresling._validation import as_integer, as_positive_real
 from kresling.view.animation import (FRAME_DURATION_MS, PARTIAL_COLOUR, check_curve,
                                      default_curve, play_buttons, select_rows, slider)
 from kresling.view.fields import significant_decimals
@@ -146,7 +146,7 @@ def _curve(model, path, curve, num_steps):
 
 def write_path_page(model, path, file, *, triangles=None, hinge_family=None, curve=None,
                     frame_stride=None, max_frames=200, title=None, increments=None,
-                    total=None) -> Path:
+                    total=None, times=None, time_scale=None) -> Path:
     """Write a path's animated view as one offline page, straight from its arrays.
 
     The page shows what ``write_html(view_path(model, path, ...), file)`` shows (without
@@ -170,6 +170,12 @@ def write_path_page(model, path, file, *, triangles=None, hinge_family=None, cur
         increment), ascending: the frames' names and ``#frame=K``. Default: 1 to S.
     total : int, optional
         The run's increments, shown as "increment K / total". Default: the last increment.
+    times : array_like, shape (S,), optional
+        The time of each row [s], ascending (a motion in time): play then shows the frames
+        at these times, scaled by ``time_scale``, instead of one every 60 ms.
+    time_scale : float, optional
+        Wall seconds per second of the motion (with ``times``; e.g. 25: a 0.2 s motion
+        plays in 5 s).
 
     Returns
     -------
@@ -208,8 +214,24 @@ def write_path_page(model, path, file, *, triangles=None, hinge_family=None, cur
                             low=low.tolist(), span=(high - low).tolist(),
                             mesh=bool(len(inputs.triangles)),
                             orders=[order.tolist() for _, _, order in lines],
-                            curve=shown_curve is not None, duration=FRAME_DURATION_MS))
+                            curve=shown_curve is not None, duration=FRAME_DURATION_MS,
+                            **_timing(times, time_scale, rows, num_steps)))
     return _write(Path(file), shown, spec, encode85(encode_frames(points, low, high)))
+
+
+def _timing(times, time_scale, rows, num_steps) -> dict:
+    """The frames' times [s] and the playback's scale, for the page (none: {})."""
+    if times is None:
+        if time_scale is not None:
+            raise ValueError("time_scale applies only with times")
+        return {}
+    values = np.asarray(times, dtype=float)
+    if values.shape != (num_steps,) or not np.isfinite(values).all() or \
+            (num_steps > 1 and np.any(np.diff(values) < 0)):
+        raise ValueError(f"times has shape {values.shape}: must be {num_steps} finite, "
+                         "ascending times [s], one per row of the path")
+    scale = as_positive_real("time_scale", 1.0 if time_scale is None else time_scale)
+    return {"times": [float(values[r]) for r in rows], "scale": scale}
 
 
 def _increments(increments, num_steps):

@@ -56,6 +56,25 @@ BASES = [
      "support": [{"nodes": [0, 3], "fix": "xyz"}],
      "mass": [{"nodes": [2, 5], "mass": 1e-6}],
      "analysis": {"method": "modes", "modes": 3}},
+    # A motion in time: a ramped and a harmonic load, damping and gravity; and explicit.
+    {"pattern": dict(SHEET),
+     "material": {"calibration": "auto", "E": 1000.0, "nu": 0.3, "thickness": 0.25,
+                  "density": 1.38e-9},
+     "support": [{"nodes": [0, 3], "fix": "xyz"}],
+     "mass": [{"nodes": [2, 5], "mass": 1e-6}],
+     "load": [{"node": 5, "force": [0.0, 0.0, 0.001], "time": "ramp", "ramp_time": 1e-3},
+              {"node": 2, "force": [0.0, 0.0, 0.001], "time": {"harmonic": [1.0, 100.0]}}],
+     "dynamics": {"scheme": "hht", "hht_alpha": -0.1, "time_step": 1e-3, "duration": 5e-3,
+                  "damping": {"alpha": 10.0, "beta": 1e-5}, "gravity": [0.0, 0.0, -9810.0]},
+     "analysis": {"method": "dynamic"}},
+    {"pattern": dict(SHEET),
+     "material": {"calibration": "auto", "E": 1000.0, "nu": 0.3, "thickness": 0.25,
+                  "density": 1.38e-9},
+     "support": [{"nodes": [0, 3], "fix": "xyz"}],
+     "load": [{"node": 5, "force": [0.0, 0.0, 0.001], "time": [[0.0, 0.0], [1e-5, 1.0]]}],
+     "dynamics": {"scheme": "explicit", "time_step": 1e-7, "duration": 1e-5,
+                  "record_every": 10},
+     "analysis": {"method": "dynamic", "stop": {"node": 5, "axis": "z", "beyond": 1.0}}},
     # A sheet lifted above a floor and pushed onto it.
     {"pattern": {"vertices": [[x, y, 1.0] for x, y, _ in SHEET["vertices"]],
                  "panels": SHEET["panels"]},
@@ -75,7 +94,9 @@ KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices"
         "axis", "beyond", "law", "limits_deg", "stiffness", "output", "every", "curve", "x",
         "y", "spring", "anchor", "actuation", "edges", "family", "fold_angle_deg", "stage",
         "predictor", "density", "mass", "modes", "about", "contact", "distance", "planes",
-        "point", "normal", "self", "unit", "scale", "frame", "assignments", "unknown_key"]
+        "point", "normal", "self", "unit", "scale", "frame", "assignments", "dynamics",
+        "scheme", "time_step", "duration", "damping", "gravity", "hht_alpha", "record_every",
+        "time", "ramp_time", "alpha", "beta", "load_factor", "unknown_key"]
 values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_001, 10**6]),
                    st.sampled_from(
     ["xyz", "z", "w", "N5B8", "N4B5", "auto", "manual", "linear", "mgdcm", "force_control",
@@ -86,7 +107,11 @@ values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_0
      [{"family": "fold", "fold_angle_deg": 180.0}], [{"node": 2, "stiffness": -1.0}],
      "modes", "rest", [{"point": [0, 0, 0], "normal": [0, 0, 0]}], [{"point": [0, 0, 5]}],
      [{"nodes": [2], "mass": -1.0}], {"distance": 0.2, "planes": []}, "cm", "unit", "in",
-     "origami_simulator"]))
+     "origami_simulator", "dynamic", "newmark", "hht", "explicit", "step", "ramp",
+     [[0.0, 0.0], [1e-3, 1.0]], [[1e-3, 0.0], [0.0, 1.0]], [[0.0]], {"harmonic": [1.0, 50.0]},
+     {"harmonic": [1.0, 0.0]}, {"harmonic": [1e300, 1e300]}, {"alpha": 5.0}, {"beta": -1.0},
+     {"gamma": 1.0}, [0.0, 0.0, -9810.0], 1e-9, 1e-4, -0.05, -0.5,
+     {"load_factor": 1.0, "steps": 2}, {"load_factor": 1e300}]))
 
 
 def mutate(problem, edits):
@@ -137,6 +162,9 @@ def run(problem):
         return
     path_ok(simulation.path)
     finite(simulation.model.nodes)
+    if hasattr(simulation, "history"):   # a motion in time: its velocities and energies
+        h = simulation.history
+        finite(h.velocity, h.kinetic, h.strain, h.dissipated, h.work)
     for values in simulation.history_columns().values():
         finite(values)
     if simulation.path.num_steps:   # every output, the view too, of what the path holds
@@ -157,7 +185,7 @@ def test_load_problem_from_dicts(base, edits):
         named_key(error)
         return
     assert loaded.analysis.method in ("displacement_control", "force_control", "mgdcm", "fold",
-                                      "modes")
+                                      "modes", "dynamic")
 
 
 @fuzz(40)

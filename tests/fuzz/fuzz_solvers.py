@@ -10,7 +10,7 @@ from _fuzz import attempt, edgy_floats, edgy_ints, finite, fuzz, junk, path_ok
 from kresling import Design
 from kresling.model.kresling_specimen import kresling_specimen
 from kresling.solvers import (condensed_stiffness, solve_displacement_control, solve_dynamics,
-                              solve_fold, solve_force_control, solve_mgdcm)
+                              solve_fold, solve_force_control, solve_mgdcm, stable_time_step)
 
 _specimen = kresling_specimen(Design(4, 0.7, 30), [1])
 _fixed = np.zeros((_specimen.model.num_nodes, 3), dtype=bool)
@@ -96,7 +96,8 @@ def test_condensed_stiffness(dofs, u):
 
 DYNAMICS = ("masses", "time_step", "duration", "forces", "gravity", "load_table", "hht_alpha",
             "mass_damping", "stiffness_damping", "tolerance", "max_iterations", "max_halvings",
-            "initial", "initial_velocity", "free DOF", "steps")
+            "initial", "initial_velocity", "free DOF", "steps", "scheme", "loads", "harmonic",
+            "record_every", "time")
 
 
 @fuzz(40)
@@ -110,7 +111,15 @@ DYNAMICS = ("masses", "time_step", "duration", "forces", "gravity", "load_table"
            "gravity": st.one_of(st.sampled_from([(0, 0, -9810.0), (0, 0), (1e300, 0, 0)]), junk),
            "load_table": st.one_of(st.sampled_from([[[0, 0], [1e-2, 1]], [[1, 0], [0, 1]],
                                                     [[0, float("nan")]]]), junk),
-           "max_halvings": small_ints, "tolerance": st.one_of(edgy_floats, junk)}), initial)
+           "max_halvings": small_ints, "tolerance": st.one_of(edgy_floats, junk),
+           "scheme": st.one_of(st.sampled_from(["newmark", "hht", "explicit", "rk4"]), junk),
+           "record_every": st.one_of(st.sampled_from([1, 7, 0, 10**12]), junk),
+           "loads": st.one_of(st.lists(st.tuples(
+               st.sampled_from([np.ones(MODEL.num_dofs), np.zeros(3), [np.nan] * 3]),
+               st.one_of(st.none(), st.sampled_from([
+                   [[0, 0], [1e-2, 1]], {"harmonic": (1.0, 50.0)}, {"harmonic": (1.0, -1.0)},
+                   {"harmonic": (np.inf, 1.0)}, {"sine": 1}, [[0.0]]]), junk)), max_size=2),
+               junk)}), initial)
 def test_dynamics(mass, dt, duration, pattern, opts, start):
     history = attempt(lambda: solve_dynamics(MODEL, mass, dt, duration, forces=load(1.0, pattern),
                                              initial=start, **opts), *DYNAMICS)
@@ -118,6 +127,23 @@ def test_dynamics(mass, dt, duration, pattern, opts, start):
         path_ok(history.path)
         finite(history.velocity, history.kinetic, history.strain, history.dissipated,
                history.work)
+        if history.scheme == "explicit":   # never above its stable step, which it reports
+            assert 0 < history.time_step <= history.stable_time_step
+
+
+@fuzz(30)
+@given(st.one_of(st.sampled_from([1e-6, 1e-3, 0.0, -1.0]), edgy_floats, junk), initial,
+       st.one_of(st.sampled_from([0.0, 10.0, -1.0]), edgy_floats, junk),
+       st.one_of(st.sampled_from([0.0, 1e-4]), edgy_floats, junk))
+def test_stable_time_step(mass, state, alpha, beta):
+    stable = attempt(lambda: stable_time_step(MODEL, np.full(MODEL.num_nodes, mass) if
+                                              isinstance(mass, float) else mass, state,
+                                              mass_damping=alpha, stiffness_damping=beta),
+                     "masses", "u", "mass_damping", "stiffness_damping")
+    if stable is not None:
+        assert stable.time_step > 0 and not np.isnan(stable.time_step)
+        assert stable.omega_bound >= stable.omega_max * (1 - 1e-12) or \
+            not np.isfinite(stable.omega_bound)
 
 
 FOLD = ("stages", "steps", "forces", "tolerance", "max_iterations", "max_bisections",

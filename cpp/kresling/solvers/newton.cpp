@@ -158,9 +158,10 @@ bool finite_step(const PathStep& step) {
 
 PathStep record_step(assembly::Assembler& assembler, const VectorX& u, double load_factor,
                      const NewtonOutcome& outcome, const std::vector<Index>& constraint_dofs,
-                     double sign) {
+                     double sign, VectorX* internal) {
   PathStep step;
-  VectorX force;
+  VectorX own;
+  VectorX& force = internal ? *internal : own;
   const auto energies = assembler.assemble(u, force, /*with_matrix=*/false);
   step.load_factor = load_factor;
   step.displacement = u;

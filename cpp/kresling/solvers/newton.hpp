@@ -73,8 +73,9 @@ bool finite_step(const PathStep& step);
 
 /// Record a converged state as a path step: energies and the internal force re-evaluated
 /// at `u` itself (not at the last iterate), the constrained DOFs' forces times `sign`.
+/// `internal` (optional) receives that internal force (one entry per DOF).
 PathStep record_step(assembly::Assembler& assembler, const VectorX& u, double load_factor,
                      const NewtonOutcome& outcome, const std::vector<Index>& constraint_dofs,
-                     double sign);
+                     double sign, VectorX* internal = nullptr);
 
 }  // namespace kresling::solvers

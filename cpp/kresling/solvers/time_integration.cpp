@@ -92,13 +92,65 @@ void check_options(const TimeIntegrationOptions& o) {
   check_shift(o.shift);
 }
 
+// Chord iterations a step tries with the factorisation kept from an earlier step before it
+// refactorises (Newton's method).
+constexpr int kChordIterations = 6;
+
+// One step's equilibrium from the predictor u. The effective tangent (K + M / (beta dt^2)
+// + damping) changes little from step to step, so with `reuse` the step first iterates
+// with the factorisation an earlier step of the same dt left in `solver` (chord
+// iterations: a force evaluation and a solve each, no assembly of the tangent, no
+// factorisation); as soon as a correction shrinks less than by half (the tangent has
+// drifted) or after kChordIterations, Newton's method takes over from there. A chord
+// correction below the tolerance ends the step: its contraction (below 1/2) leaves an
+// error smaller than the correction itself.
+NewtonOutcome solve_step(assembly::Assembler& assembler, TangentSolver& solver, VectorX& u,
+                         const VectorX& external, const NewtonOptions& options,
+                         StepTerms& terms, bool reuse, bool& refactorised) {
+  int chords = 0;
+  refactorised = false;
+  if (reuse) {
+    VectorX force, trial = u;
+    double previous = INFINITY;
+    while (chords < std::min(kChordIterations, options.max_iterations - 1)) {
+      check_interrupt();
+      assembler.assemble(trial, force, /*with_matrix=*/false);
+      terms.add_force(trial, force);
+      const VectorX du = solver.solve(gather_rows(assembler, external - force));
+      const double size = du.norm();
+      if (!std::isfinite(size) || size > 0.5 * previous) break;
+      ++chords;
+      scatter_add_rows(assembler, du, trial);
+      u = trial;
+      if (size <= options.tolerance) {
+        NewtonOutcome out;
+        out.converged = true;
+        out.iterations = chords;
+        return out;
+      }
+      previous = size;
+    }
+  }
+  refactorised = true;
+  NewtonOutcome out = newton_equilibrium(assembler, solver, u, external, options,
+                                         options.max_iterations - chords, &terms);
+  out.iterations += chords;
+  return out;
+}
+
+// Whether a model's elements limit Newton's corrections (a barrier): its steps then take
+// Newton's own iterations, which respect the limits, every time.
+bool limits_steps(const model::Model& model) {
+  for (const auto& family : model.families()) {
+    if (family->limits_steps()) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
-TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
-                              const VectorX& forces, const std::function<double(double)>& load_factor,
-                              const TimeIntegrationOptions& options, const VectorX& u0,
-                              const VectorX& v0) {
-  check_options(options);
+void check_motion_input(const model::Model& model, const VectorX& masses, const TimeLoad& load,
+                        const VectorX& u0, const VectorX& v0) {
   const Index n = model.num_dofs();
   auto check_vector = [&](const char* name, const VectorX& x, bool allow_empty) {
     if ((allow_empty && x.size() == 0)) return;
@@ -108,7 +160,7 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
     }
   };
   check_vector("masses", masses, false);
-  check_vector("forces", forces, false);
+  for (const auto& term : load.terms) check_vector("forces", term.forces, false);
   check_vector("initial displacement", u0, true);
   check_vector("initial velocity", v0, true);
   for (Index i = 0; i < n; ++i) {
@@ -118,11 +170,31 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
                                   format_number(masses[i]) + ": every free DOF needs a mass > 0");
     }
   }
-  auto factor = [&](double t) {
-    const double f = load_factor ? load_factor(t) : 1.0;
+}
+
+VectorX TimeLoad::at(double t, Index n) const {
+  VectorX out = VectorX::Zero(n);
+  for (const auto& term : terms) {
+    const double f = term.factor ? term.factor(t) : 1.0;
     if (!std::isfinite(f)) throw std::invalid_argument("load_factor: not finite at t = " + format_number(t));
-    return f;
-  };
+    out += f * term.forces;
+  }
+  return out;
+}
+
+TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
+                              const VectorX& forces, const std::function<double(double)>& load_factor,
+                              const TimeIntegrationOptions& options, const VectorX& u0,
+                              const VectorX& v0) {
+  return integrate_newmark(model, masses, TimeLoad{{{forces, load_factor}}}, options, u0, v0);
+}
+
+TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
+                              const TimeLoad& time_load, const TimeIntegrationOptions& options,
+                              const VectorX& u0, const VectorX& v0) {
+  check_options(options);
+  check_motion_input(model, masses, time_load, u0, v0);
+  const Index n = model.num_dofs();
 
   const double alpha = options.hht_alpha;
   const double beta = 0.25 * (1.0 - alpha) * (1.0 - alpha), gamma = 0.5 - alpha;
@@ -145,7 +217,7 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
   const std::vector<double> k0_values(assembler.matrix().valuePtr(),
                                       assembler.matrix().valuePtr() + assembler.matrix().nonZeros());
   s.internal = force;
-  s.load = factor(0.0) * forces;
+  s.load = time_load.at(0.0, n);
   {
     StepTerms none(s, 1.0, 0.0, 0.25, 0.5, masses, options.mass_damping, options.stiffness_damping,
                    k0, k0_values);
@@ -158,6 +230,7 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
   }
 
   TimeHistory h;
+  h.time_step = options.time_step;
   std::vector<Index> supported;
   for (Index i = 0; i < n; ++i) {
     if (model.fixed()[i]) supported.push_back(i);
@@ -171,6 +244,11 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
   const double smallest = std::ldexp(nominal, -options.max_halvings);
   double dt = nominal;
   const double end = options.duration;
+  // The dt whose effective tangent the solver holds factorised (0: none), and the
+  // stability that factorisation reported.
+  double factorised_dt = 0.0;
+  int negative = -1;
+  const bool chords_allowed = !limits_steps(model);
   while (s.t < end * (1.0 - 1e-12)) {
     check_interrupt();
     dt = std::min(dt, end - s.t);
@@ -178,20 +256,28 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
     StepTerms terms(s, dt, alpha, beta, gamma, masses, options.mass_damping,
                     options.stiffness_damping, k0, k0_values);
     const double t_new = s.t + dt;
-    const VectorX load = factor(t_new) * forces;
+    const VectorX load = time_load.at(t_new, n);
     const VectorX external = (1.0 + alpha) * load - alpha * s.load;
     VectorX u = s.u + dt * s.v + (0.5 - beta) * dt * dt * s.a;  // the step's predictor
-    NewtonOutcome out = newton_equilibrium(assembler, solver, u, external, options.newton, 0, &terms);
+    bool refactorised = false;
+    NewtonOutcome out = solve_step(assembler, solver, u, external, options.newton, terms,
+                                   chords_allowed && factorised_dt == dt, refactorised);
     h.path.newton_iterations += out.iterations;
+    if (refactorised) {  // the solver now holds a factorisation of this dt's tangent
+      factorised_dt = dt;
+      negative = out.negative_eigenvalues;
+    }
+    out.negative_eigenvalues = negative;
     PathStep step;
     if (out.converged) {
-      step = record_step(assembler, u, t_new, out, supported, 1.0);
+      step = record_step(assembler, u, t_new, out, supported, 1.0, &force);
       if (!finite_step(step)) {
         out.converged = false;
         out.failure = kStepNotFinite;
       }
     }
     if (!out.converged) {
+      factorised_dt = 0.0;
       dt *= 0.5;
       if (dt < smallest) {
         h.path.failed_increment = h.path.attempted_increments;
@@ -209,7 +295,6 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
     const VectorX damping = terms.damping_force(v);
     dissipated += 0.5 * du.dot(s.damping + damping);
     work += 0.5 * du.dot(s.load + load);
-    assembler.assemble(u, force, false);
     s.t = t_new;
     s.u = u;
     s.v = v;

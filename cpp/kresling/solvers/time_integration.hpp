@@ -43,7 +43,31 @@ struct TimeHistory {
   std::vector<double> strain;     ///< the model's stored energy per step [N mm]
   std::vector<double> dissipated; ///< damping's dissipated energy up to each step [N mm]
   std::vector<double> work;       ///< the loads' work up to each step [N mm]
+  /// Explicit integration: the stable step at the start [s] (stable_time_step.hpp) and
+  /// the step taken; implicit: 0 and the nominal step.
+  double stable_time_step = 0.0;
+  double time_step = 0.0;
 };
+
+/// A load in time: the sum of its terms' forces (one entry per DOF [N]) times their
+/// factor(t) (an empty factor: 1), e.g. a step on one node and a harmonic on another.
+struct TimeLoad {
+  struct Term {
+    VectorX forces;
+    std::function<double(double)> factor;
+  };
+  std::vector<Term> terms;
+
+  /// The load at t [N], n entries (zero without terms); throws std::invalid_argument when
+  /// a factor is not finite.
+  VectorX at(double t, Index n) const;
+};
+
+/// The checks every integrator makes of its input: masses, each load term's forces, u0 and
+/// v0 (u0, v0 may be empty) one finite entry per DOF, and a mass > 0 at every free DOF.
+/// Throws std::invalid_argument.
+void check_motion_input(const model::Model& model, const VectorX& masses, const TimeLoad& load,
+                        const VectorX& u0, const VectorX& v0);
 
 /// Integrate from (u0, v0) (empty: zero) under the load `forces` (one entry per DOF, [N])
 /// times `load_factor(t)` (empty: 1), with lumped masses `masses` (one per DOF [t], > 0 at
@@ -52,5 +76,9 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
                               const VectorX& forces, const std::function<double(double)>& load_factor,
                               const TimeIntegrationOptions& options, const VectorX& u0 = VectorX(),
                               const VectorX& v0 = VectorX());
+/// The same under a load of several terms (TimeLoad).
+TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
+                              const TimeLoad& load, const TimeIntegrationOptions& options,
+                              const VectorX& u0 = VectorX(), const VectorX& v0 = VectorX());
 
 }  // namespace kresling::solvers

@@ -1,0 +1,156 @@
+"""The problem file's time integration: the ``[dynamics]`` table and the ``time`` of each
+``[[load]]`` (``[analysis] method = "dynamic"``), read as :mod:`kresling.simulate.problem`
+reads every table (see docs/simulate.md and docs/dynamics.md).
+
+``[dynamics]``: ``scheme`` ("newmark", "hht" or "explicit"), ``time_step`` and ``duration``
+[s], ``damping = { alpha = ..., beta = ... }`` (Rayleigh, [1/s] and [s]), ``gravity`` [mm/s^2],
+``hht_alpha`` (with "hht", in [-1/3, 0], default -0.05) and ``record_every`` (with
+"explicit": keep every k-th step). A load's ``time``: "step" (on from t = 0, the default),
+"ramp" (from 0 to 1 over ``ramp_time`` [s], then held), a table ``[[t, factor], ...]``
+(piecewise linear, held beyond its ends) or ``{ harmonic = [amplitude, frequency_hz] }``
+(``amplitude sin(2 pi f t)``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+__all__ = ["Dynamics", "LoadTime", "read_dynamics", "read_load_time", "SCHEMES", "TIME_KINDS"]
+
+#: The schemes of ``[dynamics] scheme``.
+SCHEMES = ("newmark", "hht", "explicit")
+#: The words ``[[load]] time`` may be (besides a table and a harmonic).
+TIME_KINDS = ("step", "ramp")
+#: HHT-alpha's parameter when ``scheme = "hht"`` names none: mild damping of the modes the
+#: step does not resolve, a resolved mode's amplitude loss per step falling as (w dt)^4.
+DEFAULT_HHT_ALPHA = -0.05
+
+
+@dataclass(frozen=True)
+class Dynamics:
+    """The ``[dynamics]`` table: scheme, step and duration [s], Rayleigh damping (alpha
+    [1/s], beta [s]), gravity [mm/s^2] or None, HHT's alpha and the explicit scheme's
+    record_every."""
+
+    scheme: str
+    time_step: float
+    duration: float
+    alpha: float = 0.0
+    beta: float = 0.0
+    gravity: tuple | None = None
+    hht_alpha: float = 0.0
+    record_every: int = 1
+
+
+@dataclass(frozen=True)
+class LoadTime:
+    """A load's factor in time: ``kind`` "step", "ramp" (over ``ramp_time`` [s]), "table"
+    (``table``: (t, factor) pairs) or "harmonic" (``amplitude``, ``frequency_hz``)."""
+
+    kind: str = "step"
+    ramp_time: float | None = None
+    table: tuple = ()
+    amplitude: float = 0.0
+    frequency_hz: float = 0.0
+
+    def for_solver(self):
+        """The time function as :func:`kresling.solvers.solve_dynamics` takes a load's."""
+        if self.kind == "step":
+            return None
+        if self.kind == "ramp":
+            return [[0.0, 0.0], [self.ramp_time, 1.0]]
+        if self.kind == "table":
+            return [list(row) for row in self.table]
+        return {"harmonic": (self.amplitude, self.frequency_hz)}
+
+
+def read_dynamics(t, number, positive, vector3) -> Dynamics:
+    """The ``[dynamics]`` table ``t`` (a reader of the problem's tables)."""
+    scheme = t.get("scheme", _choice, "newmark", choices=SCHEMES)
+    time_step = t.get("time_step", positive, required=True, allowed="the time step [s] (> 0)")
+    duration = t.get("duration", positive, required=True, allowed="the time to integrate [s]")
+    alpha = beta = 0.0
+    if t.has("damping"):
+        damping = t.get("damping", lambda t_, k, v, a: v)
+        if not isinstance(damping, dict) or not damping or set(damping) - {"alpha", "beta"}:
+            t.fail("damping", f"= {damping!r} is invalid: must be {{ alpha = ..., beta = ... }} "
+                              "(Rayleigh: C = alpha M + beta K, alpha [1/s], beta [s])")
+        alpha = _non_negative(t, "damping", "alpha", damping.get("alpha", 0.0), number)
+        beta = _non_negative(t, "damping", "beta", damping.get("beta", 0.0), number)
+    gravity = t.get("gravity", vector3, None)
+    if scheme != "hht" and t.has("hht_alpha"):
+        t.fail("hht_alpha", f"applies only with scheme = 'hht' (given: {scheme!r})")
+    hht_alpha = t.get("hht_alpha", number, DEFAULT_HHT_ALPHA) if scheme == "hht" else 0.0
+    if not -1 / 3 <= hht_alpha <= 0:
+        t.fail("hht_alpha", f"= {hht_alpha!r} is invalid: must be in [-1/3, 0]")
+    if scheme != "explicit" and t.has("record_every"):
+        t.fail("record_every", f"applies only with scheme = 'explicit' (given: {scheme!r})")
+    record_every = t.get("record_every", _whole, 1)
+    t.finish()
+    return Dynamics(scheme, time_step, duration, alpha, beta, gravity, hht_alpha, record_every)
+
+
+def read_load_time(t, number, positive) -> LoadTime | None:
+    """A ``[[load]]`` entry's ``time`` and ``ramp_time`` (None when it names neither)."""
+    value = t.get("time", lambda t_, k, v, a: v, None)
+    ramp_time = t.get("ramp_time", positive, None)
+    if (value == "ramp") != (ramp_time is not None):
+        if value == "ramp":
+            t.fail("ramp_time", "is missing: time = \"ramp\" needs the ramp's duration [s]")
+        t.fail("ramp_time", f"applies only with time = \"ramp\" (given: {value!r})")
+    if value is None:
+        return None
+    if value == "ramp":
+        return LoadTime("ramp", ramp_time=ramp_time)
+    if value == "step":
+        return LoadTime("step")
+    if isinstance(value, dict):
+        return _harmonic(t, value, number)
+    if isinstance(value, list):
+        return LoadTime("table", table=_table(t, value, number))
+    t.fail("time", f"= {value!r} is invalid: must be \"step\", \"ramp\" (with ramp_time), "
+                   "[[t, factor], ...] or { harmonic = [amplitude, frequency_hz] }")
+
+
+def _harmonic(t, value, number):
+    pair = value.get("harmonic") if set(value) == {"harmonic"} else None
+    if not isinstance(pair, list) or len(pair) != 2:
+        t.fail("time", f"= {value!r} is invalid: must be {{ harmonic = [amplitude, "
+                       "frequency_hz] }")
+    amplitude, frequency = (number(t, "time", v) for v in pair)
+    if frequency <= 0:
+        t.fail("time", f"= {value!r} is invalid: the harmonic's frequency must be > 0 [Hz]")
+    return LoadTime("harmonic", amplitude=amplitude, frequency_hz=frequency)
+
+
+def _table(t, rows, number):
+    if not rows:
+        t.fail("time", "= [] is invalid: a table needs at least one row [t, factor]")
+    table = []
+    for row in rows:
+        if not isinstance(row, list) or len(row) != 2:
+            t.fail("time", f"has a row {row!r}: each row is [t, factor] (t in s)")
+        table.append(tuple(number(t, "time", v) for v in row))
+    times = [row[0] for row in table]
+    if any(b <= a for a, b in zip(times, times[1:])):
+        t.fail("time", f"has times {times}: they must increase")
+    return tuple(table)
+
+
+def _non_negative(t, key, name, value, number):
+    value = number(t, key, value)
+    if value < 0:
+        t.fail(key, f"{name} = {value!r} is invalid: must be >= 0")
+    return value
+
+
+def _choice(t, key, value, allowed=None):
+    if not isinstance(value, str) or value not in allowed:
+        t.fail(key, f"= {value!r} is invalid: must be one of {list(allowed)}")
+    return value
+
+
+def _whole(t, key, value, allowed=None):
+    if isinstance(value, bool) or not isinstance(value, int) or value < 1:
+        t.fail(key, f"= {value!r} is invalid: must be an integer >= 1")
+    return value
