@@ -35,11 +35,15 @@ from kresling.analyses.laminate import specimen_masses
 from kresling.analyses.snap_through import SnapThroughResult, snap_through
 from kresling.geometry import Design, as_design
 
-__all__ = ["DynamicSnapResult", "snap_in_time", "snap_test_cell", "SETTLING_BAND"]
+__all__ = ["DynamicSnapResult", "snap_in_time", "snap_test_cell", "SETTLING_BAND", "AT_REST"]
 
 #: The settling time is when the travel last leaves a band of this fraction of the stable
 #: state's travel about where the cell comes to rest (the usual 2 % criterion).
 SETTLING_BAND = 0.02
+
+#: The cell is at rest when its kinetic energy is below this fraction of the static energy
+#: barrier (the default run ends 1e-21 below it).
+AT_REST = 1e-9
 
 
 @dataclass(frozen=True)
@@ -109,6 +113,11 @@ class DynamicSnapResult:
         return self.static.extended_height - self.travel
 
     @property
+    def at_rest(self) -> bool:
+        """The kinetic energy at the end is below 1e-9 of the static energy barrier."""
+        return self.final_kinetic < AT_REST * self.static.energy_barrier
+
+    @property
     def overshoot(self) -> float:
         """How far the cell swings past its stable state's travel [mm]."""
         return self.peak_travel - self.static.stable_displacement
@@ -122,7 +131,8 @@ class DynamicSnapResult:
         """The scalar results as a ``dict``."""
         keys = ("load", "mass_damping", "hold", "jump_time", "peak_travel", "overshoot",
                 "loaded_travel", "rebound", "settled_travel", "settled_height", "settled_tilt",
-                "settling_time", "final_kinetic", "height_error", "completed", "message")
+                "settling_time", "final_kinetic", "at_rest", "height_error", "completed",
+                "message")
         out = {key: getattr(self, key) for key in keys}
         out.update(snap_force=self.static.snap_force,
                    stable_height=self.static.stable_height,

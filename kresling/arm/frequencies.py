@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from kresling._validation import as_integer
 from kresling.analyses.modes import Modes, vibration_modes
 from kresling.arm.analyses import DEFAULT_PRETENSION, ArmSolver
-from kresling.arm.gravity import held_tendons_model
+from kresling.arm.gravity import held_tendons_model, pretensioned
 from kresling.arm.masses import arm_masses
 
 __all__ = ["ArmFrequencies", "arm_frequencies"]
@@ -64,7 +64,7 @@ def arm_frequencies(configuration="111", *, k: int = 6,
 
     k = as_integer("k", k, minimum=1, maximum=30)
     arm = build_arm(configuration, **arm_options)
-    state = ArmSolver(arm).pretension(pretension)
+    state = pretensioned(ArmSolver(arm), pretension)
     masses = arm_masses(arm, measured_skeleton=measured_skeleton)
     modes = vibration_modes(held_tendons_model(arm, state.pulls), masses.node, k,
                             u=state.displacement)

@@ -19,17 +19,18 @@ Orientations (the arm's model has its base at z = 0 and its tip up, tendon 1 on 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from kresling._validation import as_choice, as_positive_real, show
+from kresling._validation import as_choice, as_integer, as_positive_real, as_real, show
 from kresling.arm.analyses import DEFAULT_PRETENSION, ArmSolver, ArmState
 from kresling.arm.masses import ArmMasses, arm_masses
 from kresling.arm.structure import Arm
 
 __all__ = ["GRAVITY", "ORIENTATIONS", "GravitySag", "gravity_sag", "held_tendons_model",
-           "gravity_table", "PROTOCOL_STEPS"]
+           "gravity_table", "PROTOCOL_STEPS", "pretensioned"]
 
 #: The protocol steps the table weighs the arm at: at rest and fully bent (section 4.3).
 PROTOCOL_STEPS = (0, 10)
@@ -93,6 +94,24 @@ class GravitySag:
         return length(self.loaded_markers) - length(self.markers)
 
 
+def pretensioned(solver: ArmSolver, pretension) -> ArmState:
+    """The arm of ``solver`` with every tendon at ``pretension`` N (finite, >= 0).
+
+    Raises
+    ------
+    ValueError
+        Naming ``pretension`` when it is out of range or the arm cannot reach it.
+    """
+    value = as_real("pretension", pretension)
+    if not (math.isfinite(value) and value >= 0):
+        raise ValueError(f"pretension = {value!r} is invalid: must be a finite tension >= 0 "
+                         "(N per tendon)")
+    try:
+        return solver.pretension(value)
+    except RuntimeError as error:
+        raise ValueError(f"pretension = {value!r} N is invalid for this arm: {error}") from None
+
+
 def held_tendons_model(arm: Arm, pulls):
     """``arm.model`` with every tendon's rest length fixed at its slack length minus
     ``pulls`` (3,) [mm]: the tendons as the motors hold them."""
@@ -140,13 +159,16 @@ def gravity_sag(arm: Arm, orientation="hanging", *, start: ArmState | None = Non
     orientation = as_choice("orientation", orientation, tuple(ORIENTATIONS))
     g = as_positive_real("g", g)
     solver = ArmSolver(arm) if solver is None else solver
-    start = solver.pretension(pretension) if start is None else start
+    start = pretensioned(solver, pretension) if start is None else start
+    if not isinstance(start, ArmState):
+        raise ValueError(f"start = {show(start)} is invalid: must be an ArmState of this arm")
     masses = arm_masses(arm) if masses is None else masses
     if not isinstance(masses, ArmMasses):
         raise ValueError(f"masses = {show(masses)} is invalid: must be an ArmMasses")
     gravity = g * np.asarray(ORIENTATIONS[orientation])
     model = held_tendons_model(arm, start.pulls)
     weight = (masses.node[:, None] * gravity[None, :]).ravel()
+    steps = as_integer("steps", steps, minimum=1, maximum=1000)
     path = solve_force_control(model, weight, steps, initial=start.displacement, tolerance=1e-6)
     u = path.displacement[-1] if path.num_steps else start.displacement
     positions = lambda d: arm.model.nodes + np.asarray(d).reshape(-1, 3)   # noqa: E731
@@ -198,7 +220,7 @@ def gravity_table(modules: int = 3, orientation="hanging", *, steps=PROTOCOL_STE
             run = pseudo_linkage_run(arm, list(steps), pretension=pretension, solver=solver)
             starts = list(zip(steps, run.states))
         else:
-            starts = [(0, solver.pretension(pretension))]
+            starts = [(0, pretensioned(solver, pretension))]
         for k, start in starts:
             s = gravity_sag(arm, orientation, start=start, masses=masses, solver=solver)
             rows.append({"config": config, "k": int(k), "mass_g": masses.total * 1e6,

@@ -169,7 +169,7 @@ def _run_dynamic(args) -> int:
     if args.plot:
         check_output_file("--plot", args.plot)
     parameters = specimen_parameters_from_args(args)
-    names = {"time_step": "--time-step", "steps": "--steps", "margin": "--margin",
+    names = {"time_step": "--time-step", "margin": "--margin",
              "damping": "--damping", "duration": "--duration", "hold": "--hold",
              "eccentricity": "--eccentricity"}
     with cli_names(names):
@@ -195,6 +195,11 @@ def _run_dynamic(args) -> int:
         plot_snap_in_time(result).figure.savefig(args.plot, dpi=150)
         print(f"wrote {args.plot} (height against time)",
               file=sys.stderr if args.json else sys.stdout)
+    if result.completed and not result.at_rest:
+        print(f"kresling snap: warning: the cell has not come to rest (kinetic energy "
+              f"{result.final_kinetic:.3g} N*mm at the end, {result.height_error:+.3g} mm from "
+              "the static stable height): raise --duration or --damping, or lower "
+              "--time-step", file=sys.stderr)
     if not result.completed:
         print(f"kresling snap: warning: the integration stopped at t = {result.time[-1]:.4g} s: "
               f"{result.message}", file=sys.stderr)
