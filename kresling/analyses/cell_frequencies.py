@@ -21,8 +21,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling._validation import as_integer
-from kresling.analyses.laminate import specimen_masses
 from kresling.analyses.modes import Modes, vibration_modes
+from kresling.analyses.snap_dynamics import snap_test_cell
 from kresling.geometry import Design, as_design
 
 __all__ = ["CellFrequencies", "cell_frequencies"]
@@ -78,15 +78,6 @@ class CellFrequencies:
         return out
 
 
-def _held_cell(design, state, parameters):
-    from kresling.model import kresling_specimen
-
-    n = design.n
-    fixed = np.zeros((2 * (n + 1), 3), dtype=bool)
-    fixed[:n + 1] = True
-    return kresling_specimen(design, [state], parameters=parameters, fixed=fixed)
-
-
 def cell_frequencies(design: Design, *, k: int = 6, parameters=None) -> CellFrequencies:
     """The ``k`` lowest natural frequencies of one cell extended, contracted and snapped.
 
@@ -113,9 +104,8 @@ def cell_frequencies(design: Design, *, k: int = 6, parameters=None) -> CellFreq
 
     design = as_design(design)
     k = as_integer("k", k, minimum=1, maximum=30)
-    extended = _held_cell(design, "extended", parameters)
-    contracted = _held_cell(design, "contracted", parameters)
-    masses = specimen_masses(extended)
+    extended, masses = snap_test_cell(design, parameters, "extended")
+    contracted, contracted_masses = snap_test_cell(design, parameters, "contracted")
     tester = SnapThroughTester(design.n, parameters=parameters)
     core = tester._core.run(design._core)
     snapped = None
@@ -123,5 +113,5 @@ def cell_frequencies(design: Design, *, k: int = 6, parameters=None) -> CellFreq
         state = np.asarray(core.stable_state)
         snapped = vibration_modes(extended.model, masses, k, u=state)
     return CellFrequencies(design, vibration_modes(extended.model, masses, k),
-                           vibration_modes(contracted.model, specimen_masses(contracted), k),
+                           vibration_modes(contracted.model, contracted_masses, k),
                            snapped, float(masses.sum()))

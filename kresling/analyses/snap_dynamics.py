@@ -141,15 +141,16 @@ class DynamicSnapResult:
         return out
 
 
-def snap_test_cell(design: Design, parameters=None):
-    """The static test's cell: one cell built stress-free extended, its bottom polygon's
-    ``n + 1`` nodes held; returns ``(specimen, masses (N,) [t])``."""
+def snap_test_cell(design: Design, parameters=None, state="extended"):
+    """The static test's cell: one cell built stress-free in ``state`` (extended, as the
+    test's), its bottom polygon's ``n + 1`` nodes held; returns ``(specimen, masses (N,)
+    [t])`` with the laminate's masses."""
     from kresling.model import kresling_specimen
 
     n = design.n
     fixed = np.zeros((2 * (n + 1), 3), dtype=bool)
     fixed[:n + 1] = True
-    cell = kresling_specimen(design, ["extended"], parameters=parameters, fixed=fixed)
+    cell = kresling_specimen(design, [state], parameters=parameters, fixed=fixed)
     return cell, specimen_masses(cell)
 
 
