@@ -26,7 +26,6 @@ import numpy as np
 
 from kresling._validation import as_choice, as_integer, as_positive_real, as_real, show
 from kresling.arm.analyses import DEFAULT_PRETENSION, ArmSolver, ArmState
-from kresling.arm.masses import ArmMasses, arm_masses
 from kresling.arm.structure import Arm
 
 __all__ = ["GRAVITY", "ORIENTATIONS", "GravitySag", "gravity_sag", "held_tendons_model",
@@ -51,7 +50,7 @@ class GravitySag:
     configuration, orientation : str
     gravity : ndarray, shape (3,)
         [mm/s^2] in the arm's frame.
-    masses : ArmMasses
+    masses : kresling.arm.masses.ArmMasses
     start : ArmState
         The equilibrium without gravity.
     displacement : ndarray, shape (3N,)
@@ -68,7 +67,7 @@ class GravitySag:
     configuration: str
     orientation: str
     gravity: np.ndarray
-    masses: ArmMasses
+    masses: object
     start: ArmState
     displacement: np.ndarray
     markers: np.ndarray
@@ -121,7 +120,7 @@ def held_tendons_model(arm: Arm, pulls):
 
 
 def gravity_sag(arm: Arm, orientation="hanging", *, start: ArmState | None = None,
-                pretension: float = DEFAULT_PRETENSION, masses: ArmMasses | None = None,
+                pretension: float = DEFAULT_PRETENSION, masses=None,
                 g: float = GRAVITY, steps: int = 5,
                 solver: ArmSolver | None = None) -> GravitySag:
     """The arm's markers moved by its own weight from an equilibrium without it.
@@ -152,6 +151,9 @@ def gravity_sag(arm: Arm, orientation="hanging", *, start: ArmState | None = Non
     >>> s.completed, round(float(s.sag[-1]), 2)   # the tip, mm
     (True, 0.06)
     """
+    # The masses import the analyses (the laminate): lazily, so that building the command
+    # line's parser, which reads ORIENTATIONS, stays light.
+    from kresling.arm.masses import ArmMasses, arm_masses
     from kresling.solvers import solve_force_control
 
     if not isinstance(arm, Arm):
@@ -209,6 +211,7 @@ def gravity_table(modules: int = 3, orientation="hanging", *, steps=PROTOCOL_STE
         (m,), ``tension_N`` (3,), ``completed``, ``message``.
     """
     from kresling.arm.actuation import pseudo_linkage_run
+    from kresling.arm.masses import arm_masses
     from kresling.arm.structure import all_configurations, build_arm
 
     rows = []

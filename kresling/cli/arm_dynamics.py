@@ -17,8 +17,8 @@ def add_arguments(analysis, parser) -> None:
                                "thesis's arm hangs from its base and bends in a vertical "
                                "plane; standing; horizontal, tendon 1 on top)")
     analysis.add_argument("--modes", type=int, nargs="?", const=6, metavar="K",
-                          help="the K lowest natural frequencies (default 6) of every "
-                               "configuration, pretensioned")
+                          help="the K lowest natural frequencies (a count, default 6) of "
+                               "every configuration, pretensioned")
     parser.add_argument("--measured-mass", action="store_true",
                         help="with --gravity or --modes: scale the cells and guides to the "
                              "thesis's weighed 56.3 g skeleton (per three modules) instead of "

@@ -67,8 +67,8 @@ def register(subparsers) -> None:
     dynamic.add_argument("--time-step", type=float, default=2e-4,
                          help="with --dynamic: [s] (default 2e-4)")
     dynamic.add_argument("--modes", type=int, nargs="?", const=6, metavar="K",
-                         help="the K lowest natural frequencies (default 6) of the cell "
-                              "extended, contracted and in the state it snaps to")
+                         help="the K lowest natural frequencies (a count, default 6) of the "
+                              "cell extended, contracted and in the state it snaps to")
     parser.add_argument("--view", metavar="FILE.html",
                         help="write an interactive page of the snap-through path beside the "
                              "force-travel curve (FILE.html#frame=K opens at increment K)")
@@ -200,6 +200,10 @@ def _run_dynamic(args) -> int:
               f"{result.final_kinetic:.3g} N*mm at the end, {result.height_error:+.3g} mm from "
               "the static stable height): raise --duration or --damping, or lower "
               "--time-step", file=sys.stderr)
+    elif result.completed and abs(result.height_error) > 1e-3:
+        print(f"kresling snap: warning: the cell came to rest at {result.settled_height:.4g} mm, "
+              f"not in the static stable state ({result.static.stable_height:.4g} mm): hold "
+              "the load longer (--hold) or raise --margin", file=sys.stderr)
     if not result.completed:
         print(f"kresling snap: warning: the integration stopped at t = {result.time[-1]:.4g} s: "
               f"{result.message}", file=sys.stderr)
