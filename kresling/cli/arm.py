@@ -12,6 +12,7 @@ import sys
 
 from kresling.arm.structure import THESIS_DESIGN
 from kresling.cli import _arm_creases
+from kresling.cli import arm_dynamics
 from kresling.cli._output import check_output_file, print_json, print_table
 from kresling.cli.design import add_design_arguments
 
@@ -63,6 +64,7 @@ def register(subparsers) -> None:
                           help="pull all tendons, or one, from every configuration until a "
                                "module snaps: which configurations the pulls reach")
     _arm_creases.add_arguments(parser, analysis)
+    arm_dynamics.add_arguments(analysis, parser)
     parser.add_argument("--plot", metavar="FILE.png",
                         help="with --table: write the load-capacity figure; with --protocol: "
                              "the markers of both models")
@@ -115,7 +117,9 @@ def run(args) -> int:
                                     ("--capacity", args.capacity),
                                     ("--table", args.table), ("--protocol", args.protocol),
                                     ("--table5", args.table5), ("--switching", args.switching),
-                                    ("--crease-switch", args.crease_switch is not None))
+                                    ("--crease-switch", args.crease_switch is not None),
+                                    ("--gravity", args.gravity is not None),
+                                    ("--modes", args.modes is not None))
               if on]
     if len(chosen) > 1:
         raise ValueError(f"{' and '.join(chosen)}: give one analysis at a time")
@@ -124,6 +128,13 @@ def run(args) -> int:
                          "--table or --protocol")
     if args.plot:
         check_output_file("--plot", args.plot)   # before the analysis, not after
+    if args.measured_mass and args.gravity is None and args.modes is None:
+        raise ValueError("measured-mass: --measured-mass weighs the arm for --gravity or "
+                         "--modes; add one of them")
+    if args.gravity is not None:
+        return arm_dynamics.run_gravity(args, _arm_options(args), _pretension(args))
+    if args.modes is not None:
+        return arm_dynamics.run_modes(args, _arm_options(args), _pretension(args))
     if args.table:
         return _run_table(args)
     if args.table5:

@@ -68,6 +68,10 @@ OPTION_VALUES = {  # plausible values of options whose type says little (or cost
     "target": ["0", "10", "200", "-50"], "out": ["out", "out.html", "dir"],
     "output": ["out.svg", "out.dxf", "out.fold", "out.png"], "plot": ["plot.png"],
     "view": ["view.html"], "steps": ["2", "5", "20"], "workers": ["1", "2"],
+    # kresling snap --dynamic: short runs (a full one takes 2 s of simulated time)
+    "duration": ["0.35", "0.5"], "time_step": ["1e-3", "5e-4"], "hold": ["0.1", "0.3"],
+    "margin": ["0.05", "0.5"], "damping": ["0.05", "0.3"], "eccentricity": ["0", "0.1"],
+    "modes": ["1", "3"],
 }
 #: Options left out: a cluster address waits for its connection to time out.
 SKIPPED_OPTIONS = {"scheduler"}
