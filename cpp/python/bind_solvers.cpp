@@ -10,6 +10,7 @@
 #include "kresling/solvers/displacement_control.hpp"
 #include "kresling/solvers/fold.hpp"
 #include "kresling/solvers/force_control.hpp"
+#include "kresling/solvers/mgdcm.hpp"
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/linear_stiffness.hpp"
 #include "kresling/solvers/tangent_solver.hpp"
