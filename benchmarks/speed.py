@@ -1,6 +1,7 @@
 """Speed against MERLIN2, side by side, and how the solver scales to 100,000-DOF sheets.
 
-Prints three tables in one run:
+Prints the machine's description (CPU, cores, memory, load, versions), then these tables in
+one run (``--only`` picks some):
 
 1. the bending test (350 increments to 5 mm) on the thesis's Table 3 designs, the optimum
    (n = 10, lam = 0.9, Lc = 15 mm, both states) first: our time beside MERLIN2's under GNU
@@ -17,6 +18,18 @@ Prints three tables in one run:
    factorisation chosen and its fill, peak memory, and the exponent of the time per
    iteration fitted from 1,000 DOFs up. Each size runs in a fresh process (its memory is
    its own).
+4. ``outputs``: the time to write every output of each example's ``kresling simulate`` run
+   beside its solve, and the files' sizes (benchmarks/simulate_speed.py);
+5. ``startup``: ``kresling bend`` on the optimum as a whole process minus ``kresling
+   design``'s, against MERLIN2's stored time, and where the imports go
+   (benchmarks/cli_startup.py);
+6. ``physics``: a fold increment against a displacement increment, an implicit dynamics
+   step against a static iteration (benchmarks/new_physics_speed.py);
+7. ``patterns``: one Newton iteration by pattern kind (Miura, box pleat, Kresling tower,
+   triangulated sheet) up to ~100,000 DOFs, positive definite and indefinite
+   (benchmarks/pattern_scaling.py);
+8. ``mgdcm``: MGDCM on a one-layer Kresling whose path crosses a double bifurcation at a
+   tolerance of 1e-10 mm (the accuracy-floor case of docs/model.md, 'MGDCM').
 
 Times are best of ``--repeat`` runs (the sheets: one run); a shared machine makes absolute
 times noisy: the load average is printed first. Run:
@@ -28,6 +41,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import platform
 import subprocess
 import sys
 import time
@@ -36,11 +50,15 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import cli_startup  # noqa: E402
+import new_physics_speed  # noqa: E402
+import pattern_scaling  # noqa: E402
 import simulate_speed  # noqa: E402  (the examples' runners and MERLIN2 live under Octave)
 
 from kresling import Design, data  # noqa: E402
 from kresling.analyses import BendingTester  # noqa: E402
 
+TABLES = ("bending", "examples", "sheets", "outputs", "startup", "physics", "patterns", "mgdcm")
 OPTIMUM = (10, 15.0, 0.9)     # n, Lc [mm], lam: the thesis's optimum, K_ext / K_con largest
 
 
@@ -201,6 +219,49 @@ def sheet_table(sizes, steps):
               "(goal: under 1 s at 100,000)")
 
 
+def machine() -> str:
+    """The CPU model, cores, memory, OS, Python and numpy, and the load averages."""
+    cpu = platform.processor() or platform.machine()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+        memory = next(line.split()[1] for line in Path("/proc/meminfo").read_text().splitlines()
+                      if line.startswith("MemTotal"))
+        memory = f"{int(memory) / 2**20:.0f} GiB"
+    except (OSError, StopIteration):
+        memory = "unknown"
+    load = os.getloadavg()
+    return (f"machine: {cpu}, {os.cpu_count()} cores, {memory} memory; {platform.platform()}; "
+            f"Python {platform.python_version()}, numpy {np.__version__}; load average "
+            f"{load[0]:.2f} {load[1]:.2f} {load[2]:.2f} (other work on the machine slows every "
+            "row)")
+
+
+def mgdcm_table():
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+    from test_solver_mgdcm_floor import SIDES, one_layer_kresling
+
+    from kresling.solvers import solve_mgdcm
+
+    model, forces = one_layer_kresling()
+    top = model.dof(SIDES, 2)
+    print("\n8. MGDCM, one-layer six-sided Kresling to u_z = -49 mm, tolerance 1e-10 mm "
+          "(a double bifurcation near -22.5 mm, another near -28.3 mm)")
+    print(f"{'initial factor':>14} {'increments':>10} {'iterations':>10} {'seconds':>8} "
+          f"{'u_z end':>8}  outcome")
+    for factor in (0.001, 0.003, 0.01):
+        start = time.perf_counter()
+        path = solve_mgdcm(model, forces, initial_load_factor=factor, tolerance=1e-10,
+                           max_increments=100_000, monitor_dof=top, max_displacement=49.0)
+        seconds = time.perf_counter() - start
+        end = path.displacement[-1].ravel()[top] if path.num_steps else 0.0
+        print(f"{factor:>14g} {path.num_steps:>10} {path.newton_iterations:>10} "
+              f"{seconds:>8.3f} {end:>8.2f}  "
+              + ("completed" if path.completed else path.message))
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true",
@@ -211,22 +272,35 @@ def main(argv=None) -> int:
     parser.add_argument("--max-dofs", type=int, default=None,
                         help="largest sheet (DOFs, ~6 per panel); default 100,000")
     parser.add_argument("--steps", type=int, default=2, help="force increments per sheet")
-    parser.add_argument("--only", choices=("bending", "examples", "sheets"), action="append",
+    parser.add_argument("--only", choices=TABLES, action="append",
                         help="run only these tables (repeatable)")
     args = parser.parse_args(argv)
     repeat = args.repeat or (1 if args.quick else 3)
     max_dofs = args.max_dofs or (12_500 if args.quick else 101_000)
     sizes = [nx for nx in (13, 20, 30, 45, 65, 90, 129) if 6 * nx * nx <= max_dofs]
-    load = os.getloadavg()
-    print(f"kresling speed benchmark; {os.cpu_count()} cores, load average {load[0]:.2f} "
-          f"{load[1]:.2f} {load[2]:.2f} (other work on the machine slows every row)")
-    tables = set(args.only or ("bending", "examples", "sheets"))
+    print("kresling speed benchmark; " + machine())
+    tables = set(args.only or TABLES)
     if "bending" in tables:
         bending_table(repeat)
     if "examples" in tables:
         examples_table(repeat, args.octave)
     if "sheets" in tables:
         sheet_table(sizes, args.steps)
+    if "outputs" in tables:
+        print("\n4. Outputs of kresling simulate beside its solve")
+        simulate_speed.print_outputs(repeat)
+    if "startup" in tables:
+        print("\n5. Start-up: kresling bend through the command line")
+        cli_startup.main(["--repeat", str(max(repeat, 3))])
+    if "physics" in tables:
+        print("\n6. The new physics: fold, displacement and dynamics increments")
+        new_physics_speed.main(repeat)
+    if "patterns" in tables:
+        print("\n7. One Newton iteration by pattern kind")
+        pattern_scaling.table(list(pattern_scaling.SIZES), max_dofs)
+    if "mgdcm" in tables:
+        mgdcm_table()
+    print("\n" + machine())
     return 0
 
 

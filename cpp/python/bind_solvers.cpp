@@ -13,6 +13,7 @@
 #include "kresling/solvers/explicit_dynamics.hpp"
 #include "kresling/solvers/fold.hpp"
 #include "kresling/solvers/force_control.hpp"
+#include "kresling/solvers/mgdcm.hpp"
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/linear_stiffness.hpp"
 #include "kresling/solvers/stable_time_step.hpp"

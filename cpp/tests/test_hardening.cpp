@@ -22,6 +22,7 @@
 #include "kresling/model/panel_elements.hpp"
 #include "kresling/solvers/displacement_control.hpp"
 #include "kresling/solvers/force_control.hpp"
+#include "kresling/solvers/mgdcm.hpp"
 #include "kresling/solvers/increments.hpp"
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/newton.hpp"

@@ -21,6 +21,7 @@
 #include "kresling/elements/dihedral.hpp"
 #include "kresling/solvers/displacement_control.hpp"
 #include "kresling/solvers/force_control.hpp"
+#include "kresling/solvers/mgdcm.hpp"
 #include "kresling/solvers/newton.hpp"
 
 using namespace kresling;

@@ -151,3 +151,47 @@ TEST(SupernodalCholesky, EmptyMatrix) {
   EXPECT_TRUE(ours.factorize(K));
   EXPECT_EQ(ours.solve(Eigen::VectorXd()).size(), 0);
 }
+
+// The LDL^T without pivoting on an indefinite sheet (the positive semi-definite elements
+// shifted down, so that some eigenvalues are negative): D has as many negative entries as
+// the matrix has negative eigenvalues (Eigen's dense eigensolver, an independent method), and
+// the solution solves the system to 1e-10 relative (the shifted spectrum passes near zero:
+// the condition number is far above the positive definite sheets'), on one and three
+// threads, with both orderings. On a positive definite matrix D is positive and the solution
+// is the Cholesky's to rounding.
+TEST(SupernodalCholesky, LdltGivesTheInertiaAndSolvesIndefiniteSystems) {
+  for (int m : {5, 12}) {
+    // The shift: midway between the 5 %-th and the next eigenvalue of the unshifted sheet,
+    // so that 5 % of the eigenvalues are negative and none is near zero.
+    const Eigen::VectorXd spectrum = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
+        Eigen::MatrixXd(sheet(m, 0.0, 5u + m)), Eigen::EigenvaluesOnly).eigenvalues();
+    const Eigen::Index k = spectrum.size() / 20;
+    const SparseMatrix K = sheet(m, -0.5 * (spectrum[k - 1] + spectrum[k]), 5u + m);
+    const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
+        Eigen::MatrixXd(K), Eigen::EigenvaluesOnly).eigenvalues();
+    const long negative = (eigenvalues.array() < 0.0).count();
+    ASSERT_EQ(negative, k);
+    ASSERT_GT(eigenvalues.cwiseAbs().minCoeff(), 1e-9);  // not singular: the inertia is sharp
+    const Eigen::VectorXd b = right_hand_side(K.rows());
+    for (int ordering : {CHOLMOD_AMD, CHOLMOD_NESDIS}) {
+      for (int threads : {1, 3}) {
+        SupernodalCholesky ours;
+        ours.analyze(K, ordering, threads);
+        EXPECT_FALSE(ours.factorize(K));
+        ASSERT_TRUE(ours.factorize_ldlt(K)) << "m " << m;
+        const Eigen::VectorXd d = ours.ldlt_diagonal();
+        EXPECT_EQ((d.array() < 0.0).count(), negative) << "m " << m << " threads " << threads;
+        const Eigen::VectorXd x = ours.solve(b);
+        EXPECT_LE((K * x - b).norm(), 1e-10 * b.norm()) << "m " << m;
+      }
+    }
+  }
+  const SparseMatrix K = sheet(30, 0.5, 9u);
+  const Eigen::VectorXd b = right_hand_side(K.rows());
+  SupernodalCholesky ours;
+  ours.analyze(K, CHOLMOD_NESDIS, 2);
+  ASSERT_TRUE(ours.factorize_ldlt(K));
+  EXPECT_EQ((ours.ldlt_diagonal().array() <= 0.0).count(), 0);
+  const Eigen::VectorXd expected = cholmod_solution(K, b);
+  EXPECT_LE((ours.solve(b) - expected).norm(), 1e-12 * expected.norm());
+}

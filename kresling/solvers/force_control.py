@@ -59,7 +59,10 @@ def solve_mgdcm(model, forces, *, initial_load_factor=0.01, max_increments=100,
     scaled by the generalized stiffness parameter (its sign flips where the path turns),
     later iterations stay orthogonal to the first predictor. The step grows by 1.5 after an
     increment of fewer than 3 iterations and is halved (the increment retried) after one
-    of more than 15.
+    of more than 15. An increment whose corrections stall just above ``tolerance`` (rounding
+    near a singular tangent, at a bifurcation or limit point) is retried with a step 4, then
+    16 times longer, to land past the singular point; if that stalls too the path ends and
+    ``message`` gives the size the corrections stalled at.
 
     Parameters
     ----------

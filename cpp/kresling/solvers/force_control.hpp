@@ -1,10 +1,7 @@
 #pragma once
 /// \file force_control.hpp
-/// Path following under force control: plain Newton with load steps, and the modified
-/// generalized displacement control method (MGDCM, Leon, Paulino et al. 2011), which passes
-/// limit points and snap-backs.
-
-#include <limits>
+/// Path following under force control: Newton with load steps (MGDCM, which passes limit
+/// points and snap-backs, is in mgdcm.hpp).
 
 #include "kresling/model/model.hpp"
 #include "kresling/solvers/path.hpp"
@@ -24,29 +21,9 @@ PathResult solve_force_control(const model::Model& model, const VectorX& forces,
                                const ForceControlOptions& options = {},
                                const VectorX& initial = VectorX());
 
-struct MgdcmOptions {
-  NewtonOptions newton;
-  double initial_load_factor = 0.01;  ///< first increment of lambda (MERLIN2's b_lambda)
-  int max_increments = 100;           ///< accepted increments
-  /// Stop (completed) once |lambda| exceeds this.
-  double max_load_factor = std::numeric_limits<double>::infinity();
-  /// Stop (completed) once |u[monitor_dof]| exceeds max_displacement (monitor_dof >= 0).
-  Index monitor_dof = -1;
-  double max_displacement = std::numeric_limits<double>::infinity();
-  int shrink_above_iterations = 15;  ///< more iterations: reject, halve the step factor
-  int grow_below_iterations = 3;     ///< fewer iterations: step factor times 1.5
-  double min_load_factor = 1e-14;    ///< give up when the step factor falls below this
-  /// Cap on the step factor's growth (|b_lambda| <= this), for a finely resolved path.
-  double max_step_factor = std::numeric_limits<double>::infinity();
-  double shift = 1e-8;
-  StopRule stop;  ///< a further stopping criterion (completed when it returns true)
-};
-
-/// MGDCM path following under the reference load `forces`: two solves per iteration with
-/// one factorisation; the first iteration's load increment is scaled by the generalized
-/// stiffness parameter and flips sign when the predictor reverses (a limit point), later
-/// iterations stay orthogonal to the first predictor.
-PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
-                       const MgdcmOptions& options = {}, const VectorX& initial = VectorX());
+/// Check a load-driven path's inputs: `forces` one finite entry per DOF with one acting on a
+/// free DOF, `initial` empty or one finite entry per DOF, the supports stopping every
+/// rigid-body motion. Throws std::invalid_argument naming the input.
+void check_load_inputs(const model::Model& model, const VectorX& forces, const VectorX& initial);
 
 }  // namespace kresling::solvers

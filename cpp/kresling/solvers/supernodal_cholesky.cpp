@@ -17,6 +17,39 @@ namespace {
 using Block = Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
 using ConstBlock = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
 
+// Pivots accepted by the LDL^T: finite and non-zero (the caller judges their size).
+bool usable_pivot(double d) { return std::isfinite(d) && d != 0.0; }
+
+// A = L D L^T in place, without pivoting, for the lower triangle of the square block A: L's
+// strict lower triangle and D on the diagonal. Right-looking in panels of kPanel columns:
+// a panel is factorised column by column (each column updating the rest of the panel), then
+// the trailing block takes the panel's update as one product L21 (D1 L21^T), the kernel
+// that carries most of the flops. False if a pivot is unusable.
+bool ldlt_inplace(Block A) {
+  constexpr Index kPanel = 32;
+  const Index n = A.rows();
+  for (Index k = 0; k < n; k += kPanel) {
+    const Index width = std::min(kPanel, n - k);
+    for (Index j = k; j < k + width; ++j) {
+      const double d = A(j, j);
+      if (!usable_pivot(d)) return false;
+      // A(i, c) -= L(i, j) d L(c, j) = A(i, j) A(c, j) / d, both still unscaled.
+      for (Index c = j + 1; c < k + width; ++c) {
+        A.col(c).tail(n - c) -= (A(c, j) / d) * A.col(j).tail(n - c);
+      }
+      A.col(j).tail(n - j - 1) /= d;
+    }
+    const Index rest = n - k - width;
+    if (rest > 0) {
+      const auto L21 = A.block(k + width, k, rest, width);
+      const Eigen::MatrixXd W = L21 * A.diagonal().segment(k, width).asDiagonal();
+      A.block(k + width, k + width, rest, rest).triangularView<Eigen::Lower>() -=
+          L21 * W.transpose();
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 struct SupernodalCholesky::Impl {
@@ -33,6 +66,7 @@ struct SupernodalCholesky::Impl {
   std::vector<Index> destination;   // K's stored entry -> its slot in values (-1: upper)
   Index stored_entries = 0;
   std::vector<double> values;
+  bool ldlt = false;                // the values hold L D L^T (unit L, D on its diagonal)
   std::size_t largest_update = 0;   // entries of the largest update block
   Index widest_below = 0;           // rows below a supernode's own columns, at most
   // Parallel schedule: the supernodes each thread factorises (whole subtrees, ascending),
@@ -48,12 +82,15 @@ struct SupernodalCholesky::Impl {
     std::vector<int> map;
     std::vector<int> relative;
     std::vector<double> update;
+    std::vector<double> scaled;  // LDL^T: a descendant's rows times its D
   };
   std::vector<int> next, position;  // per supernode: next in its list; its next row to use
   std::vector<Scratch> per_thread;  // scratch of each thread, sized by analyze
 
   void schedule(int threads);
   bool factor_supernode(int s, Scratch& scratch);
+  bool factor_diagonal(Block S, int ncol, int nrow);
+  bool factorize(const SparseMatrix& K, bool with_d);
   void link(int d, int p_next, std::vector<int>& head);
 };
 
@@ -170,6 +207,7 @@ void SupernodalCholesky::use_threads(int threads) {
     sc.map.assign(static_cast<std::size_t>(m.n), 0);
     sc.relative.assign(static_cast<std::size_t>(m.n), 0);
     sc.update.resize(m.largest_update);
+    sc.scaled.clear();  // sized by the first LDL^T
   }
 }
 
@@ -291,11 +329,19 @@ bool SupernodalCholesky::Impl::factor_supernode(int s, Scratch& scratch) {
     ConstBlock Ld(values.data() + px[d], drow, dcol, Eigen::OuterStride<>(drow));
     Block C(scratch.update.data(), n2, n1, Eigen::OuterStride<>(n2));
     const auto upper = Ld.block(p1, 0, n1, dcol);
-    // The top block is symmetric: its lower triangle alone (a rank update), the rest a
-    // product.
-    C.topRows(n1).triangularView<Eigen::Lower>().setZero();
-    C.topRows(n1).selfadjointView<Eigen::Lower>().rankUpdate(upper);
-    if (n2 > n1) C.bottomRows(n2 - n1).noalias() = Ld.block(p2, 0, n2 - n1, dcol) * upper.transpose();
+    if (ldlt) {
+      // The same update with D between: L (D U^T), the top block's lower triangle alone.
+      Block W(scratch.scaled.data(), n1, dcol, Eigen::OuterStride<>(n1));
+      W.noalias() = upper * Ld.diagonal().asDiagonal();
+      C.topRows(n1).triangularView<Eigen::Lower>() = upper * W.transpose();
+      if (n2 > n1) C.bottomRows(n2 - n1).noalias() = Ld.block(p2, 0, n2 - n1, dcol) * W.transpose();
+    } else {
+      // The top block is symmetric: its lower triangle alone (a rank update), the rest a
+      // product.
+      C.topRows(n1).triangularView<Eigen::Lower>().setZero();
+      C.topRows(n1).selfadjointView<Eigen::Lower>().rankUpdate(upper);
+      if (n2 > n1) C.bottomRows(n2 - n1).noalias() = Ld.block(p2, 0, n2 - n1, dcol) * upper.transpose();
+    }
     for (int i = 0; i < n2; ++i) scratch.relative[i] = scratch.map[drows[p1 + i]];
     for (int j = 0; j < n1; ++j) {
       double* column = S.data() + static_cast<Index>(drows[p1 + j] - k1) * nrow;
@@ -305,20 +351,54 @@ bool SupernodalCholesky::Impl::factor_supernode(int s, Scratch& scratch) {
     link(d, p2, scratch.head);
     d = d_next;
   }
-  auto diagonal = S.topRows(ncol);
-  if (Eigen::internal::llt_inplace<double, Eigen::Lower>::blocked(diagonal) != -1) return false;
-  if (!diagonal.diagonal().allFinite()) return false;
-  if (nrow > ncol) {
-    diagonal.triangularView<Eigen::Lower>().adjoint().solveInPlace<Eigen::OnTheRight>(
-        S.bottomRows(nrow - ncol));
-  }
+  if (!factor_diagonal(S, ncol, nrow)) return false;
   link(s, ncol, scratch.head);
   return true;
 }
 
-bool SupernodalCholesky::factorize(const SparseMatrix& K) {
-  Impl& m = *impl_;
+// The supernode's diagonal block, then the rows below it: L21 = A21 L11^-T (Cholesky) or
+// A21 L11^-T D^-1 (LDL^T).
+bool SupernodalCholesky::Impl::factor_diagonal(Block S, int ncol, int nrow) {
+  Block diagonal(S.data(), ncol, ncol, Eigen::OuterStride<>(nrow));
+  auto below = S.bottomRows(nrow - ncol);
+  if (ldlt) {
+    if (!ldlt_inplace(diagonal)) return false;
+    if (nrow > ncol) {
+      diagonal.triangularView<Eigen::UnitLower>().adjoint().solveInPlace<Eigen::OnTheRight>(below);
+      below = below * diagonal.diagonal().cwiseInverse().asDiagonal();
+    }
+    return true;
+  }
+  if (Eigen::internal::llt_inplace<double, Eigen::Lower>::blocked(diagonal) != -1) return false;
+  if (!diagonal.diagonal().allFinite()) return false;
+  if (nrow > ncol) {
+    diagonal.triangularView<Eigen::Lower>().adjoint().solveInPlace<Eigen::OnTheRight>(below);
+  }
+  return true;
+}
+
+bool SupernodalCholesky::factorize(const SparseMatrix& K) { return impl_->factorize(K, false); }
+
+bool SupernodalCholesky::factorize_ldlt(const SparseMatrix& K) {
+  return impl_->factorize(K, true);
+}
+
+VectorX SupernodalCholesky::ldlt_diagonal() const {
+  const Impl& m = *impl_;
+  VectorX d(m.n);
+  for (int s = 0; s < m.nsuper; ++s) {
+    const int nrow = m.pi[s + 1] - m.pi[s];
+    for (int k = m.super[s]; k < m.super[s + 1]; ++k) {
+      d[k] = m.values[m.px[s] + static_cast<std::size_t>(k - m.super[s]) * (nrow + 1)];
+    }
+  }
+  return d;
+}
+
+bool SupernodalCholesky::Impl::factorize(const SparseMatrix& K, bool with_d) {
+  Impl& m = *this;
   m.ok = false;
+  m.ldlt = with_d;
   if (K.rows() != m.n || K.nonZeros() != m.stored_entries) {
     throw std::invalid_argument("SupernodalCholesky::factorize: the matrix's pattern is not "
                                 "the analysed one");
@@ -331,7 +411,10 @@ bool SupernodalCholesky::factorize(const SparseMatrix& K) {
   }
   const int threads = static_cast<int>(m.subtrees.size());
   std::vector<Impl::Scratch>& scratch = m.per_thread;
-  for (auto& sc : scratch) std::fill(sc.head.begin(), sc.head.end(), -1);
+  for (auto& sc : scratch) {
+    std::fill(sc.head.begin(), sc.head.end(), -1);
+    if (with_d && sc.scaled.size() < m.largest_update) sc.scaled.resize(m.largest_update);
+  }
   std::vector<char> good(threads, 1);
   auto run = [&](int t) {
     for (int s : m.subtrees[t]) {
@@ -395,11 +478,20 @@ VectorX SupernodalCholesky::solve(const VectorX& b) const {
     update.setZero();
     for (int j = 0; j < ncol; ++j) {
       const double* column = L + static_cast<Index>(j) * nrow;
-      const double x = v[k1 + j] /= column[j];
+      const double x = m.ldlt ? v[k1 + j] : (v[k1 + j] /= column[j]);
       for (int i = j + 1; i < ncol; ++i) v[k1 + i] -= column[i] * x;
       update.noalias() += x * Column(column + ncol, nbelow);
     }
     for (int i = 0; i < nbelow; ++i) v[r[i]] -= update[i];
+  }
+  if (m.ldlt) {  // D w = y (D on the diagonal of each supernode's block)
+    for (int s = 0; s < m.nsuper; ++s) {
+      const int nrow = m.pi[s + 1] - m.pi[s];
+      const double* L = m.values.data() + m.px[s];
+      for (int k = m.super[s]; k < m.super[s + 1]; ++k) {
+        v[k] /= L[static_cast<Index>(k - m.super[s]) * (nrow + 1)];
+      }
+    }
   }
   for (int s = m.nsuper - 1; s >= 0; --s) {  // L^T z = y
     const int k1 = m.super[s], ncol = m.super[s + 1] - k1, nrow = m.pi[s + 1] - m.pi[s];
@@ -412,7 +504,7 @@ VectorX SupernodalCholesky::solve(const VectorX& b) const {
       const double* column = L + static_cast<Index>(j) * nrow;
       double sum = v[k1 + j] - Column(column + ncol, nbelow).dot(solved);
       for (int i = j + 1; i < ncol; ++i) sum -= column[i] * v[k1 + i];
-      v[k1 + j] = sum / column[j];
+      v[k1 + j] = m.ldlt ? sum : sum / column[j];
     }
   }
   VectorX x(m.n);

@@ -12,9 +12,9 @@
 /// kTryNestedDissection DOFs up whichever of AMD and nested dissection (METIS) gives the
 /// fewer flops: nested dissection for sheets, AMD for towers. When the Cholesky fails the
 /// tangent is indefinite: a sparse LDL^T without pivoting (Eigen's simplicial factorisation
-/// with AMD ordering; from kTryNestedDissection DOFs up CHOLMOD's, with the Cholesky's
-/// ordering) gives the count of negative eigenvalues
-/// by Sylvester's law of inertia; if its pivots are unusable (an exactly singular or badly
+/// with AMD ordering; from kTryNestedDissection DOFs up the supernodal one on the Cholesky's
+/// symbolic factor, or CHOLMOD's where its simplicial Cholesky was forced) gives the count of
+/// negative eigenvalues by Sylvester's law of inertia; if its pivots are unusable (an exactly singular or badly
 /// conditioned leading block) UMFPACK's LU solves instead and the inertia is reported
 /// unknown (-1). Symbolic analyses are done once per pattern.
 
