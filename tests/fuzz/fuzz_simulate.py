@@ -64,6 +64,14 @@ BASES = [
      "contact": {"distance": 0.2, "stiffness": "auto",
                  "planes": [{"point": [0, 0, 0], "normal": [0, 0, 1]}]},
      "analysis": {"method": "displacement_control", "steps": 3}},
+    # Two panels folded shut onto each other, kept apart by panel-panel contact.
+    {"pattern": dict(SHEET, split="N4B5"),
+     "material": {"calibration": "manual", "bar_modulus": 1e3, "bar_area": 1.0,
+                  "fold_stiffness": 0.1, "bend_stiffness": 1.0},
+     "support": [{"nodes": [0, 1, 3], "fix": "xyz"}],
+     "actuation": [{"edges": [[1, 4]], "fold_angle_deg": 178.0}],
+     "contact": {"distance": 0.1, "stiffness": "auto", "self": True},
+     "analysis": {"method": "fold", "steps": 3}},
 ]
 KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices", "panels",
         "split", "file", "planarity_tolerance", "calibration", "E", "nu", "thickness",
@@ -85,6 +93,7 @@ values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_0
      [{"family": "fold", "fold_angle_deg": 180.0}], [{"node": 2, "stiffness": -1.0}],
      "modes", "rest", [{"point": [0, 0, 0], "normal": [0, 0, 0]}], [{"point": [0, 0, 5]}],
      [{"nodes": [2], "mass": -1.0}], {"distance": 0.2, "planes": []}, "cm", "unit", "in",
+     {"distance": 0.2, "self": True}, {"distance": 5.0, "self": True}, True,
      "origami_simulator"]))
 
 

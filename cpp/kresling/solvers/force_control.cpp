@@ -115,6 +115,7 @@ PathResult solve_mgdcm(const model::Model& model, const VectorX& forces,
       check_interrupt();
       ++outcome.iterations;
       assembler.assemble(trial, force, /*with_matrix=*/true);
+      follow_pattern(assembler, solver);
       const FactorizeInfo info = solver.factorize(assembler.matrix());
       if (!info.ok) {
         outcome.failure = "the tangent stiffness is singular";
