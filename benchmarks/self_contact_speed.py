@@ -41,7 +41,7 @@ def accordion(pleats: int, length: int, steps: int, contact: bool) -> dict:
             "support": [{"nodes": [middle, middle + 1, middle + columns], "fix": "xyz"}],
             "actuation": [{"edges": valleys, "fold_angle_deg": 170.0},
                           {"edges": mountains, "fold_angle_deg": -170.0}],
-            "analysis": {"method": "fold", "steps": steps}}
+            "analysis": {"method": "fold", "steps": steps, "tolerance": 1e-5}}
     if contact:
         data["contact"] = {"distance": 0.2, "self": True}
     return data
@@ -50,9 +50,9 @@ def accordion(pleats: int, length: int, steps: int, contact: bool) -> dict:
 def timed(problem: dict, repeat: int):
     best, sim = np.inf, None
     for _ in range(repeat):
-        start = time.perf_counter()
+        start = time.process_time()
         sim = simulate(problem, progress=False)
-        best = min(best, time.perf_counter() - start)
+        best = min(best, time.process_time() - start)
     return best, sim
 
 

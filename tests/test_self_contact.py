@@ -17,6 +17,7 @@ import pytest
 
 from kresling.assembly import assemble
 from kresling.io import pattern_from_arrays, write_fold
+from kresling.model import Model
 from kresling.simulate import simulate
 from triangle_intersection_helpers import intersecting_pairs
 
@@ -172,3 +173,28 @@ def test_a_square_twist_folded_toward_flat_never_passes_through_itself(tmp_path)
     assert _intersecting_increments(sim) == []
     gaps = sim.history_columns()["min_gap"]
     assert (gaps > 0).all() and gaps[-1] < 0.05  # the layers end within d_hat, apart
+
+
+def test_a_mesh_without_pairs_reports_no_gap_and_the_force_is_the_energys_gradient():
+    one = Model([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1], [1, 2], [0, 2]], [],
+                bar_modulus=1.0, hinge_stiffness=1.0,
+                families={"self_contact": {"triangles": [[0, 1, 2]], "distance": [0.1],
+                                           "stiffness": [1.0]}})
+    state = one.element_state()
+    assert state["self_contact_gap"].size == 0 and state["self_contact_segments"].size == 0
+    # Two triangles 1 mm apart, pushed to 0.3 mm (d_hat 0.5): the force through the
+    # binding is the central difference of the energy (h = 1e-6 mm: error ~1e-9 relative).
+    nodes = [[0, 0, 0], [4, 0, 0], [0, 4, 0], [1, 1, 1], [5, 1.5, 1], [0.5, 5, 1]]
+    two = Model(nodes, [], [], bar_modulus=1.0, hinge_stiffness=1.0,
+                families={"self_contact": {"triangles": [[0, 1, 2], [3, 4, 5]],
+                                           "distance": [0.5], "stiffness": [10.0]}})
+    u = np.zeros(18)
+    u[[11, 14, 17]] = [-0.7, -0.75, -0.65]
+    result = assemble(two, u)
+    energy = lambda v: assemble(two, v).energies["self_contact"]  # noqa: E731
+    fd = np.array([(energy(u + 1e-6 * e) - energy(u - 1e-6 * e)) / 2e-6 for e in np.eye(18)])
+    assert result.energies["self_contact"] > 0
+    np.testing.assert_allclose(result.force, fd, rtol=0, atol=1e-6 * np.abs(fd).max())
+    # The nearest pair: the upper edge (3, 4) over the lower edge (1, 2), ~0.28 mm, below
+    # node 3's 0.3 mm over the lower face.
+    assert 0.25 < two.element_state(u)["self_contact_gap"][0] < 0.3

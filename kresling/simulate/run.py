@@ -114,8 +114,9 @@ class Simulation:
                 energies["total"] = energies["total"] + energies[name]
         energies["total"] = energies.pop("total")
         if {"contact", "self_contact"} & set(path.families):
-            columns["min_gap"] = np.array([_min_gap(self.model.element_state(u))
-                                           for u in path.displacement])
+            gaps = [_min_gap(self.model.element_state(u)) for u in path.displacement]
+            if None not in gaps:  # (a mesh of one panel has no pair to measure)
+                columns["min_gap"] = np.array(gaps)
         for name, values in energies.items():
             columns[f"energy_{name}"] = values
         columns["iterations"] = path.iterations
@@ -269,10 +270,12 @@ def _holds_elements(columns: dict) -> bool:
     return columns[key].size > 0
 
 
-def _min_gap(state: dict) -> float:
-    """The smallest node-plane and panel-panel distance of an element state [mm]."""
-    gaps = [state[k].min() for k in ("contact_gap", "self_contact_gap") if k in state]
-    return float(min(gaps))
+def _min_gap(state: dict) -> float | None:
+    """The smallest node-plane and panel-panel distance of an element state [mm], or None
+    when there is neither."""
+    gaps = [state[k].min() for k in ("contact_gap", "self_contact_gap")
+            if k in state and state[k].size]
+    return float(min(gaps)) if gaps else None
 
 
 #: The problem file's key of each material parameter the model's messages name.

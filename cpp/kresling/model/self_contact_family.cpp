@@ -7,6 +7,7 @@
 #include <string>
 
 #include "kresling/core/check.hpp"
+#include "kresling/elements/contact_candidate_cache.hpp"
 #include "kresling/elements/contact_ccd.hpp"
 #include "kresling/elements/contact_closest_points.hpp"
 #include "kresling/elements/contact_mollifier.hpp"
@@ -33,11 +34,44 @@ std::array<Index, 4> edge_edge_nodes(const elements::EdgeMatrix& e,
   return {e(pair[0], 0), e(pair[0], 1), e(pair[1], 0), e(pair[1], 1)};
 }
 
-// The squared distance of a pair of the given kind at positions x.
+// The squared distance of a pair of the given kind at positions x, from its closest points
+// (no derivatives: the kernels' value to rounding, at a fraction of their cost).
 double squared_distance(const NodeMatrix& x, const std::array<Index, 4>& n, bool edge_edge) {
   const Vector3 a = row(x, n[0]), b = row(x, n[1]), c = row(x, n[2]), d = row(x, n[3]);
-  return edge_edge ? elements::edge_edge_distance(a, b, c, d, false).value
-                   : elements::point_triangle_distance(a, b, c, d, false).value;
+  if (edge_edge) {
+    const auto [p, q] = elements::closest_points_of_edges(a, b, c, d);
+    return (p - q).squaredNorm();
+  }
+  return (a - elements::closest_point_on_triangle(a, b, c, d)).squaredNorm();
+}
+
+// A lower bound on a pair's distance: the gap between the boxes of its two primitives
+// (the first 1 or 2 nodes, the other 3 or 2), far cheaper than the distance itself.
+double box_gap(const NodeMatrix& x, const std::array<Index, 4>& n, bool edge_edge) {
+  const int split = edge_edge ? 2 : 1;
+  Vector3 lo_a = row(x, n[0]), hi_a = lo_a, lo_b = row(x, n[split]), hi_b = lo_b;
+  for (int i = 1; i < 4; ++i) {
+    const Vector3 p = row(x, n[i]);
+    Vector3& lo = i < split ? lo_a : lo_b;
+    Vector3& hi = i < split ? hi_a : hi_b;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const Vector3 gap = (lo_b - hi_a).cwiseMax(lo_a - hi_b).cwiseMax(0.0);
+  return gap.norm();
+}
+
+// ACCD's bound on the rate at which a pair's gap closes along a step dx: the largest node
+// displacement on each side, the pair's mean displacement taken off (contact_ccd.cpp).
+double closing_rate(const NodeMatrix& dx, const std::array<Index, 4>& n, bool edge_edge) {
+  Vector3 mean = Vector3::Zero();
+  for (Index i : n) mean += row(dx, i) / 4.0;
+  double a = 0.0, b = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    double& side = i < (edge_edge ? 2 : 1) ? a : b;
+    side = std::max(side, (row(dx, n[i]) - mean).norm());
+  }
+  return a + b;
 }
 
 // Visit every candidate pair of `c` as (nodes, is edge-edge).
@@ -56,7 +90,10 @@ SelfContactFamily::SelfContactFamily(std::vector<Index> triangles, double d_hat,
           triangles.data(), static_cast<Index>(triangles.size() / 3), 3)),
       edges_(elements::triangle_edges(triangles_)),
       d_hat_(d_hat),
-      stiffness_(stiffness) {}
+      stiffness_(stiffness),
+      // A skin of d_hat: the list holds while no node moves d_hat / 2 (Newton's iterates
+      // near contact move far less), at the cost of the pairs within 2 d_hat.
+      cache_(std::make_unique<elements::ContactCandidateCache>(d_hat, d_hat)) {}
 
 void SelfContactFamily::check(const NodeMatrix& X, double) const {
   require_positive("self_contact: distance", d_hat_);
@@ -84,8 +121,9 @@ void SelfContactFamily::find_active(const NodeMatrix& x, ActiveElements& out) co
   out = ActiveElements{};
   out.width = 4;
   const double s_hat = d_hat_ * d_hat_;
-  const ContactCandidates c = elements::contact_candidates(x, triangles_, edges_, d_hat_);
-  for_each_pair(c, triangles_, edges_, [&](const std::array<Index, 4>& n, bool edge_edge) {
+  const auto c = cache_->candidates(x, triangles_, edges_);
+  for_each_pair(*c, triangles_, edges_, [&](const std::array<Index, 4>& n, bool edge_edge) {
+    if (box_gap(x, n, edge_edge) >= d_hat_) return;  // the list holds pairs to 2 d_hat
     if (squared_distance(x, n, edge_edge) >= s_hat) return;  // beyond d_hat: no energy
     out.nodes.insert(out.nodes.end(), n.begin(), n.end());
     out.kinds.push_back(edge_edge ? EdgeEdge : PointTriangle);
@@ -162,7 +200,8 @@ void SelfContactFamily::add_state(const NodeMatrix& x, ElementState& state) cons
     segments.segment<3>(6 * static_cast<Index>(e)) = p;
     segments.segment<3>(6 * static_cast<Index>(e) + 3) = q;
   }
-  state.add("self_contact_gap", VectorX::Constant(1, min_gap(x)));
+  const double gap = min_gap(x);  // inf for a mesh without a pair: then no value
+  state.add("self_contact_gap", std::isfinite(gap) ? VectorX::Constant(1, gap) : VectorX());
   state.add("self_contact_segments", segments);
 }
 
@@ -171,14 +210,23 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
   const NodeMatrix x0 = deformed(X, u);
   const NodeMatrix dx = Eigen::Map<const NodeMatrix>(du.data(), X.rows(), 3);
   const NodeMatrix x1 = x0 + dx;
-  // The swept boxes' candidates hold every pair that may meet along the step.
-  const ContactCandidates c = elements::contact_candidates(x0, triangles_, edges_, 0.0, dx);
+  // The kept candidates cover the step when it is short beside the list's skin; otherwise
+  // those of the swept boxes, which hold every pair that may meet along it.
+  auto c = cache_->candidates(x0, triangles_, edges_, &dx);
+  if (!c) {
+    c = std::make_shared<const ContactCandidates>(
+        elements::contact_candidates(x0, triangles_, edges_, 0.0, dx));
+  }
   double fraction = 1.0;
-  for_each_pair(c, triangles_, edges_, [&](const std::array<Index, 4>& n, bool edge_edge) {
+  for_each_pair(*c, triangles_, edges_, [&](const std::array<Index, 4>& n, bool edge_edge) {
     const auto ccd = edge_edge ? elements::edge_edge_ccd
                                : elements::point_triangle_ccd;
     elements::CcdOptions options;
     options.t_max = fraction;  // only an earlier impact can shorten the step further
+    // ACCD's first advance, eta gap / rate, from a lower bound of the gap: when it already
+    // reaches t_max, ACCD would find no impact (most candidates, at a fraction of its cost).
+    const double gap = box_gap(x0, n, edge_edge), rate = closing_rate(dx, n, edge_edge);
+    if (gap > 0 && options.conservative_rescaling * gap >= options.t_max * rate) return;
     const auto toi = ccd(row(x0, n[0]), row(x0, n[1]), row(x0, n[2]), row(x0, n[3]),
                          row(x1, n[0]), row(x1, n[1]), row(x1, n[2]), row(x1, n[3]), options);
     if (toi.impact) fraction = std::min(fraction, toi.toi);

@@ -17,10 +17,12 @@
 /// of the swept boxes (step_limit), so that no step makes two panels pass through each other.
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "kresling/elements/contact_barrier.hpp"
 #include "kresling/elements/contact_broad_phase.hpp"
+#include "kresling/elements/contact_candidate_cache.hpp"
 #include "kresling/model/element_family.hpp"
 
 namespace kresling::model {
@@ -41,7 +43,7 @@ class SelfContactFamily final : public ElementFamily {
   void check(const NodeMatrix& X, double scale) const override;
   double assemble(const NodeMatrix& X, const VectorX& u, AssemblyTarget& target) const override;
   /// Columns: self_contact_gap (one value: the smallest distance between two primitives
-  /// that are not excluded [mm], inf if there is none) and self_contact_segments (per pair
+  /// that are not excluded [mm]; none for a mesh without such a pair) and self_contact_segments (per pair
   /// within d_hat, its two closest points: 6 coordinates [mm]).
   void add_state(const NodeMatrix& x, ElementState& state) const override;
   Table table() const override;
@@ -71,6 +73,9 @@ class SelfContactFamily final : public ElementFamily {
   elements::TriangleMatrix triangles_;
   elements::EdgeMatrix edges_;
   double d_hat_, stiffness_;
+  // The broad phase's candidates kept across evaluations (the family's only state, a cache:
+  // every result is that of a broad phase of its own).
+  std::unique_ptr<elements::ContactCandidateCache> cache_;
 };
 
 }  // namespace kresling::model
