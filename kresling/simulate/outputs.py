@@ -217,11 +217,22 @@ def _write_view(simulation, directory, rows, columns) -> dict:
         page = write_path_page(simulation.pattern_model, _Kept(simulation.path, rows),
                                directory / "view.html", curve=curve, increments=rows + 1,
                                total=simulation.path.num_steps, title=view_title(simulation),
-                               **timing)
+                               **timing,
+                               contact_pairs=_contact_pairs(simulation, rows))
     except ImportError as error:  # plotly missing: the other files still stand
         logger.warning("view.html not written: %s", error)
         return {}
     return {"view": page}
+
+
+def _contact_pairs(simulation, rows):
+    """The panel-panel pairs within d_hat at each kept row (segments between their closest
+    points, (K, 6) [mm] each), or None without self contact."""
+    if "self_contact" not in simulation.path.families:
+        return None
+    model = simulation.model
+    return [model.element_state(u)["self_contact_segments"].reshape(-1, 6)
+            for u in np.asarray(simulation.path.displacement)[rows]]
 
 
 def view_title(simulation) -> str:

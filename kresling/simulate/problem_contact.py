@@ -1,5 +1,6 @@
 """The problem file's ``[contact]`` table: rigid planes the pattern's nodes may not pass,
-read as :mod:`kresling.simulate.problem` reads every table."""
+and panels that may not pass through each other (``self = true``), read as
+:mod:`kresling.simulate.problem` reads every table."""
 
 from __future__ import annotations
 
@@ -13,11 +14,13 @@ __all__ = ["Contact", "read_contact", "auto_barrier_stiffness"]
 @dataclass(frozen=True)
 class Contact:
     """``distance``: d_hat [mm], the gap below which the barrier acts; ``stiffness``: kappa
-    [N/mm^3] or None for "auto"; ``planes``: tuples (point, normal)."""
+    [N/mm^3] or None for "auto"; ``planes``: tuples (point, normal), possibly none;
+    ``self_contact``: whether panels are kept off each other."""
 
     distance: float
     stiffness: float | None
     planes: tuple
+    self_contact: bool = False
 
 
 def read_contact(t, number, positive, boolean, vector3):
@@ -26,14 +29,13 @@ def read_contact(t, number, positive, boolean, vector3):
                      allowed="d_hat [mm]: the barrier acts at gaps below it")
     raw = t.get("stiffness", lambda t_, k, v, a: v, "auto")
     stiffness = None if raw == "auto" else positive(t, "stiffness", raw)
-    if t.get("self", boolean, False):
-        t.fail("self", "= true is not available yet: panels are kept off rigid planes, not "
-                       "off each other (set self = false, or leave it out)")
-    planes = t.get("planes", lambda t_, k, v, a: v, required=True,
+    self_contact = t.get("self", boolean, False)
+    planes = t.get("planes", lambda t_, k, v, a: v, [], required=not self_contact,
                    allowed="an array of { point = [x, y, z], normal = [nx, ny, nz] }")
-    if not isinstance(planes, list) or not planes:
+    if not isinstance(planes, list) or not (planes or self_contact):
         t.fail("planes", f"= {planes!r} is invalid: must be a non-empty array of "
-                         "{ point = [x, y, z], normal = [nx, ny, nz] }")
+                         "{ point = [x, y, z], normal = [nx, ny, nz] } (or set self = true "
+                         "for contact between panels alone)")
     out = []
     for plane in planes:
         if not isinstance(plane, dict) or set(plane) != {"point", "normal"}:
@@ -44,7 +46,7 @@ def read_contact(t, number, positive, boolean, vector3):
             t.fail("planes", f"has normal {list(normal)}: must not be zero")
         out.append((point, normal))
     t.finish()
-    return Contact(distance, stiffness, tuple(out))
+    return Contact(distance, stiffness, tuple(out), bool(self_contact))
 
 
 def _barrier_curvature(d_hat: float) -> float:

@@ -109,13 +109,14 @@ class Simulation:
         # The model's other families (cables, springs, ...) that it holds any of: their
         # energies as the solver recorded them, and in the total.
         for name in path.families:
-            if name not in ("bars", "hinges") and self.model.family(name)["nodes"].size:
+            if name not in ("bars", "hinges") and _holds_elements(self.model.family(name)):
                 energies[name] = path.energy_of(name)
                 energies["total"] = energies["total"] + energies[name]
         energies["total"] = energies.pop("total")
-        if "contact" in path.families:  # the smallest node-plane distance of each step
-            columns["min_gap"] = np.array([self.model.element_state(u)["contact_gap"].min()
-                                           for u in path.displacement])
+        if {"contact", "self_contact"} & set(path.families):
+            gaps = [_min_gap(self.model.element_state(u)) for u in path.displacement]
+            if None not in gaps:  # (a mesh of one panel has no pair to measure)
+                columns["min_gap"] = np.array(gaps)
         for name, values in energies.items():
             columns[f"energy_{name}"] = values
         columns["iterations"] = path.iterations
@@ -224,8 +225,10 @@ def build_problem_model(problem) -> PatternModel:
             "stiffness": np.array([s.stiffness for s in problem.springs], dtype=float),
             "anchor": np.array([nodes[s.node] if s.anchor is None else s.anchor
                                 for s in problem.springs], dtype=float)}
-    if problem.contact is not None:
+    if problem.contact is not None and problem.contact.planes:
         families["contact"] = _contact_table(problem, pm.model)
+    if problem.contact is not None and problem.contact.self_contact:
+        families["self_contact"] = _self_contact_table(problem, pm)
     if not families:
         return pm
     try:
@@ -236,21 +239,50 @@ def build_problem_model(problem) -> PatternModel:
     return dataclasses.replace(pm, model=model)
 
 
-def _contact_table(problem, model) -> dict:
-    """The contact family's columns: every node against every plane; "auto" stiffness from
-    the model's mean diagonal stiffness at rest (docs/simulate.md, '[contact]')."""
+def _barrier_stiffness(problem, model) -> float:
+    """kappa [N/mm^3] of ``[contact]``: its number, or "auto" from the model's mean diagonal
+    stiffness at rest (docs/simulate.md, '[contact]')."""
     from kresling.assembly import assemble
     from kresling.simulate.problem_contact import auto_barrier_stiffness
 
     contact = problem.contact
-    kappa = contact.stiffness
-    if kappa is None:
-        diagonal = assemble(model).stiffness.diagonal()[~model.fixed.ravel()]
-        kappa = auto_barrier_stiffness(float(np.mean(diagonal)), contact.distance)
+    if contact.stiffness is not None:
+        return contact.stiffness
+    diagonal = assemble(model).stiffness.diagonal()[~model.fixed.ravel()]
+    return auto_barrier_stiffness(float(np.mean(diagonal)), contact.distance)
+
+
+def _contact_table(problem, model) -> dict:
+    """The contact family's columns: every node against every plane."""
+    contact = problem.contact
     return {"nodes": np.arange(model.num_nodes, dtype=np.int64),
             "origin": np.array([p for p, _ in contact.planes], dtype=float),
             "normal": np.array([n for _, n in contact.planes], dtype=float),
-            "distance": np.array([contact.distance]), "stiffness": np.array([kappa])}
+            "distance": np.array([contact.distance]),
+            "stiffness": np.array([_barrier_stiffness(problem, model)])}
+
+
+def _self_contact_table(problem, pm) -> dict:
+    """The self-contact family's columns: the pattern's triangles (N5B8 centre nodes
+    included), kept off each other."""
+    return {"triangles": np.asarray(pm.elements.triangles, dtype=np.int64),
+            "distance": np.array([problem.contact.distance]),
+            "stiffness": np.array([_barrier_stiffness(problem, pm.model)])}
+
+
+def _holds_elements(columns: dict) -> bool:
+    """Whether a family's table holds any element (nodes of a node family, triangles of
+    the self-contact family)."""
+    key = "triangles" if "triangles" in columns else "nodes"
+    return columns[key].size > 0
+
+
+def _min_gap(state: dict) -> float | None:
+    """The smallest node-plane and panel-panel distance of an element state [mm], or None
+    when there is neither."""
+    gaps = [state[k].min() for k in ("contact_gap", "self_contact_gap")
+            if k in state and state[k].size]
+    return float(min(gaps)) if gaps else None
 
 
 #: The problem file's key of each material parameter the model's messages name.

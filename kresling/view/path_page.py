@@ -146,7 +146,8 @@ def _curve(model, path, curve, num_steps):
 
 def write_path_page(model, path, file, *, triangles=None, hinge_family=None, curve=None,
                     frame_stride=None, max_frames=200, title=None, increments=None,
-                    total=None, times=None, time_scale=None) -> Path:
+                    total=None, times=None, time_scale=None,
+                    contact_pairs=None) -> Path:
     """Write a path's animated view as one offline page, straight from its arrays.
 
     The page shows what ``write_html(view_path(model, path, ...), file)`` shows (without
@@ -176,6 +177,10 @@ def write_path_page(model, path, file, *, triangles=None, hinge_family=None, cur
     time_scale : float, optional
         Wall seconds per second of the motion (with ``times``; e.g. 25: a 0.2 s motion
         plays in 5 s).
+    contact_pairs : sequence of array_like, optional
+        One entry per row of the path: its contact pairs as segments between their closest
+        points, shape (K, 6) [mm] (K may differ from row to row); drawn as the lines
+        "contact pairs". Default: none.
 
     Returns
     -------
@@ -199,8 +204,12 @@ def write_path_page(model, path, file, *, triangles=None, hinge_family=None, cur
     names = [str(numbers[r]) for r in rows]
     total = int(numbers[-1]) if total is None else as_integer("total", total, minimum=1)
     points = np.stack([node_points(model, displacement[r]) for r in rows])
-    low, high = box(list(points))
     lines = _scene(inputs)
+    if contact_pairs is not None:
+        points, order = _with_segments(points, [contact_pairs[r] for r in rows])
+        if order is not None:
+            lines.append(("contact pairs", (_MARKER_COLOUR, 6, "solid"), order))
+    low, high = box(list(points))
     shown = subscripted(title or f"Equilibrium path of a bar-and-hinge model "
                                  f"({describe(model)}), {total} increments")
     if getattr(path, "completed", True) is False:
@@ -210,7 +219,7 @@ def write_path_page(model, path, file, *, triangles=None, hinge_family=None, cur
     spec = dict(data=_traces(inputs, lines, low, high, shown_curve),
                 layout=_layout(shown, list(points), names, total, shown_curve),
                 config=dict(responsive=True, displaylogo=False),
-                frames=dict(names=names, rows=[int(r) for r in rows], nodes=len(model.nodes),
+                frames=dict(names=names, rows=[int(r) for r in rows], nodes=points.shape[1],
                             low=low.tolist(), span=(high - low).tolist(),
                             mesh=bool(len(inputs.triangles)),
                             orders=[order.tolist() for _, _, order in lines],
@@ -232,6 +241,24 @@ def _timing(times, time_scale, rows, num_steps) -> dict:
                          "ascending times [s], one per row of the path")
     scale = as_positive_real("time_scale", 1.0 if time_scale is None else time_scale)
     return {"times": [float(values[r]) for r in rows], "scale": scale}
+
+
+def _with_segments(points, segments):
+    """Append each frame's segments to its points as pairs of extra points (the most any
+    frame has; a frame with fewer repeats its first node for the rest, segments of zero
+    length that draw nothing), and the polyline order that draws them."""
+    segments = [np.asarray(s, dtype=float).reshape(-1, 6) for s in segments]
+    most = max((len(s) for s in segments), default=0)
+    if most == 0:
+        return points, None
+    extra = np.repeat(points[:, :1, :], 2 * most, axis=1)
+    for f, s in enumerate(segments):
+        extra[f, :2 * len(s)] = s.reshape(-1, 3)
+    first = points.shape[1]
+    order = np.full(3 * most, -1, dtype=np.int64)
+    order[0::3] = first + 2 * np.arange(most)
+    order[1::3] = first + 2 * np.arange(most) + 1
+    return np.concatenate([points, extra], axis=1), order
 
 
 def _increments(increments, num_steps):

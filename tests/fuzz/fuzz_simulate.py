@@ -84,6 +84,14 @@ BASES = [
      "contact": {"distance": 0.2, "stiffness": "auto",
                  "planes": [{"point": [0, 0, 0], "normal": [0, 0, 1]}]},
      "analysis": {"method": "displacement_control", "steps": 3}},
+    # Two panels folded shut onto each other, kept apart by panel-panel contact.
+    {"pattern": dict(SHEET, split="N4B5"),
+     "material": {"calibration": "manual", "bar_modulus": 1e3, "bar_area": 1.0,
+                  "fold_stiffness": 0.1, "bend_stiffness": 1.0},
+     "support": [{"nodes": [0, 1, 3], "fix": "xyz"}],
+     "actuation": [{"edges": [[1, 4]], "fold_angle_deg": 178.0}],
+     "contact": {"distance": 0.1, "stiffness": "auto", "self": True},
+     "analysis": {"method": "fold", "steps": 3}},
 ]
 KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices", "panels",
         "split", "file", "planarity_tolerance", "calibration", "E", "nu", "thickness",
@@ -111,7 +119,8 @@ values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_0
      [[0.0, 0.0], [1e-3, 1.0]], [[1e-3, 0.0], [0.0, 1.0]], [[0.0]], {"harmonic": [1.0, 50.0]},
      {"harmonic": [1.0, 0.0]}, {"harmonic": [1e300, 1e300]}, {"alpha": 5.0}, {"beta": -1.0},
      {"gamma": 1.0}, [0.0, 0.0, -9810.0], 1e-9, 1e-4, -0.05, -0.5,
-     {"load_factor": 1.0, "steps": 2}, {"load_factor": 1e300}]))
+     {"load_factor": 1.0, "steps": 2}, {"load_factor": 1e300},
+     {"distance": 0.2, "self": True}, {"distance": 5.0, "self": True}, True]))
 
 
 def mutate(problem, edits):

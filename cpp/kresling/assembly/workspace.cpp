@@ -1,6 +1,7 @@
 #include "kresling/assembly/workspace.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -95,7 +96,19 @@ Workspace::Workspace(const model::Model& model, std::vector<Index> rows, double 
                                 " are assembled");
   }
   for (Index r : rows_) size_ = std::max(size_, r + 1);
+  active_.resize(model.families().size());
+  for (std::size_t f = 0; f < model.families().size(); ++f) {
+    if (!model.families()[f]->changes_elements()) continue;
+    changing_.push_back(f);
+    model.families()[f]->active_elements(model.nodes(), VectorX::Zero(model.num_dofs()),
+                                         active_[f]);
+  }
+  build_pattern(model);
+  connectivity_ = connectivity_of(model);
+}
 
+void Workspace::build_pattern(const model::Model& model) {
+  static std::atomic<std::uint64_t> patterns{0};
   // Every element's DOFs, family by family (asked once: a family may compute them).
   std::vector<std::vector<std::vector<Index>>> dofs(model.families().size());
   std::size_t count = static_cast<std::size_t>(size_);
@@ -103,6 +116,10 @@ Workspace::Workspace(const model::Model& model, std::vector<Index> rows, double 
     const auto& family = *model.families()[f];
     for (std::size_t e = 0; e < family.size(); ++e) {
       dofs[f].push_back(family.element_dofs(e));
+      count += dofs[f].back().size() * dofs[f].back().size();
+    }
+    for (std::size_t e = 0; e < active_[f].size(); ++e) {
+      dofs[f].push_back(active_[f].dofs(e));
       count += dofs[f].back().size() * dofs[f].back().size();
     }
   }
@@ -116,13 +133,25 @@ Workspace::Workspace(const model::Model& model, std::vector<Index> rows, double 
   matrix_.setFromTriplets(entries.begin(), entries.end());
   matrix_.makeCompressed();
 
-  slots_.resize(dofs.size());
+  slots_.assign(dofs.size(), {});
   for (std::size_t f = 0; f < dofs.size(); ++f) {
     slots_[f].offsets.push_back(0);
     for (const auto& element : dofs[f]) add_slots(element, rows_, storage_, matrix_, slots_[f]);
   }
+  diagonal_slots_.clear();
   for (Index i = 0; i < size_; ++i) diagonal_slots_.push_back(find_slot(matrix_, i, i));
-  connectivity_ = connectivity_of(model);
+  pattern_id_ = ++patterns;
+}
+
+void Workspace::update_active(const model::Model& model, const VectorX& u) {
+  bool changed = false;
+  model::ActiveElements now;
+  for (std::size_t f : changing_) {
+    model.families()[f]->active_elements(model.nodes(), u, now);
+    if (now.nodes != active_[f].nodes) changed = true;
+    std::swap(active_[f], now);  // the kinds may differ on the same nodes
+  }
+  if (changed) build_pattern(model);
 }
 
 bool Workspace::fits(const model::Model& model) const {
@@ -185,6 +214,7 @@ Energies assemble_unchecked(const model::Model& model, Workspace& w, const Vecto
                                 std::to_string(model.num_dofs()));
   }
   force.setZero(model.num_dofs());
+  if (with_matrix && !w.changing_.empty()) w.update_active(model, u);
   double* values = w.matrix_.valuePtr();
   if (with_matrix) std::fill(values, values + w.matrix_.nonZeros(), 0.0);
 
@@ -193,6 +223,9 @@ Energies assemble_unchecked(const model::Model& model, Workspace& w, const Vecto
   energies.count = families.size();
   for (std::size_t f = 0; f < families.size(); ++f) {
     model::AssemblyTarget target{force, with_matrix ? values : nullptr, &w.slots_[f]};
+    // Without a tangent the family finds its active elements itself (those of the pattern
+    // may belong to another state).
+    if (with_matrix && families[f]->changes_elements()) target.active = &w.active_[f];
     energies.values[f] = families[f]->assemble(model.nodes(), u, target);
   }
   if (with_matrix) {

@@ -18,6 +18,12 @@
 /// evaluated one after another in the model's order, each through its own part of the slot
 /// map; nothing here knows what a family is.
 ///
+/// A family whose elements change with the state (contact pairs: changes_elements()) is
+/// asked for its active elements at every assembly with a tangent; when they differ from
+/// those the pattern was built for, the pattern, the slot map and pattern_id() are renewed
+/// (a solver then analyses the new pattern: TangentSolver::set_pattern). A model without
+/// such a family never asks, and its pattern never changes.
+///
 /// The solvers' other per-state data, the symbolic factorisation of the tangent, lives
 /// beside the workspace in the solver that owns both (solvers::TangentSolver).
 
@@ -94,6 +100,10 @@ class Workspace {
   /// Throws std::invalid_argument, saying what differs, unless fits(model).
   void require_fits(const model::Model& model) const;
 
+  /// Identifies the current pattern: a new value (unique across workspaces) whenever the
+  /// pattern is built or rebuilt for a changed set of active elements.
+  std::uint64_t pattern_id() const { return pattern_id_; }
+
   /// The tangent from the last assemble(..., true) through this workspace: size() x size(),
   /// symmetric, whole or its lower triangle (see Storage).
   const SparseMatrix& matrix() const { return matrix_; }
@@ -120,6 +130,16 @@ class Workspace {
   // The slot map of each family of the model, in the model's order.
   std::vector<model::FamilySlots> slots_;
   std::vector<int> diagonal_slots_;
+  // The active elements the pattern was built for, per family (empty for families whose
+  // elements do not change), the indices of the families that change, and the pattern's id.
+  std::vector<model::ActiveElements> active_;
+  std::vector<std::size_t> changing_;
+  std::uint64_t pattern_id_ = 0;
+
+  void build_pattern(const model::Model& model);
+  // Renew the active elements of the changing families at u; rebuild the pattern if they
+  // differ from the pattern's.
+  void update_active(const model::Model& model, const VectorX& u);
 };
 
 /// assemble() without the connectivity check, for a caller that made it once for many

@@ -1,6 +1,7 @@
 #include "kresling/model/element_family.hpp"
 
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 
 #include "kresling/core/check.hpp"
@@ -32,6 +33,11 @@ std::string ElementFamily::element_name(std::size_t e) const {
   const std::vector<Index> dofs = element_dofs(e);
   for (std::size_t k = 0; k < dofs.size(); k += 3) nodes.push_back(dofs[k] / 3);
   return named_element(*this, e, nodes);
+}
+
+std::vector<Index> ActiveElements::dofs(std::size_t e) const {
+  const auto* first = nodes.data() + static_cast<std::ptrdiff_t>(e) * width;
+  return node_dofs(std::vector<Index>(first, first + width));
 }
 
 std::vector<Index> node_dofs(const std::vector<Index>& nodes) {

@@ -38,12 +38,29 @@ struct FamilySlots {
   std::vector<int> offsets;
 };
 
+/// The elements of a family whose elements depend on the state (contact pairs, found anew
+/// as panels approach and part), at one state: each element `width` nodes (row-major in
+/// `nodes`) and a kind code the family defines (point-triangle, edge-edge, ...). The
+/// workspace keeps the set its tangent's pattern was built for and rebuilds the pattern only
+/// when `nodes` differs (what the pattern depends on).
+struct ActiveElements {
+  int width = 0;
+  std::vector<Index> nodes;
+  std::vector<std::uint8_t> kinds;
+  std::size_t size() const { return kinds.size(); }
+  /// The DOFs of element e (3 per node).
+  std::vector<Index> dofs(std::size_t e) const;
+};
+
 /// What an evaluation writes into: the internal force of every DOF (accumulated), and, when
 /// `values` is not null, the tangent's value array through `slots` (the family's own).
+/// `active` (only for a family that changes_elements()) is the element set `slots` was made
+/// for, at the state being evaluated; when null the family finds its elements itself.
 struct AssemblyTarget {
   VectorX& force;
   double* values = nullptr;
   const FamilySlots* slots = nullptr;
+  const ActiveElements* active = nullptr;
 };
 
 /// Per-element quantities by name ("bar_strain", "hinge_angle", ...), in the order the
@@ -86,6 +103,17 @@ class ElementFamily {
   virtual double step_limit(const NodeMatrix& /*X*/, const VectorX& /*u*/,
                             const VectorX& /*du*/) const {
     return 1.0;
+  }
+  /// True when the family's elements depend on the state (contact pairs): its fixed
+  /// elements (size(), element_dofs) are then none, and active_elements says which act at
+  /// a state. The workspace asks at every assembly with a tangent and rebuilds its pattern
+  /// when the set changes. False by default, and then nothing is asked.
+  virtual bool changes_elements() const { return false; }
+  /// The elements acting at X + u (for a family that changes_elements()); `out` is
+  /// overwritten.
+  virtual void active_elements(const NodeMatrix& /*X*/, const VectorX& /*u*/,
+                               ActiveElements& out) const {
+    out = ActiveElements{};
   }
   /// The name of element e in messages ("bar 3 (nodes 1, 2)").
   std::string element_name(std::size_t e) const;

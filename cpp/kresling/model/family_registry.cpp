@@ -6,6 +6,7 @@
 #include "kresling/model/cable_family.hpp"
 #include "kresling/model/hinge_family.hpp"
 #include "kresling/model/plane_contact_family.hpp"
+#include "kresling/model/self_contact_family.hpp"
 #include "kresling/model/spring_family.hpp"
 
 namespace kresling::model {
@@ -20,6 +21,8 @@ const std::vector<FamilyKind>& family_kinds() {
       {"cables", &CableFamily::from_table, "tension-only cables sliding through guide nodes"},
       {"springs", &SpringFamily::from_table, "zero-length springs tying nodes to fixed points"},
       {"contact", &PlaneContactFamily::from_table, "nodes kept off rigid planes by a barrier"},
+      {"self_contact", &SelfContactFamily::from_table,
+       "panels (triangles) kept off each other by a barrier"},
   };
   return kinds;
 }

@@ -14,6 +14,7 @@ NewtonOutcome damped_newton(assembly::Assembler& assembler, TangentSolver& solve
     check_interrupt();
     ++out.iterations;
     assembler.assemble(u, force, /*with_matrix=*/true);
+    follow_pattern(assembler, solver);
     const FactorizeInfo info = solver.factorize(assembler.matrix());
     const VectorX du = info.ok ? solver.solve(gather_rows(assembler, -force)) : VectorX();
     if (!info.ok || !du.allFinite()) {

@@ -134,6 +134,7 @@ Attempt Increments::attempt(const PathPoint& start, double step) {
     check_interrupt();
     ++outcome.iterations;
     assembler_.assemble(end.u, force_, /*with_matrix=*/true);
+    follow_pattern(assembler_, solver_);
     const FactorizeInfo info = solver_.factorize(assembler_.matrix());
     if (!info.ok) {
       outcome.failure = "the tangent stiffness is singular";

@@ -25,6 +25,15 @@ void scatter_add_rows(const assembly::Assembler& assembler, const VectorX& reduc
   }
 }
 
+void follow_pattern(assembly::Assembler& assembler, TangentSolver& solver) {
+  for (const auto& family : assembler.model().families()) {
+    if (family->changes_elements()) {
+      solver.set_pattern(assembler.workspace().pattern_id());
+      return;
+    }
+  }
+}
+
 namespace {
 
 // The model's extent [mm] (at least 1): corrections beyond 1e6 times it mean a mechanism.
@@ -110,6 +119,7 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
           "folded flat)";
       return out;
     }
+    follow_pattern(assembler, solver);
     const FactorizeInfo info = solver.factorize(assembler.matrix());
     if (!info.ok) {
       out.failure = "the tangent stiffness is singular (an unconstrained mechanism)";

@@ -52,6 +52,11 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
                                  const NewtonOptions& options, int max_iterations = 0,
                                  ExtraTerms* extra = nullptr);
 
+/// Before factorising the tangent just assembled: tell `solver` its pattern when the model
+/// has a family whose elements change with the state (contact pairs), so that a new pattern
+/// is analysed anew; nothing otherwise.
+void follow_pattern(assembly::Assembler& assembler, TangentSolver& solver);
+
 /// Gather the entries of a full-length vector at the assembler's rows.
 VectorX gather_rows(const assembly::Assembler& assembler, const VectorX& full);
 /// Add a row-indexed vector into the full-length vector at the assembler's rows.

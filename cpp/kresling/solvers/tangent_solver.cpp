@@ -196,6 +196,17 @@ TangentSolver::~TangentSolver() = default;
 
 const FactorizationPlan& TangentSolver::plan() const { return impl_->plan; }
 
+void TangentSolver::set_pattern(std::uint64_t pattern) {
+  if (pattern_ != 0 && pattern != pattern_) {
+    // Everything analysed belongs to the old pattern: start afresh, with the same choice.
+    const CholeskyChoice requested = impl_->requested;
+    impl_ = std::make_unique<Impl>();
+    impl_->requested = requested;
+    impl_->cholesky.cholmod().print = 0;
+  }
+  pattern_ = pattern;
+}
+
 FactorizeInfo TangentSolver::factorize(const SparseMatrix& K) {
   Impl& s = *impl_;
   FactorizeInfo info;

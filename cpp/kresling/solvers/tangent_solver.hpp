@@ -18,6 +18,7 @@
 /// conditioned leading block) UMFPACK's LU solves instead and the inertia is reported
 /// unknown (-1). Symbolic analyses are done once per pattern.
 
+#include <cstdint>
 #include <memory>
 
 #include <Eigen/SparseCore>
@@ -78,6 +79,11 @@ class TangentSolver {
   /// just that triangle). The pattern is analysed on the first call and must stay the same.
   FactorizeInfo factorize(const SparseMatrix& K);
 
+  /// Tell the solver which pattern the next factorize calls see (Workspace::pattern_id): when
+  /// it differs from the one the symbolic analysis was made for, the next call analyses the
+  /// new pattern (contact pairs came or went). The first call only records the id.
+  void set_pattern(std::uint64_t pattern);
+
   /// Solve K x = b with the last successful factorisation.
   VectorX solve(const VectorX& b) const;
   /// Solve for several right-hand sides (columns of B) with one factorisation.
@@ -89,6 +95,7 @@ class TangentSolver {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  std::uint64_t pattern_ = 0;  // 0: none recorded yet
 };
 
 }  // namespace kresling::solvers

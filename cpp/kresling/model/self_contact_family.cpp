@@ -1,0 +1,251 @@
+#include "kresling/model/self_contact_family.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "kresling/core/check.hpp"
+#include "kresling/elements/contact_candidate_cache.hpp"
+#include "kresling/elements/contact_ccd.hpp"
+#include "kresling/elements/contact_closest_points.hpp"
+#include "kresling/elements/contact_mollifier.hpp"
+
+namespace kresling::model {
+
+namespace {
+
+using elements::ContactCandidates;
+
+NodeMatrix deformed(const NodeMatrix& X, const VectorX& u) {
+  return X + Eigen::Map<const NodeMatrix>(u.data(), X.rows(), 3);
+}
+
+Vector3 row(const NodeMatrix& x, Index i) { return x.row(i).transpose(); }
+
+// The 4 nodes of a candidate pair: (p, t0, t1, t2) or (ea0, ea1, eb0, eb1).
+std::array<Index, 4> point_triangle_nodes(const elements::TriangleMatrix& t,
+                                          const std::array<Index, 2>& pair) {
+  return {pair[0], t(pair[1], 0), t(pair[1], 1), t(pair[1], 2)};
+}
+std::array<Index, 4> edge_edge_nodes(const elements::EdgeMatrix& e,
+                                     const std::array<Index, 2>& pair) {
+  return {e(pair[0], 0), e(pair[0], 1), e(pair[1], 0), e(pair[1], 1)};
+}
+
+// The squared distance of a pair of the given kind at positions x, from its closest points
+// (no derivatives: the kernels' value to rounding, at a fraction of their cost).
+double squared_distance(const NodeMatrix& x, const std::array<Index, 4>& n, bool edge_edge) {
+  const Vector3 a = row(x, n[0]), b = row(x, n[1]), c = row(x, n[2]), d = row(x, n[3]);
+  if (edge_edge) {
+    const auto [p, q] = elements::closest_points_of_edges(a, b, c, d);
+    return (p - q).squaredNorm();
+  }
+  return (a - elements::closest_point_on_triangle(a, b, c, d)).squaredNorm();
+}
+
+// A lower bound on a pair's distance: the gap between the boxes of its two primitives
+// (the first 1 or 2 nodes, the other 3 or 2), far cheaper than the distance itself.
+double box_gap(const NodeMatrix& x, const std::array<Index, 4>& n, bool edge_edge) {
+  const int split = edge_edge ? 2 : 1;
+  Vector3 lo_a = row(x, n[0]), hi_a = lo_a, lo_b = row(x, n[split]), hi_b = lo_b;
+  for (int i = 1; i < 4; ++i) {
+    const Vector3 p = row(x, n[i]);
+    Vector3& lo = i < split ? lo_a : lo_b;
+    Vector3& hi = i < split ? hi_a : hi_b;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const Vector3 gap = (lo_b - hi_a).cwiseMax(lo_a - hi_b).cwiseMax(0.0);
+  return gap.norm();
+}
+
+// ACCD's bound on the rate at which a pair's gap closes along a step dx: the largest node
+// displacement on each side, the pair's mean displacement taken off (contact_ccd.cpp).
+double closing_rate(const NodeMatrix& dx, const std::array<Index, 4>& n, bool edge_edge) {
+  Vector3 mean = Vector3::Zero();
+  for (Index i : n) mean += row(dx, i) / 4.0;
+  double a = 0.0, b = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    double& side = i < (edge_edge ? 2 : 1) ? a : b;
+    side = std::max(side, (row(dx, n[i]) - mean).norm());
+  }
+  return a + b;
+}
+
+// Visit every candidate pair of `c` as (nodes, is edge-edge).
+template <typename Visit>
+void for_each_pair(const ContactCandidates& c, const elements::TriangleMatrix& t,
+                   const elements::EdgeMatrix& e, Visit&& visit) {
+  for (const auto& pair : c.point_triangle) visit(point_triangle_nodes(t, pair), false);
+  for (const auto& pair : c.edge_edge) visit(edge_edge_nodes(e, pair), true);
+}
+
+}  // namespace
+
+SelfContactFamily::SelfContactFamily(std::vector<Index> triangles, double d_hat,
+                                     double stiffness)
+    : triangles_(Eigen::Map<const elements::TriangleMatrix>(
+          triangles.data(), static_cast<Index>(triangles.size() / 3), 3)),
+      edges_(elements::triangle_edges(triangles_)),
+      d_hat_(d_hat),
+      stiffness_(stiffness),
+      // A skin of d_hat: the list holds while no node moves d_hat / 2 (Newton's iterates
+      // near contact move far less), at the cost of the pairs within 2 d_hat.
+      cache_(std::make_unique<elements::ContactCandidateCache>(d_hat, d_hat)) {}
+
+void SelfContactFamily::check(const NodeMatrix& X, double) const {
+  require_positive("self_contact: distance", d_hat_);
+  require_positive("self_contact: stiffness", stiffness_);
+  try {
+    elements::check_contact_mesh(X, triangles_, edges_, d_hat_);
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument(std::string("self_contact: ") + error.what());
+  }
+  NearestPair nearest;
+  const double gap = nearest_pair(X, &nearest);
+  if (!(gap < d_hat_)) return;
+  // A pair within d_hat at rest: the barrier would push the model before anything moves.
+  std::string nodes;
+  for (int k = 0; k < 4; ++k) nodes += (k ? ", " : "") + std::to_string(nearest.nodes[k]);
+  throw std::invalid_argument(
+      "self_contact: distance = " + format_number(d_hat_) + " mm is invalid: two panels are " +
+      format_number(gap) + " mm apart at rest (" +
+      (nearest.edge_edge ? "edge and edge" : "node and triangle") + ", nodes " + nodes +
+      "), and the barrier would act before anything moves; must be below " +
+      format_number(gap) + " mm");
+}
+
+void SelfContactFamily::find_active(const NodeMatrix& x, ActiveElements& out) const {
+  out = ActiveElements{};
+  out.width = 4;
+  const double s_hat = d_hat_ * d_hat_;
+  const auto c = cache_->candidates(x, triangles_, edges_);
+  for_each_pair(*c, triangles_, edges_, [&](const std::array<Index, 4>& n, bool edge_edge) {
+    if (box_gap(x, n, edge_edge) >= d_hat_) return;  // the list holds pairs to 2 d_hat
+    if (squared_distance(x, n, edge_edge) >= s_hat) return;  // beyond d_hat: no energy
+    out.nodes.insert(out.nodes.end(), n.begin(), n.end());
+    out.kinds.push_back(edge_edge ? EdgeEdge : PointTriangle);
+  });
+}
+
+void SelfContactFamily::active_elements(const NodeMatrix& X, const VectorX& u,
+                                        ActiveElements& out) const {
+  find_active(deformed(X, u), out);
+}
+
+elements::ScalarDerivatives<12> SelfContactFamily::pair_energy(
+    const NodeMatrix& X, const NodeMatrix& x, const ActiveElements& active, std::size_t e,
+    elements::BarrierHessian hessian) const {
+  const Index* n = active.nodes.data() + 4 * e;
+  const Vector3 a = row(x, n[0]), b = row(x, n[1]), c = row(x, n[2]), d = row(x, n[3]);
+  if (active.kinds[e] == PointTriangle) {
+    return elements::point_triangle_barrier(a, b, c, d, d_hat_, stiffness_, hessian);
+  }
+  // The mollifier's threshold from the edges as built, as IPC takes it.
+  const double eps_x = elements::edge_edge_mollifier_threshold(row(X, n[0]), row(X, n[1]),
+                                                               row(X, n[2]), row(X, n[3]));
+  return elements::edge_edge_barrier(a, b, c, d, eps_x, d_hat_, stiffness_, hessian);
+}
+
+double SelfContactFamily::assemble(const NodeMatrix& X, const VectorX& u,
+                                   AssemblyTarget& target) const {
+  const NodeMatrix x = deformed(X, u);
+  ActiveElements own;
+  if (target.active == nullptr) find_active(x, own);
+  const ActiveElements& active = target.active ? *target.active : own;
+  const auto hessian =
+      target.values ? elements::BarrierHessian::Projected : elements::BarrierHessian::None;
+  double energy = 0.0;
+  for (std::size_t e = 0; e < active.size(); ++e) {
+    const auto b = pair_energy(X, x, active, e, hessian);
+    energy += b.value;
+    const std::vector<Index> dofs = active.dofs(e);
+    add_local_force(b.gradient, dofs, target.force);
+    if (target.values) scatter_local_tangent(b.hessian, *target.slots, e, target.values);
+  }
+  return energy;
+}
+
+double SelfContactFamily::min_gap(const NodeMatrix& x) const { return nearest_pair(x, nullptr); }
+
+double SelfContactFamily::nearest_pair(const NodeMatrix& x, NearestPair* pair) const {
+  // Candidates within r hold every pair closer than r: grow r until the nearest candidate
+  // lies within it (then it is the nearest pair of all), at most past the mesh's extent.
+  const double extent = (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
+  double best = std::numeric_limits<double>::infinity();
+  for (double r = d_hat_;; r *= 4.0) {
+    const ContactCandidates c = elements::contact_candidates(x, triangles_, edges_, r);
+    for_each_pair(c, triangles_, edges_, [&](const std::array<Index, 4>& n, bool edge_edge) {
+      const double d = std::sqrt(squared_distance(x, n, edge_edge));
+      if (!(d < best)) return;
+      best = d;
+      if (pair) *pair = {n, edge_edge};
+    });
+    if (best <= r || r > extent) return best;
+  }
+}
+
+void SelfContactFamily::add_state(const NodeMatrix& x, ElementState& state) const {
+  ActiveElements active;
+  find_active(x, active);
+  VectorX segments(6 * static_cast<Index>(active.size()));
+  for (std::size_t e = 0; e < active.size(); ++e) {
+    const Index* n = active.nodes.data() + 4 * e;
+    const Vector3 a = row(x, n[0]), b = row(x, n[1]), c = row(x, n[2]), d = row(x, n[3]);
+    const auto [p, q] = active.kinds[e] == EdgeEdge
+                            ? elements::closest_points_of_edges(a, b, c, d)
+                            : std::make_pair(a, elements::closest_point_on_triangle(a, b, c, d));
+    segments.segment<3>(6 * static_cast<Index>(e)) = p;
+    segments.segment<3>(6 * static_cast<Index>(e) + 3) = q;
+  }
+  const double gap = min_gap(x);  // inf for a mesh without a pair: then no value
+  state.add("self_contact_gap", std::isfinite(gap) ? VectorX::Constant(1, gap) : VectorX());
+  state.add("self_contact_segments", segments);
+}
+
+double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
+                                     const VectorX& du) const {
+  const NodeMatrix x0 = deformed(X, u);
+  const NodeMatrix dx = Eigen::Map<const NodeMatrix>(du.data(), X.rows(), 3);
+  const NodeMatrix x1 = x0 + dx;
+  // The kept candidates cover the step when it is short beside the list's skin; otherwise
+  // those of the swept boxes, which hold every pair that may meet along it.
+  auto c = cache_->candidates(x0, triangles_, edges_, &dx);
+  if (!c) {
+    c = std::make_shared<const ContactCandidates>(
+        elements::contact_candidates(x0, triangles_, edges_, 0.0, dx));
+  }
+  double fraction = 1.0;
+  for_each_pair(*c, triangles_, edges_, [&](const std::array<Index, 4>& n, bool edge_edge) {
+    const auto ccd = edge_edge ? elements::edge_edge_ccd
+                               : elements::point_triangle_ccd;
+    elements::CcdOptions options;
+    options.t_max = fraction;  // only an earlier impact can shorten the step further
+    // ACCD's first advance, eta gap / rate, from a lower bound of the gap: when it already
+    // reaches t_max, ACCD would find no impact (most candidates, at a fraction of its cost).
+    const double gap = box_gap(x0, n, edge_edge), rate = closing_rate(dx, n, edge_edge);
+    if (gap > 0 && options.conservative_rescaling * gap >= options.t_max * rate) return;
+    const auto toi = ccd(row(x0, n[0]), row(x0, n[1]), row(x0, n[2]), row(x0, n[3]),
+                         row(x1, n[0]), row(x1, n[1]), row(x1, n[2]), row(x1, n[3]), options);
+    if (toi.impact) fraction = std::min(fraction, toi.toi);
+  });
+  return fraction;
+}
+
+Table SelfContactFamily::table() const {
+  std::vector<Index> t(triangles_.data(), triangles_.data() + triangles_.size());
+  return {{"triangles", index_column(t, 3)}, {"distance", real_column({d_hat_})},
+          {"stiffness", real_column({stiffness_})}};
+}
+
+FamilyPtr SelfContactFamily::from_table(const Table& t) {
+  require_known_columns(t, "self_contact", {"triangles", "distance", "stiffness"});
+  const auto& triangles = require_column(t, "self_contact", "triangles", true, 3);
+  const auto& d_hat = require_column(t, "self_contact", "distance", false, 1, 1).reals;
+  const auto& kappa = require_column(t, "self_contact", "stiffness", false, 1, 1).reals;
+  return std::make_shared<SelfContactFamily>(triangles.indices, d_hat[0], kappa[0]);
+}
+
+}  // namespace kresling::model

@@ -1,0 +1,81 @@
+#pragma once
+/// \file self_contact_family.hpp
+/// Contact between the model's panels (its triangles, within a pattern and between the
+/// modules of an arm): IPC's barrier on every point-triangle and edge-edge pair closer than
+/// d_hat (kernels: elements/contact_barrier.hpp, the edge-edge pairs mollified), the pairs
+/// found by the broad phase (elements/contact_broad_phase.hpp) at every evaluation.
+///
+///        t2              A pair acts while its distance d < d_hat, with energy
+///       /  \    o p      kappa b(d^2); pairs that share a node are never pairs, so a
+///      /    \   |        crease is not a contact, while the free corner of a panel meets
+///    t0 ---- t1          its neighbour's face across a crease that folds shut.
+///
+/// The pairs change as the panels approach and part: the family changes_elements(), and
+/// its active elements (4 nodes each: point-triangle (p, t0, t1, t2) or edge-edge (ea0,
+/// ea1, eb0, eb1)) are those within d_hat at the state; the workspace builds the tangent's
+/// pattern for them. Newton's corrections are shortened by additive CCD over the candidates
+/// of the swept boxes (step_limit), so that no step makes two panels pass through each other.
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "kresling/elements/contact_barrier.hpp"
+#include "kresling/elements/contact_broad_phase.hpp"
+#include "kresling/elements/contact_candidate_cache.hpp"
+#include "kresling/model/element_family.hpp"
+
+namespace kresling::model {
+
+/// Table columns: triangles (3 node indices a row), distance (d_hat [mm], one value),
+/// stiffness (kappa [N/mm^3], one value).
+class SelfContactFamily final : public ElementFamily {
+ public:
+  /// Kinds of active elements.
+  enum Kind : std::uint8_t { PointTriangle = 0, EdgeEdge = 1 };
+
+  SelfContactFamily(std::vector<Index> triangles, double d_hat, double stiffness);
+  static FamilyPtr from_table(const Table& table);
+
+  const char* name() const override { return "self_contact"; }
+  std::size_t size() const override { return 0; }  // its elements are active_elements
+  std::vector<Index> element_dofs(std::size_t) const override { return {}; }
+  void check(const NodeMatrix& X, double scale) const override;
+  double assemble(const NodeMatrix& X, const VectorX& u, AssemblyTarget& target) const override;
+  /// Columns: self_contact_gap (one value: the smallest distance between two primitives
+  /// that are not excluded [mm]; none for a mesh without such a pair) and self_contact_segments (per pair
+  /// within d_hat, its two closest points: 6 coordinates [mm]).
+  void add_state(const NodeMatrix& x, ElementState& state) const override;
+  Table table() const override;
+  bool limits_steps() const override { return true; }
+  double step_limit(const NodeMatrix& X, const VectorX& u, const VectorX& du) const override;
+  bool changes_elements() const override { return true; }
+  void active_elements(const NodeMatrix& X, const VectorX& u, ActiveElements& out) const override;
+
+  /// The smallest distance between two primitives that are not excluded at positions x
+  /// [mm]; inf when the mesh has no such pair.
+  double min_gap(const NodeMatrix& x) const;
+
+ private:
+  struct NearestPair {
+    std::array<Index, 4> nodes{};
+    bool edge_edge = false;
+  };
+  // min_gap, and the pair that has it when `pair` is not null.
+  double nearest_pair(const NodeMatrix& x, NearestPair* pair) const;
+  void find_active(const NodeMatrix& x, ActiveElements& out) const;
+  // The pair energy of active element e of `active` at positions x (rest positions X for
+  // the edge-edge mollifier's threshold).
+  elements::ScalarDerivatives<12> pair_energy(const NodeMatrix& X, const NodeMatrix& x,
+                                              const ActiveElements& active, std::size_t e,
+                                              elements::BarrierHessian hessian) const;
+
+  elements::TriangleMatrix triangles_;
+  elements::EdgeMatrix edges_;
+  double d_hat_, stiffness_;
+  // The broad phase's candidates kept across evaluations (the family's only state, a cache:
+  // every result is that of a broad phase of its own).
+  std::unique_ptr<elements::ContactCandidateCache> cache_;
+};
+
+}  // namespace kresling::model

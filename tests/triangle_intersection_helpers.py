@@ -1,0 +1,62 @@
+"""An independent triangle-triangle intersection test for the contact checks: two
+triangles that are not coplanar intersect exactly when an edge of one crosses the other
+(each end of their common segment lies on an edge of one of them), and a segment crosses a
+triangle when Moller and Trumbore's ray-triangle parameters are all in range. Written
+apart from the solver's kernels (no distance, no CCD) so that it can catch their faults."""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def segment_crosses_triangle(p, q, a, b, c, exclude_ends=False) -> bool:
+    """Whether the segment p q meets the triangle (a, b, c) (Moller-Trumbore); with
+    ``exclude_ends`` a meeting at p itself does not count (a node the two share)."""
+    d = q - p
+    e1, e2 = b - a, c - a
+    h = np.cross(d, e2)
+    det = e1 @ h
+    if abs(det) < 1e-14 * np.linalg.norm(d) * np.linalg.norm(e1) * np.linalg.norm(e2):
+        return False  # parallel to the plane: measure zero for a moving mesh
+    s = p - a
+    u = (s @ h) / det
+    qv = np.cross(s, e1)
+    v = (d @ qv) / det
+    t = (e2 @ qv) / det
+    lo = 1e-12 if exclude_ends else 0.0
+    return u >= 0.0 and v >= 0.0 and u + v <= 1.0 and lo < t <= 1.0
+
+
+def triangles_intersect(x, s, t) -> bool:
+    """Whether triangles ``s`` and ``t`` (node triples) at positions ``x`` meet anywhere
+    but at the nodes they share. Two triangles that share an edge meet only on it unless
+    they are coplanar (folded exactly flat onto each other), which a barrier never lets
+    happen; they are reported as not intersecting."""
+    shared = set(s) & set(t)
+    if len(shared) >= 2:
+        return False
+    for one, other in ((s, t), (t, s)):
+        for i in range(3):
+            p, q = one[i], one[(i + 1) % 3]
+            if p in shared and q in shared:
+                continue
+            if q in shared:  # the shared node first, so that it is the excluded end
+                p, q = q, p
+            if segment_crosses_triangle(x[p], x[q], *x[list(other)], exclude_ends=p in shared):
+                return True
+    return False
+
+
+def intersecting_pairs(x, triangles) -> list:
+    """Every pair (i, j), i < j, of ``triangles`` (T, 3) that intersects at positions ``x``
+    (N, 3): O(T^2) with a box prefilter, for the small meshes of the tests."""
+    x = np.asarray(x, dtype=float)
+    tri = np.asarray(triangles)
+    lo, hi = x[tri].min(axis=1), x[tri].max(axis=1)
+    pairs = []
+    for i in range(len(tri)):
+        overlap = np.all((lo[i + 1:] <= hi[i]) & (lo[i] <= hi[i + 1:]), axis=1)
+        for j in np.nonzero(overlap)[0] + i + 1:
+            if triangles_intersect(x, tuple(tri[i]), tuple(tri[j])):
+                pairs.append((i, int(j)))
+    return pairs
