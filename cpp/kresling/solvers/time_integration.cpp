@@ -163,15 +163,6 @@ void check_motion_input(const model::Model& model, const VectorX& masses, const 
   for (const auto& term : load.terms) check_vector("forces", term.forces, false);
   check_vector("initial displacement", u0, true);
   check_vector("initial velocity", v0, true);
-  for (const auto& family : model.families()) {
-    // The damping matrix bk K0 is added in the tangent's first pattern, which changes as
-    // contact pairs come and go.
-    if (family->changes_elements() && options.stiffness_damping != 0.0) {
-      throw std::invalid_argument(
-          "stiffness_damping = " + format_number(options.stiffness_damping) + " is invalid "
-          "with the element family " + family->name() + ": must be 0 (use mass_damping)");
-    }
-  }
   for (Index i = 0; i < n; ++i) {
     if (!model.fixed()[i] && !(masses[i] > 0.0)) {
       throw std::invalid_argument("masses: DOF " + std::to_string(i) + " (node " +
@@ -203,6 +194,15 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
                               const VectorX& u0, const VectorX& v0) {
   check_options(options);
   check_motion_input(model, masses, time_load, u0, v0);
+  for (const auto& family : model.families()) {
+    // The damping matrix bk K0 is added in the tangent's first pattern, which changes as
+    // contact pairs come and go.
+    if (family->changes_elements() && options.stiffness_damping != 0.0) {
+      throw std::invalid_argument(
+          "stiffness_damping = " + format_number(options.stiffness_damping) + " is invalid "
+          "with the element family " + family->name() + ": must be 0 (use mass_damping)");
+    }
+  }
   const Index n = model.num_dofs();
 
   const double alpha = options.hht_alpha;
