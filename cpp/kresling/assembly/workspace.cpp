@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -63,6 +64,26 @@ std::vector<Index> connectivity_of(const model::Model& model) {
     }
   }
   return c;
+}
+
+// Whether every element of `now` (nodes and kind) is one of `built`'s.
+bool holds_all(const model::ActiveElements& built, const model::ActiveElements& now) {
+  if (now.size() == 0) return true;
+  if (built.width != now.width) return false;
+  const int w = built.width;
+  auto key = [w](const model::ActiveElements& a, std::size_t e) {
+    std::vector<Index> k(a.nodes.begin() + static_cast<std::ptrdiff_t>(e) * w,
+                         a.nodes.begin() + static_cast<std::ptrdiff_t>(e + 1) * w);
+    k.push_back(a.kinds[e]);
+    return k;
+  };
+  std::vector<std::vector<Index>> keys(built.size());
+  for (std::size_t e = 0; e < built.size(); ++e) keys[e] = key(built, e);
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t e = 0; e < now.size(); ++e) {
+    if (!std::binary_search(keys.begin(), keys.end(), key(now, e))) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -148,8 +169,12 @@ void Workspace::update_active(const model::Model& model, const VectorX& u) {
   model::ActiveElements now;
   for (std::size_t f : changing_) {
     model.families()[f]->active_elements(model.nodes(), u, now);
-    if (now.nodes != active_[f].nodes) changed = true;
-    std::swap(active_[f], now);  // the kinds may differ on the same nodes
+    // The pattern's elements may stay while they hold every active one and are not many
+    // more: those no longer active add zeros (a pair beyond d_hat has no energy), and the
+    // pattern and its symbolic analysis are not redone at each pair that comes and goes.
+    if (holds_all(active_[f], now) && active_[f].size() <= 2 * now.size() + 16) continue;
+    std::swap(active_[f], now);
+    changed = true;
   }
   if (changed) build_pattern(model);
 }

@@ -19,10 +19,11 @@
 /// map; nothing here knows what a family is.
 ///
 /// A family whose elements change with the state (contact pairs: changes_elements()) is
-/// asked for its active elements at every assembly with a tangent; when they differ from
-/// those the pattern was built for, the pattern, the slot map and pattern_id() are renewed
-/// (a solver then analyses the new pattern: TangentSolver::set_pattern). A model without
-/// such a family never asks, and its pattern never changes.
+/// asked for its active elements at every assembly with a tangent; when one is not among
+/// those the pattern was built for (or these are more than twice as many as are active),
+/// the pattern, the slot map and pattern_id() are renewed (a solver then analyses the new
+/// pattern: TangentSolver::set_pattern). A model without such a family never asks, and its
+/// pattern never changes.
 ///
 /// The solvers' other per-state data, the symbolic factorisation of the tangent, lives
 /// beside the workspace in the solver that owns both (solvers::TangentSolver).

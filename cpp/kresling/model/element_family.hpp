@@ -42,7 +42,8 @@ struct FamilySlots {
 /// as panels approach and part), at one state: each element `width` nodes (row-major in
 /// `nodes`) and a kind code the family defines (point-triangle, edge-edge, ...). The
 /// workspace keeps the set its tangent's pattern was built for and rebuilds the pattern only
-/// when `nodes` differs (what the pattern depends on).
+/// when a new element is not in it (or it holds many more than are active): the family's
+/// assemble must then give elements that have become inactive no energy.
 struct ActiveElements {
   int width = 0;
   std::vector<Index> nodes;
@@ -110,7 +111,8 @@ class ElementFamily {
   /// when the set changes. False by default, and then nothing is asked.
   virtual bool changes_elements() const { return false; }
   /// The elements acting at X + u (for a family that changes_elements()); `out` is
-  /// overwritten.
+  /// overwritten. assemble() may be handed a superset of them (target.active): the elements
+  /// of an earlier state, which it must evaluate as they are at X + u (zero when inactive).
   virtual void active_elements(const NodeMatrix& /*X*/, const VectorX& /*u*/,
                                ActiveElements& out) const {
     out = ActiveElements{};

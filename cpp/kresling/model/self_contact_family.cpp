@@ -158,7 +158,13 @@ double SelfContactFamily::assemble(const NodeMatrix& X, const VectorX& u,
   const auto hessian =
       target.values ? elements::BarrierHessian::Projected : elements::BarrierHessian::None;
   double energy = 0.0;
+  const double s_hat = d_hat_ * d_hat_;
   for (std::size_t e = 0; e < active.size(); ++e) {
+    // The workspace's pattern may keep pairs that have parted: no energy, no entries.
+    const Index* n = active.nodes.data() + 4 * e;
+    if (squared_distance(x, {n[0], n[1], n[2], n[3]}, active.kinds[e] == EdgeEdge) >= s_hat) {
+      continue;
+    }
     const auto b = pair_energy(X, x, active, e, hessian);
     energy += b.value;
     const std::vector<Index> dofs = active.dofs(e);
