@@ -199,3 +199,20 @@ def test_a_falling_force_is_kept_but_warned_about(caplog):
         fit = fit_crease_run(flipped)
     assert fit.k == pytest.approx(-0.047, rel=1e-3)
     assert "check the sign" in caplog.text
+
+
+@pytest.mark.parametrize("scale, words", [(1e308, "not finite"),
+                                          (1e303, "too large to summarize")])
+def test_a_record_of_huge_forces_is_refused_naming_its_file(runs_file, scale, words):
+    # Forces of ~1e307 N overflow eqn 19 itself (k = inf); 1e303 N give finite stiffnesses of
+    # ~1e303 N/rad whose mean over the runs overflows. Either way the message names the
+    # record that holds them, not only the list's line.
+    record = runs_file.parent / "s2_r1.csv"
+    lines = record.read_text().splitlines()
+    header = [i for i, line in enumerate(lines) if line.startswith("time_s")][0]
+    rows = [line.split(",") for line in lines[header + 1:]]
+    record.write_text("\n".join(lines[:header + 1] + [f"{t},{d},{float(f) * scale!r}"
+                                                      for t, d, f in rows]) + "\n")
+    with pytest.raises(ValueError, match=words) as error:
+        fit_crease_file(runs_file)
+    assert "s2_r1.csv" in str(error.value)

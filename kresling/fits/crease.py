@@ -291,8 +291,18 @@ def summarize_crease(samples, runs, k, *, confidence: float = 0.95, fits=(), ski
     if k.size < 2:
         raise ValueError(f"{source or 'crease stiffness'}: {k.size} run(s); an SD needs 2")
     labels = list(dict.fromkeys(samples))  # first-appearance order
-    per_sample = {s: summarize(k[samples == s], confidence) for s in labels}
-    means = [per_sample[s].mean for s in labels]
+    with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported below
+        per_sample = {s: summarize(k[samples == s], confidence) for s in labels}
+        means = [per_sample[s].mean for s in labels]
+        spread = np.std(k)
+    # Finite stiffnesses can still be too large to average (a mean or an SD that overflows):
+    # say so, naming the run with the largest one, instead of returning inf.
+    if not np.all(np.isfinite(means)) or not np.isfinite(spread):
+        worst = int(np.argmax(np.abs(k)))
+        origin = (fits[worst].source if fits and fits[worst].source else
+                  f"sample {samples[worst]} run {runs[worst]}")
+        raise ValueError(f"{source or 'crease stiffness'}: the stiffnesses are too large to "
+                         f"summarize (k = {k[worst]:.3g} N/rad from {origin})")
     between = summarize(means, confidence) if len(labels) > 1 else None
     z = modified_z_scores(k)
     return CreaseStiffness(samples, np.asarray([str(r) for r in runs], dtype=object), k,

@@ -122,7 +122,8 @@ def read_crease_runs(path, *, names=None, units=None, on_invalid="raise", record
                               record.columns["displacement"], record.columns["force"],
                               markers[0], markers[1], float(table.columns["Lp"][row]),
                               float(table.columns["W"][row]),
-                              source=f"{table.path}, line {table.lines[row]}"))
+                              source=f"{table.path}, line {table.lines[row]} "
+                                     f"(record {record_path.name})"))
     return runs, skipped
 
 
