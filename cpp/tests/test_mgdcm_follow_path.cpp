@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -125,7 +126,7 @@ TEST(MgdcmFollowPath, OneDofTrussPassesBothLimitPointsOnTheClosedForm) {
   EXPECT_EQ(same.newton_iterations, r.newton_iterations);
 }
 
-TEST(MgdcmFollowPath, TheCorrectorRefusesExtraTerms) {
+TEST(MgdcmFollowPath, RefusesExtraTermsAndAnEmptyIterationBudget) {
   const model::Model m = one_dof_truss();
   VectorX F = VectorX::Zero(m.num_dofs());
   F[kApexZ] = -1.0;
@@ -145,4 +146,14 @@ TEST(MgdcmFollowPath, TheCorrectorRefusesExtraTerms) {
   solvers::PathResult r;
   EXPECT_THROW(solvers::follow_path(control, assembler, solver, u, steps, follow, r),
                std::invalid_argument);
+  // An increment of more than shrink_above_iterations iterations is rejected: below 1,
+  // every increment would be.
+  o.shrink_above_iterations = 0;
+  try {
+    solvers::solve_mgdcm(m, F, o);
+    ADD_FAILURE() << "shrink_above_iterations = 0 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("shrink_above_iterations"), std::string::npos)
+        << e.what();
+  }
 }
