@@ -51,6 +51,13 @@ double PathControl::monitored(const VectorX&, const VectorX& energies) const {
   return sum;
 }
 
+NewtonOutcome PathControl::correct(Increment&, assembly::Assembler& assembler,
+                                   TangentSolver& solver, VectorX& u, const VectorX& external,
+                                   const NewtonOptions& options, int max_iterations,
+                                   ExtraTerms* extra) {
+  return newton_equilibrium(assembler, solver, u, external, options, max_iterations, extra);
+}
+
 LoadControl::LoadControl(const model::Model& model, VectorX forces)
     : model_(model), forces_(std::move(forces)) {}
 

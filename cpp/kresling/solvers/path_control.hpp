@@ -4,7 +4,9 @@
 /// DOFs (displacement control), a model parameter (hinge rest angles: folding by crease
 /// actuation), or time. A control says, for any t, which model is solved, which DOFs are
 /// held where it puts them, what external force acts, and which forces a step records; the
-/// path follower (path_follower.hpp) does the stepping for every control alike.
+/// path follower (path_follower.hpp) does the stepping for every control alike. A control
+/// may also supply each increment's corrector: Newton at the prescribed parameter by
+/// default; MGDCM's (mgdcm.hpp) solves the load factor with the displacements instead.
 
 #include <functional>
 #include <optional>
@@ -12,8 +14,11 @@
 #include <vector>
 
 #include "kresling/core/types.hpp"
+#include "kresling/assembly/assembler.hpp"
 #include "kresling/model/model.hpp"
+#include "kresling/solvers/newton.hpp"
 #include "kresling/solvers/step_policy.hpp"
+#include "kresling/solvers/tangent_solver.hpp"
 
 namespace kresling::solvers {
 
@@ -62,6 +67,17 @@ class PathControl {
   virtual double monitored(const VectorX& forces, const VectorX& energies) const;
   /// What the path parameter is a fraction of, for messages ("the prescribed motion").
   virtual std::string parameter_name() const { return "the path"; }
+  /// The increment's corrector: iterate from `u` (all DOFs: the accepted state or a
+  /// predictor, with advance() applied) to the equilibrium that ends `increment`, with at
+  /// most `max_iterations` iterations (0: options.max_iterations) and the optional `extra`
+  /// terms. By default Newton at the prescribed parameter under `external`
+  /// (newton_equilibrium). A control whose parameter is an unknown of each increment (MGDCM,
+  /// an arc-length method) solves it with the displacements instead and sets increment.to
+  /// to where it converged: the step records that parameter and the policy hears it.
+  virtual NewtonOutcome correct(Increment& increment, assembly::Assembler& assembler,
+                                TangentSolver& solver, VectorX& u, const VectorX& external,
+                                const NewtonOptions& options, int max_iterations,
+                                ExtraTerms* extra);
 };
 
 /// The model's supported DOFs, in order (whose reactions a load-driven path records).

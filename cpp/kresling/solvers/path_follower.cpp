@@ -57,8 +57,8 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     const int limit = increment.newton_limit > 0 ? increment.newton_limit : default_limit;
     const NewtonOutcome outcome =
         increment.damping == 1.0
-            ? newton_equilibrium(assembler, solver, trial, external, options.newton, limit,
-                                 options.extra)
+            ? control.correct(increment, assembler, solver, trial, external, options.newton,
+                              limit, options.extra)
             : damped_newton(assembler, solver, trial, options.newton, increment.damping);
     result.newton_iterations += outcome.iterations;
     return outcome;
@@ -112,7 +112,9 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
       failure = options.check(increment, trial, outcome);
       if (!failure.empty()) return false;
     }
-    PathStep step = record_step(assembler, trial, t_new, outcome, recorded, sign);
+    // Where the increment ended: t_new, unless the corrector solved for the parameter.
+    const double reached = increment.to;
+    PathStep step = record_step(assembler, trial, reached, outcome, recorded, sign);
     if (!finite_step(step)) {
       failure = kStepNotFinite;
       return false;
@@ -124,7 +126,7 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     u = trial;
     if (outcome.negative_eigenvalues >= 0) previous_negative = outcome.negative_eigenvalues;
     result.steps.push_back(std::move(step));
-    path_t.push_back(t_new);
+    path_t.push_back(reached);
     path_u.push_back(u);
     if (path_t.size() > 4) {  // the cubic's four points at most
       path_t.erase(path_t.begin());

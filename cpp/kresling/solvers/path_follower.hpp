@@ -1,12 +1,15 @@
 #pragma once
 /// \file path_follower.hpp
 /// The incremental driver every stepped path shares: displacement control (equal
-/// increments or MERLIN2's step control), force control, crease actuation (folding) and
-/// any other control (path_control.hpp). A step policy (step_policy.hpp) proposes each
-/// increment of the path parameter t in [0, 1]; each is a Newton solve of the control's
-/// model with its held DOFs and external force at the new t, from the previous equilibrium
-/// or an extrapolation along the path; the policy hears whether it was accepted. (Adaptive
-/// increments with dense output, adaptive_path.hpp, follow the same controls.)
+/// increments or MERLIN2's step control), force control, crease actuation (folding), the
+/// arm's cable ramps, MGDCM (mgdcm.hpp) and any other control (path_control.hpp). A step
+/// policy (step_policy.hpp) proposes each increment of the path parameter t; each is solved
+/// by the control's corrector (PathControl::correct: by default a Newton solve of the
+/// control's model with its held DOFs and external force at the new t; MGDCM's solves the
+/// parameter with the displacements), from the previous equilibrium or an extrapolation
+/// along the path. The follower records each converged increment, applies the caller's
+/// check and stop rule, and tells the policy whether it was accepted. (Adaptive increments
+/// with dense output, adaptive_path.hpp, follow the same controls.)
 
 #include <functional>
 #include <string>
@@ -24,7 +27,8 @@ struct FollowOptions {
   NewtonOptions newton;
   int max_bisections = 10;
   /// Each increment's start: 0 = the previous equilibrium, 1-3 = a linear, quadratic or
-  /// cubic extrapolation through the last 2-4 equilibria (see DisplacementControlOptions).
+  /// cubic extrapolation through the last 2-4 equilibria (see DisplacementControlOptions),
+  /// to the increment's prescribed end (not for a corrector that solves the parameter).
   int extrapolation = 0;
   /// > 0: Newton's budget per increment, and an increment needing that many iterations is
   /// rejected (MERLIN2's rule); 0: newton.max_iterations, and every converged increment is

@@ -3,7 +3,8 @@
 /// How the path follower (path_follower.hpp) chooses its increments: a step policy
 /// proposes the next increment from the last accepted state, hears whether it was
 /// accepted, and says how the path ended. Equal increments with bisection
-/// (increments.hpp) and MERLIN2's step control (merlin2_steps.hpp) are the policies.
+/// (increments.hpp), MERLIN2's step control (merlin2_steps.hpp), halving steps
+/// (halving_steps.hpp) and MGDCM's step factor (mgdcm.hpp) are the policies.
 
 #include <limits>
 #include <string>
@@ -17,7 +18,9 @@ class PathControl;
 /// One attempted increment of a path.
 struct Increment {
   double from = 0.0;  ///< path parameter of the accepted state it starts from
-  double to = 0.0;    ///< path parameter it tries to reach (the recorded load_factor)
+  /// path parameter it tries to reach (the recorded load_factor); a corrector that solves
+  /// the parameter (PathControl::correct, MGDCM's) sets it to where it converged
+  double to = 0.0;
   /// Its size in the policy's own measure (MERLIN2's step factor, in nominal increments):
   /// a control that accumulates its increments (DisplacementDrive's MERLIN2 mode) adds
   /// size times its nominal increment, exactly as MERLIN2 does.
