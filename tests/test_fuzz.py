@@ -44,9 +44,11 @@ def test_every_target_file_is_found():
 
 @pytest.mark.parametrize("path", TARGETS, ids=lambda path: path.stem)
 def test_fuzz(path):
+    # --show-capture=no: a failure's report is its traceback and falsifying example, not the
+    # thousands of log lines a long run captures (they would crowd it out of the tail kept).
     command = [sys.executable, "-X", "faulthandler", "-m", "pytest", "-q", "-p",
-               "no:cacheprovider", "--no-header", "-o", f"faulthandler_timeout={WATCHDOG - 15}",
-               str(path)]
+               "no:cacheprovider", "--no-header", "--show-capture=no", "-o",
+               f"faulthandler_timeout={WATCHDOG - 15}", str(path)]
     try:
         done = subprocess.run(command, cwd=ROOT, capture_output=True, text=True,
                               timeout=WATCHDOG, preexec_fn=_limit_memory,
