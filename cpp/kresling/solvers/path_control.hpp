@@ -11,9 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "kresling/assembly/assembler.hpp"
 #include "kresling/core/types.hpp"
 #include "kresling/model/model.hpp"
+#include "kresling/solvers/newton.hpp"
 #include "kresling/solvers/step_policy.hpp"
+#include "kresling/solvers/tangent_solver.hpp"
 
 namespace kresling::solvers {
 
@@ -62,6 +65,33 @@ class PathControl {
   virtual double monitored(const VectorX& forces, const VectorX& energies) const;
   /// What the path parameter is a fraction of, for messages ("the prescribed motion").
   virtual std::string parameter_name() const { return "the path"; }
+
+  // Hooks of a control that carries a state of its own along the path (a time integrator:
+  // velocity and acceleration). Each default leaves the follower's static behaviour.
+
+  /// Terms added to every solve of `increment` (a time step's inertia and damping, built
+  /// from the accepted state); nullptr: the follower's own (FollowOptions::extra). Called
+  /// once per attempt, before correct(); the terms live until the next call.
+  virtual ExtraTerms* extra_terms(const Increment& /*increment*/) { return nullptr; }
+  /// The corrector of an attempted increment from the start `u` (all DOFs, updated in
+  /// place) toward equilibrium under `external`: by default Newton's method
+  /// (newton_equilibrium with max_iterations and extra). A control may supply its own: an
+  /// implicit time step's chord iterations with a kept factorisation, an explicit step's
+  /// update (no solve at all).
+  virtual NewtonOutcome correct(const Increment& increment, assembly::Assembler& assembler,
+                                TangentSolver& solver, VectorX& u, const VectorX& external,
+                                const NewtonOptions& options, int max_iterations,
+                                ExtraTerms* extra);
+  /// Record a converged increment at u as a path step (record_step, the internal force at
+  /// u into `internal`); a control whose corrector already evaluated u may reuse that.
+  virtual PathStep record(assembly::Assembler& assembler, const VectorX& u, double t,
+                          const NewtonOutcome& outcome, const std::vector<Index>& recorded,
+                          double sign, VectorX& internal);
+  /// The increment was accepted at u (its recorded step and the internal force there),
+  /// before the stop rule is asked: a time control updates its velocity, acceleration and
+  /// energies here.
+  virtual void accepted(const Increment& /*increment*/, const VectorX& /*u*/,
+                        const PathStep& /*step*/, const VectorX& /*internal*/) {}
 };
 
 /// The model's supported DOFs, in order (whose reactions a load-driven path records).

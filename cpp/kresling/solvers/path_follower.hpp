@@ -7,6 +7,10 @@
 /// model with its held DOFs and external force at the new t, from the previous equilibrium
 /// or an extrapolation along the path; the policy hears whether it was accepted. (Adaptive
 /// increments with dense output, adaptive_path.hpp, follow the same controls.)
+/// Time integration is the same loop with time as the parameter (time_control.hpp): its
+/// control supplies each increment's extra terms (inertia and damping), its corrector and
+/// hears each accepted increment (PathControl's hooks), its policy halves failed steps
+/// (time_steps.hpp).
 
 #include <functional>
 #include <string>
