@@ -93,7 +93,7 @@ class CentralDifferenceControl final : public TimeControl {
       const double t = steps_.time_at(k_);
       u.noalias() += dt_ * half_;
       energies_ = assembler.assemble(u, force_, false);
-      next_load_ = load_.at(t, model_.num_dofs());
+      load_.at(t, model_.num_dofs(), next_load_);
       const double dw = 0.5 * dt_ * half_.dot(load_now_ + next_load_);
       work_ += dw;
       put_in_ += std::abs(dw);

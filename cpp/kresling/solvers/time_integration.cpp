@@ -41,25 +41,27 @@ class StepTerms final : public ExtraTerms {
   /// The step the terms are for [s].
   void set_step(double dt) { dt_ = dt; }
 
-  VectorX acceleration(const VectorX& u) const {
-    return (u - s_.u - dt_ * s_.v) / (beta_ * dt_ * dt_) - (0.5 / beta_ - 1.0) * s_.a;
+  // The acceleration, velocity and damping force at u, into a, v and c (buffers the
+  // caller keeps from step to step: a Newton iterate allocates nothing here).
+  void acceleration(const VectorX& u, VectorX& a) const {
+    a = (u - s_.u - dt_ * s_.v) / (beta_ * dt_ * dt_) - (0.5 / beta_ - 1.0) * s_.a;
   }
-  VectorX velocity(const VectorX& a) const {
-    return s_.v + dt_ * ((1.0 - gamma_) * s_.a + gamma_ * a);
+  void velocity(const VectorX& a, VectorX& v) const {
+    v = s_.v + dt_ * ((1.0 - gamma_) * s_.a + gamma_ * a);
   }
-  VectorX damping_force(const VectorX& v) const {
-    VectorX c = am_ * m_.cwiseProduct(v);
+  void damping_force(const VectorX& v, VectorX& c) {
+    c = am_ * m_.cwiseProduct(v);
     if (bk_ != 0.0) {
-      const VectorX kv = k0_.selfadjointView<Eigen::Lower>() * v;
-      c += bk_ * kv;
+      kv_.noalias() = k0_.selfadjointView<Eigen::Lower>() * v;
+      c += bk_ * kv_;
     }
-    return c;
   }
 
   void add_force(const VectorX& u, VectorX& force) override {
-    const VectorX a = acceleration(u);
-    const VectorX v = velocity(a);
-    force = (1.0 + alpha_) * (force + damping_force(v)) + m_.cwiseProduct(a) -
+    acceleration(u, a_);
+    velocity(a_, v_);
+    damping_force(v_, c_);
+    force = (1.0 + alpha_) * (force + c_) + m_.cwiseProduct(a_) -
             alpha_ * (s_.internal + s_.damping);
   }
   void add_tangent(const VectorX&, assembly::Workspace& w) override {
@@ -76,6 +78,7 @@ class StepTerms final : public ExtraTerms {
   double am_, bk_;
   const assembly::SparseMatrix& k0_;
   const std::vector<double>& k0_values_;
+  VectorX a_, v_, c_, kv_;  // add_force's buffers
 };
 
 void check_options(const TimeIntegrationOptions& o) {
@@ -133,7 +136,7 @@ class NewmarkControl final : public TimeControl {
   void advance(const Increment& increment, const VectorX&, VectorX& u,
                VectorX& external) override {
     const double dt = increment.size;
-    next_load_ = load_.at(increment.to, model_.num_dofs());
+    load_.at(increment.to, model_.num_dofs(), next_load_);
     external = (1.0 + alpha_) * next_load_ - alpha_ * s_.load;
     u = s_.u + dt * s_.v + (0.5 - beta_) * dt * dt * s_.a;  // the step's predictor
   }
@@ -157,7 +160,9 @@ class NewmarkControl final : public TimeControl {
     const double dt = increment.size;
     int chords = 0;
     if (chords_allowed_ && factorised_dt_ == dt) {
-      VectorX force, trial = u;
+      VectorX& force = chord_force_;
+      VectorX& trial = chord_trial_;
+      trial = u;
       double previous = INFINITY;
       while (chords < std::min(kChordIterations, options.max_iterations - 1)) {
         check_interrupt();
@@ -193,20 +198,21 @@ class NewmarkControl final : public TimeControl {
   // models): u_{n+1} - u_n times the mean damping and external forces.
   void accepted(const Increment& increment, const VectorX& u, const PathStep& step,
                 const VectorX& internal) override {
-    const VectorX a = terms_.acceleration(u);
-    const VectorX v = terms_.velocity(a);
-    const VectorX du = u - s_.u;
-    const VectorX damping = terms_.damping_force(v);
-    dissipated_ += 0.5 * du.dot(s_.damping + damping);
-    work_ += 0.5 * du.dot(s_.load + next_load_);
+    terms_.acceleration(u, a_);
+    terms_.velocity(a_, v_);
+    terms_.damping_force(v_, damping_);
+    du_ = u - s_.u;
+    dissipated_ += 0.5 * du_.dot(s_.damping + damping_);
+    work_ += 0.5 * du_.dot(s_.load + next_load_);
     s_.t = increment.to;
     s_.u = u;
-    s_.v = v;
-    s_.a = a;
+    s_.v.swap(v_);
+    s_.a.swap(a_);
     s_.internal = internal;
-    s_.damping = damping;
-    s_.load = next_load_;
-    record_motion(v, 0.5 * v.dot(masses_.cwiseProduct(v)), step.energy(), dissipated_, work_);
+    s_.damping.swap(damping_);
+    s_.load.swap(next_load_);
+    record_motion(s_.v, 0.5 * s_.v.dot(masses_.cwiseProduct(s_.v)), step.energy(), dissipated_,
+                  work_);
   }
 
  private:
@@ -216,6 +222,8 @@ class NewmarkControl final : public TimeControl {
   StepTerms terms_;
   bool chords_allowed_;
   VectorX next_load_;         // f(t_{n+1}) of the step under way
+  VectorX a_, v_, damping_, du_;  // an accepted step's, kept to allocate nothing per step
+  VectorX chord_force_, chord_trial_;  // the chord iterations
   double factorised_dt_ = 0;  // the dt whose effective tangent the solver holds (0: none)
   int negative_ = -1;         // the stability that factorisation reported
   double dissipated_ = 0.0, work_ = 0.0;
@@ -247,13 +255,18 @@ void check_motion_input(const model::Model& model, const VectorX& masses, const 
 }
 
 VectorX TimeLoad::at(double t, Index n) const {
-  VectorX out = VectorX::Zero(n);
+  VectorX out;
+  at(t, n, out);
+  return out;
+}
+
+void TimeLoad::at(double t, Index n, VectorX& out) const {
+  out.setZero(n);
   for (const auto& term : terms) {
     const double f = term.factor ? term.factor(t) : 1.0;
     if (!std::isfinite(f)) throw std::invalid_argument("load_factor: not finite at t = " + format_number(t));
     out += f * term.forces;
   }
-  return out;
 }
 
 TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
@@ -289,18 +302,28 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
   for (Index i = 0; i < n; ++i) {
     if (model.fixed()[i]) s.u[i] = s.v[i] = 0.0;
   }
-  // The initial stiffness: of every DOF (for C v) and in the solver's pattern (its tangent).
-  assembly::Workspace full(model, assembly::all_dofs(n), 0.0, assembly::Storage::Lower);
+  // Stiffness-proportional damping needs the initial stiffness: of every DOF (for C v) and
+  // in the solver's pattern (its share of the tangent). Without it neither is built (a
+  // workspace of every DOF and two tangent assemblies: a small model's run pays for them
+  // as for several steps).
+  const bool stiffness_damped = options.stiffness_damping != 0.0;
   VectorX force;
-  assembly::assemble(model, full, s.u, force, true);
-  const assembly::SparseMatrix k0 = full.matrix();
-  assembler.assemble(s.u, force, true);
-  const std::vector<double> k0_values(assembler.matrix().valuePtr(),
-                                      assembler.matrix().valuePtr() + assembler.matrix().nonZeros());
+  assembly::SparseMatrix k0;
+  if (stiffness_damped) {
+    assembly::Workspace full(model, assembly::all_dofs(n), 0.0, assembly::Storage::Lower);
+    assembly::assemble(model, full, s.u, force, true);
+    k0 = full.matrix();
+  }
+  assembler.assemble(s.u, force, stiffness_damped);
+  std::vector<double> k0_values;
+  if (stiffness_damped) {
+    k0_values.assign(assembler.matrix().valuePtr(),
+                     assembler.matrix().valuePtr() + assembler.matrix().nonZeros());
+  }
   s.internal = force;
   s.load = time_load.at(0.0, n);
   s.damping = options.mass_damping * masses.cwiseProduct(s.v);
-  if (options.stiffness_damping != 0.0) {
+  if (stiffness_damped) {
     const VectorX kv = k0.selfadjointView<Eigen::Lower>() * s.v;
     s.damping += options.stiffness_damping * kv;
   }

@@ -63,6 +63,8 @@ struct TimeLoad {
   /// The load at t [N], n entries (zero without terms); throws std::invalid_argument when
   /// a factor is not finite.
   VectorX at(double t, Index n) const;
+  /// The same into `out` (resized to n entries), which a run reuses from step to step.
+  void at(double t, Index n, VectorX& out) const;
 };
 
 /// The checks every integrator makes of its input: masses, each load term's forces, u0 and
