@@ -82,7 +82,7 @@ class CentralDifferenceControl final : public TimeControl {
   }
 
   // The steps of the increment, from the accepted u (trial, updated in place).
-  NewtonOutcome correct(const Increment& increment, assembly::Assembler& assembler,
+  NewtonOutcome correct(Increment& increment, assembly::Assembler& assembler,
                         TangentSolver&, VectorX& u, const VectorX&, const NewtonOptions&, int,
                         ExtraTerms*) override {
     NewtonOutcome out;

@@ -9,19 +9,6 @@
 
 namespace kresling::solvers {
 
-NewtonOutcome PathControl::correct(const Increment&, assembly::Assembler& assembler,
-                                   TangentSolver& solver, VectorX& u, const VectorX& external,
-                                   const NewtonOptions& options, int max_iterations,
-                                   ExtraTerms* extra) {
-  return newton_equilibrium(assembler, solver, u, external, options, max_iterations, extra);
-}
-
-PathStep PathControl::record(assembly::Assembler& assembler, const VectorX& u, double t,
-                             const NewtonOutcome& outcome, const std::vector<Index>& recorded,
-                             double sign, VectorX& internal) {
-  return record_step(assembler, u, t, outcome, recorded, sign, &internal);
-}
-
 std::vector<Index> supported_dofs(const model::Model& model) {
   std::vector<Index> dofs;
   for (Index i = 0; i < model.num_dofs(); ++i) {
@@ -62,6 +49,19 @@ double PathControl::monitored(const VectorX&, const VectorX& energies) const {
   double sum = 0.0;
   for (Index i = 0; i < energies.size(); ++i) sum += energies[i];
   return sum;
+}
+
+NewtonOutcome PathControl::correct(Increment&, assembly::Assembler& assembler,
+                                   TangentSolver& solver, VectorX& u, const VectorX& external,
+                                   const NewtonOptions& options, int max_iterations,
+                                   ExtraTerms* extra) {
+  return newton_equilibrium(assembler, solver, u, external, options, max_iterations, extra);
+}
+
+PathStep PathControl::record(assembly::Assembler& assembler, const VectorX& u, double t,
+                             const NewtonOutcome& outcome, const std::vector<Index>& recorded,
+                             double sign, VectorX& internal) {
+  return record_step(assembler, u, t, outcome, recorded, sign, &internal);
 }
 
 LoadControl::LoadControl(const model::Model& model, VectorX forces)

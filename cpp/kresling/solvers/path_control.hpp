@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "kresling/assembly/assembler.hpp"
 #include "kresling/core/types.hpp"
+#include "kresling/assembly/assembler.hpp"
 #include "kresling/model/model.hpp"
 #include "kresling/solvers/newton.hpp"
 #include "kresling/solvers/step_policy.hpp"
@@ -73,12 +73,14 @@ class PathControl {
   /// from the accepted state); nullptr: the follower's own (FollowOptions::extra). Called
   /// once per attempt, before correct(); the terms live until the next call.
   virtual ExtraTerms* extra_terms(const Increment& /*increment*/) { return nullptr; }
-  /// The corrector of an attempted increment from the start `u` (all DOFs, updated in
-  /// place) toward equilibrium under `external`: by default Newton's method
-  /// (newton_equilibrium with max_iterations and extra). A control may supply its own: an
-  /// implicit time step's chord iterations with a kept factorisation, an explicit step's
-  /// update (no solve at all).
-  virtual NewtonOutcome correct(const Increment& increment, assembly::Assembler& assembler,
+  /// The increment's corrector: iterate from `u` (all DOFs: the accepted state or a
+  /// predictor, with advance() applied) to the equilibrium that ends `increment`, with at
+  /// most `max_iterations` iterations (0: options.max_iterations) and the optional `extra`
+  /// terms (extra_terms(), else the follower's). By default Newton at the prescribed
+  /// parameter under `external` (newton_equilibrium). A control may supply its own: an
+  /// implicit time step's chord iterations with the factorisation kept from the previous
+  /// step, an explicit step's update (no solve at all).
+  virtual NewtonOutcome correct(Increment& increment, assembly::Assembler& assembler,
                                 TangentSolver& solver, VectorX& u, const VectorX& external,
                                 const NewtonOptions& options, int max_iterations,
                                 ExtraTerms* extra);

@@ -154,7 +154,7 @@ class NewmarkControl final : public TimeControl {
   // drifted) or after kChordIterations, Newton's method takes over from there. A chord
   // correction below the tolerance ends the step: its contraction (below 1/2) leaves an
   // error smaller than the correction itself.
-  NewtonOutcome correct(const Increment& increment, assembly::Assembler& assembler,
+  NewtonOutcome correct(Increment& increment, assembly::Assembler& assembler,
                         TangentSolver& solver, VectorX& u, const VectorX& external,
                         const NewtonOptions& options, int, ExtraTerms* extra) override {
     const double dt = increment.size;
