@@ -43,7 +43,9 @@ struct FollowOptions {
   /// or state condition (the arm's: stable, every cell in its state).
   std::function<std::string(const Increment&, const VectorX& u, const NewtonOutcome&)> check;
   StopRule stop;                  ///< ends the path early (completed) when it returns true
-  ExtraTerms* extra = nullptr;    ///< terms added to every Newton solve (optional)
+  /// Terms added to every Newton solve (optional), unless the control supplies an
+  /// increment's own (PathControl::extra_terms: a time step's inertia and damping).
+  ExtraTerms* extra = nullptr;
 };
 
 /// Follow `control` with the increments of `policy` from `u` (all DOFs; the accepted state at t = 0,
