@@ -9,6 +9,9 @@
 
 #include "kresling/solvers/halving_steps.hpp"
 #include "kresling/solvers/merlin2_steps.hpp"
+#include "kresling/solvers/time_control.hpp"
+#include "kresling/solvers/time_steps.hpp"
+#include "oscillator_test_helpers.hpp"
 
 using namespace kresling;
 using solvers::Increment;
@@ -89,4 +92,83 @@ TEST(StepPolicies, HalvingStepsHalveDoubleAndEnd) {
   EXPECT_FALSE(policy.next(inc));
   EXPECT_EQ(policy.failed_at(), 0.1875);
   EXPECT_EQ(policy.reason(), "d");
+}
+
+// Time steps of the implicit schemes: the nominal dt, the last one cut to end at the
+// duration; halved on failure, grown back by 2 (to dt at most) on success; a failure whose
+// halving would go below dt / 2^max_halvings ends the run, worded by the time control at
+// the last accepted time. Steps are powers of two here, so every sum is exact.
+TEST(StepPolicies, HalvedTimeStepsHalveGrowBackAndEnd) {
+  solvers::HalvedTimeSteps policy(0.25, 0.625, 2);
+  Increment inc;
+  ASSERT_TRUE(policy.next(inc));
+  EXPECT_EQ(inc.from, 0.0);
+  EXPECT_EQ(inc.to, 0.25);
+  EXPECT_EQ(inc.size, 0.25);
+  EXPECT_TRUE(policy.rejected(inc, "a"));
+  ASSERT_TRUE(policy.next(inc));
+  EXPECT_EQ(inc.size, 0.125);
+  policy.accepted(inc);
+  ASSERT_TRUE(policy.next(inc));
+  EXPECT_EQ(inc.size, 0.25);  // grown back to the nominal step
+  EXPECT_EQ(inc.to, 0.375);
+  policy.accepted(inc);
+  ASSERT_TRUE(policy.next(inc));
+  EXPECT_EQ(inc.size, 0.25);  // 0.375 + 0.25 = 0.625: the duration
+  policy.accepted(inc);
+  EXPECT_FALSE(policy.next(inc));
+  solvers::PathResult done;
+  const model::Model model = test::oscillator(1.0);
+  const solvers::TimeLoad load;
+  solvers::TimeControl control(model, load);
+  policy.finish(control, done);
+  EXPECT_TRUE(done.completed);
+
+  solvers::HalvedTimeSteps failing(0.25, 1.0, 1);
+  ASSERT_TRUE(failing.next(inc));
+  EXPECT_TRUE(failing.rejected(inc, "a"));   // 0.125 = 0.25 / 2^1: still allowed
+  ASSERT_TRUE(failing.next(inc));
+  EXPECT_FALSE(failing.rejected(inc, "b"));  // 0.0625 would be below it
+  EXPECT_FALSE(failing.next(inc));
+  solvers::PathResult failed;
+  failed.attempted_increments = 2;
+  failing.finish(control, failed);
+  EXPECT_FALSE(failed.completed);
+  EXPECT_EQ(failed.failed_increment, 2);
+  EXPECT_EQ(failed.message, "time step at t = 0 s failed after 1 halvings: b");
+}
+
+// The explicit scheme's steps: dt = duration / steps, grouped `group` to an increment (the
+// last the remainder), the last ending at the duration itself; a rejection ends the run with
+// the step's reason.
+TEST(StepPolicies, FixedTimeStepsGroupStepsAndEndAtTheDuration) {
+  const double duration = 0.7;  // dt = 0.1 is not exact in binary: the end must be 0.7 itself
+  solvers::FixedTimeSteps policy(7, duration, 3);
+  Increment inc;
+  std::vector<double> sizes, ends;
+  while (policy.next(inc)) {
+    sizes.push_back(inc.size);
+    ends.push_back(inc.to);
+    policy.accepted(inc);
+  }
+  EXPECT_EQ(sizes, (std::vector<double>{3.0, 3.0, 1.0}));
+  ASSERT_EQ(ends.size(), 3u);
+  EXPECT_EQ(ends[0], 3 * (duration / 7));
+  EXPECT_EQ(ends[2], duration);
+  const model::Model model = test::oscillator(1.0);
+  const solvers::TimeLoad load;
+  solvers::TimeControl control(model, load);
+  solvers::PathResult done;
+  policy.finish(control, done);
+  EXPECT_TRUE(done.completed);
+
+  solvers::FixedTimeSteps unstable(7, duration, 3);
+  ASSERT_TRUE(unstable.next(inc));
+  EXPECT_FALSE(unstable.rejected(inc, "unstable"));
+  EXPECT_FALSE(unstable.next(inc));
+  solvers::PathResult failed;
+  failed.attempted_increments = 1;
+  unstable.finish(control, failed);
+  EXPECT_FALSE(failed.completed);
+  EXPECT_EQ(failed.message, "unstable");
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -10,7 +11,10 @@
 #include "kresling/core/interrupt.hpp"
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/newton.hpp"
+#include "kresling/solvers/path_follower.hpp"
 #include "kresling/solvers/stable_time_step.hpp"
+#include "kresling/solvers/time_control.hpp"
+#include "kresling/solvers/time_steps.hpp"
 
 namespace kresling::solvers {
 
@@ -45,6 +49,131 @@ void refuse_unstable(const ExplicitOptions& o, const StableStep& stable) {
       "step, or use an implicit scheme");
 }
 
+// Time as the path parameter of the central differences: each increment is a group of
+// steps (up to the next recorded one), taken by the corrector with one internal-force
+// evaluation each (the workspace assembles every DOF, for the supports' reactions).
+// An explicit step cannot be retried smaller, so the corrector moves the scheme's state
+// (half-step velocity, load, energies) on as it goes; a step whose state stops being
+// finite or whose energy grew past kEnergyGrowthLimit times what was put in fails the
+// increment, which ends the run, and is kept as its last recorded step (stopped_step).
+class CentralDifferenceControl final : public TimeControl {
+ public:
+  CentralDifferenceControl(const model::Model& model, const TimeLoad& load,
+                           const VectorX& masses, const ExplicitOptions& options,
+                           const FixedTimeSteps& steps, double dt, VectorX inverse_mass,
+                           const assembly::SparseMatrix& k0)
+      : TimeControl(model, load), o_(options), steps_(steps), dt_(dt), masses_(masses),
+        inverse_mass_(std::move(inverse_mass)), k0_(k0) {}
+
+  // The start (u, v) with the internal force and energies at u: the first half step.
+  void start(const VectorX& v, const VectorX& force, const assembly::Energies& energies) {
+    const Index n = model_.num_dofs();
+    force_ = force;
+    energies_ = energies;
+    load_now_ = load_.at(0.0, n);
+    next_load_.resize(n);
+    cv_.resize(n);
+    kv_.resize(n);
+    damping(v);
+    a_ = inverse_mass_.cwiseProduct(load_now_ - force_ - cv_);
+    half_ = v + 0.5 * dt_ * a_;  // v_{1/2}
+    const double start_energy = 0.5 * v.dot(masses_.cwiseProduct(v)) + energies_.total();
+    put_in_ = std::abs(start_energy);
+  }
+
+  // The steps of the increment, from the accepted u (trial, updated in place).
+  NewtonOutcome correct(Increment& increment, assembly::Assembler& assembler,
+                        TangentSolver&, VectorX& u, const VectorX&, const NewtonOptions&, int,
+                        ExtraTerms*) override {
+    NewtonOutcome out;
+    const long long last = k_ + static_cast<long long>(increment.size);
+    while (k_ < last) {
+      ++k_;
+      if ((k_ & 63) == 0) check_interrupt();
+      const double t = steps_.time_at(k_);
+      u.noalias() += dt_ * half_;
+      energies_ = assembler.assemble(u, force_, false);
+      load_.at(t, model_.num_dofs(), next_load_);
+      const double dw = 0.5 * dt_ * half_.dot(load_now_ + next_load_);
+      work_ += dw;
+      put_in_ += std::abs(dw);
+      damping(half_);
+      dissipated_ += dt_ * half_.dot(cv_);
+      a_ = inverse_mass_.cwiseProduct(next_load_ - force_ - cv_);
+      v_ = half_ + 0.5 * dt_ * a_;
+      half_ = v_ + 0.5 * dt_ * a_;
+      load_now_.swap(next_load_);
+      kinetic_ = 0.5 * v_.dot(masses_.cwiseProduct(v_));
+      const double strain = energies_.total();
+      const bool finite = std::isfinite(kinetic_) && std::isfinite(strain) && u.allFinite();
+      // The energy at a whole step is half a step ahead of the work summed so far (v_n
+      // holds dt a_n / 2 of the current load): that half step's work is in play too.
+      const double ahead = 0.5 * dt_ * std::abs(v_.dot(load_now_));
+      const bool grown = kinetic_ + strain > kEnergyGrowthLimit * (put_in_ + ahead);
+      if (!finite || grown) {
+        stopped_step = step_at(t, u);
+        record_motion(v_, kinetic_, strain, dissipated_, work_);
+        out.failure = "unstable at t = " + format_number(t) + " s: " +
+                      (finite ? "the energy grew to " + format_number(kinetic_ + strain) +
+                                    " N mm, over " + format_number(kEnergyGrowthLimit) +
+                                    " times the " + format_number(put_in_ + ahead) +
+                                    " N mm put in (the tangent stiffened beyond the start's "
+                                    "stable step: take a smaller time_step)"
+                              : std::string("the state is not finite"));
+        return out;
+      }
+    }
+    out.converged = true;
+    return out;
+  }
+
+  // The step just taken, from its own evaluation (no second assembly).
+  PathStep record(assembly::Assembler&, const VectorX& u, double t, const NewtonOutcome&,
+                  const std::vector<Index>&, double, VectorX&) override {
+    return step_at(t, u);
+  }
+
+  void accepted(const Increment&, const VectorX&, const PathStep&, const VectorX&) override {
+    record_motion(v_, kinetic_, energies_.total(), dissipated_, work_);
+  }
+
+  /// Steps taken.
+  long long steps_taken() const { return k_; }
+  /// The step that ended the run as unstable, if one did.
+  std::optional<PathStep> stopped_step;
+
+ private:
+  void damping(const VectorX& velocity) {
+    cv_.noalias() = o_.mass_damping * masses_.cwiseProduct(velocity);
+    if (o_.stiffness_damping != 0.0) {
+      kv_.noalias() = k0_.selfadjointView<Eigen::Lower>() * velocity;
+      cv_ += o_.stiffness_damping * kv_;
+    }
+  }
+  PathStep step_at(double t, const VectorX& u) const {
+    PathStep step;
+    step.load_factor = t;
+    step.displacement = u;
+    step.constraint_force.resize(static_cast<Index>(supported_.size()));
+    for (std::size_t i = 0; i < supported_.size(); ++i) {
+      step.constraint_force[static_cast<Index>(i)] = force_[supported_[i]];
+    }
+    step.energies = energies_.vector();
+    return step;
+  }
+
+  const ExplicitOptions& o_;
+  const FixedTimeSteps& steps_;
+  double dt_;
+  const VectorX& masses_;
+  VectorX inverse_mass_;
+  const assembly::SparseMatrix& k0_;
+  long long k_ = 0;
+  VectorX force_, load_now_, next_load_, cv_, kv_, a_, v_, half_;
+  assembly::Energies energies_;
+  double kinetic_ = 0.0, work_ = 0.0, dissipated_ = 0.0, put_in_ = 0.0;
+};
+
 }  // namespace
 
 TimeHistory integrate_explicit(const model::Model& model, const VectorX& masses,
@@ -63,11 +192,9 @@ TimeHistory integrate_explicit(const model::Model& model, const VectorX& masses,
   const Index n = model.num_dofs();
   VectorX u = u0.size() ? u0 : VectorX::Zero(n), v = v0.size() ? v0 : VectorX::Zero(n);
   VectorX inverse_mass = VectorX::Zero(n);
-  std::vector<Index> supported;
   for (Index i = 0; i < n; ++i) {
     if (model.fixed()[i]) {
       u[i] = v[i] = 0.0;
-      supported.push_back(i);
     } else {
       inverse_mass[i] = 1.0 / masses[i];
     }
@@ -86,82 +213,29 @@ TimeHistory integrate_explicit(const model::Model& model, const VectorX& masses,
   assembly::Workspace workspace(model, assembly::all_dofs(n), 0.0, assembly::Storage::Lower);
   assembly::Assembler assembler(model, workspace);
   VectorX force;
-  assembly::Energies energies = assembler.assemble(u, force, o.stiffness_damping != 0.0);
+  const assembly::Energies energies = assembler.assemble(u, force, o.stiffness_damping != 0.0);
   const assembly::SparseMatrix k0 = o.stiffness_damping != 0.0 ? assembler.matrix()
                                                                : assembly::SparseMatrix();
-  VectorX cv(n), kv(n);
-  auto damping = [&](const VectorX& velocity) {
-    cv.noalias() = o.mass_damping * masses.cwiseProduct(velocity);
-    if (o.stiffness_damping != 0.0) {
-      kv.noalias() = k0.selfadjointView<Eigen::Lower>() * velocity;
-      cv += o.stiffness_damping * kv;
-    }
-  };
-
-  TimeHistory h;
+  FixedTimeSteps policy(steps, o.duration, o.record_every);
+  CentralDifferenceControl control(model, time_load, masses, o, policy, dt,
+                                   std::move(inverse_mass), k0);
+  control.start(v, force, energies);
+  TangentSolver unused;  // no solves: the corrector is the explicit update
+  FollowOptions follow;
+  follow.stop = o.stop;
+  PathResult path;
+  follow_path(control, assembler, unused, u, policy, follow, path);
+  // The history counts steps, not the increments (recorded steps) the follower counted.
+  path.attempted_increments = static_cast<int>(std::min<long long>(control.steps_taken(),
+                                                                   2147483647LL));
+  if (control.stopped_step) {
+    path.steps.push_back(std::move(*control.stopped_step));
+    path.failed_increment = path.attempted_increments;
+  }
+  TimeHistory h = std::move(control.history);
+  h.path = std::move(path);
   h.stable_time_step = stable.time_step;
   h.time_step = dt;
-  h.path.constraint_dofs = supported;
-  h.path.families = family_names(model);
-  VectorX load = time_load.at(0.0, n), next_load(n);
-  damping(v);
-  VectorX a = inverse_mass.cwiseProduct(load - force - cv);
-  VectorX half = v + 0.5 * dt * a;  // v_{1/2}
-  const double start_energy = 0.5 * v.dot(masses.cwiseProduct(v)) + energies.total();
-  double work = 0.0, dissipated = 0.0, put_in = std::abs(start_energy);
-  for (long long k = 1; k <= steps; ++k) {
-    if ((k & 63) == 0) check_interrupt();
-    const double t = (k == steps) ? o.duration : static_cast<double>(k) * dt;
-    u.noalias() += dt * half;
-    energies = assembler.assemble(u, force, false);
-    next_load = time_load.at(t, n);
-    const double dw = 0.5 * dt * half.dot(load + next_load);
-    work += dw;
-    put_in += std::abs(dw);
-    damping(half);
-    dissipated += dt * half.dot(cv);
-    a = inverse_mass.cwiseProduct(next_load - force - cv);
-    v = half + 0.5 * dt * a;
-    half = v + 0.5 * dt * a;
-    load.swap(next_load);
-    const double kinetic = 0.5 * v.dot(masses.cwiseProduct(v)), strain = energies.total();
-    const bool finite = std::isfinite(kinetic) && std::isfinite(strain) && u.allFinite();
-    // The energy at a whole step is half a step ahead of the work summed so far (v_n holds
-    // dt a_n / 2 of the current load): that half step's work is in play too.
-    const double ahead = 0.5 * dt * std::abs(v.dot(load));
-    const bool grown = kinetic + strain > kEnergyGrowthLimit * (put_in + ahead);
-    const bool last = k == steps || !finite || grown;
-    if (last || k % o.record_every == 0) {
-      PathStep step;
-      step.load_factor = t;
-      step.displacement = u;
-      step.constraint_force.resize(static_cast<Index>(supported.size()));
-      for (std::size_t i = 0; i < supported.size(); ++i) {
-        step.constraint_force[static_cast<Index>(i)] = force[supported[i]];
-      }
-      step.energies = energies.vector();
-      h.path.steps.push_back(std::move(step));
-      h.velocity.push_back(v);
-      h.kinetic.push_back(kinetic);
-      h.strain.push_back(strain);
-      h.dissipated.push_back(dissipated);
-      h.work.push_back(work);
-    }
-    h.path.attempted_increments = static_cast<int>(std::min<long long>(k, 2147483647LL));
-    if (!finite || grown) {
-      h.path.failed_increment = h.path.attempted_increments;
-      h.path.message = "unstable at t = " + format_number(t) + " s: " +
-                       (finite ? "the energy grew to " + format_number(kinetic + strain) +
-                                     " N mm, over " + format_number(kEnergyGrowthLimit) +
-                                     " times the " + format_number(put_in + ahead) +
-                                     " N mm put in (the tangent stiffened beyond the start's "
-                                     "stable step: take a smaller time_step)"
-                              : std::string("the state is not finite"));
-      return h;
-    }
-    if (o.stop && (last || k % o.record_every == 0) && o.stop(h.path.steps.back())) break;
-  }
-  h.path.completed = true;
   return h;
 }
 

@@ -10,7 +10,10 @@
 /// cos(w_h dt) = 1 - (w dt)^2 / 2. The damping force uses the velocity half a step back
 /// (C = alpha M + beta K0 need not be diagonal), first order in it. Each step evaluates the
 /// internal force once: no tangent, no factorisation; the price is a step at most
-/// stable_time_step.hpp's dt_stable, which a larger `time_step` is refused for.
+/// stable_time_step.hpp's dt_stable, which a larger `time_step` is refused for. The run is
+/// the path follower (path_follower.hpp) with time as its parameter (time_control.hpp),
+/// FixedTimeSteps (time_steps.hpp) grouping the steps between recorded ones, and the
+/// explicit update as each increment's corrector.
 ///
 /// Energies per step as for the implicit schemes (time_integration.hpp): kinetic, stored,
 /// dissipated (sum of dt v_{n+1/2}^T C v_{n+1/2}) and the loads' work (trapezoidal in u);

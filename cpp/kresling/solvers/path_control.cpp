@@ -58,6 +58,12 @@ NewtonOutcome PathControl::correct(Increment&, assembly::Assembler& assembler,
   return newton_equilibrium(assembler, solver, u, external, options, max_iterations, extra);
 }
 
+PathStep PathControl::record(assembly::Assembler& assembler, const VectorX& u, double t,
+                             const NewtonOutcome& outcome, const std::vector<Index>& recorded,
+                             double sign, VectorX& internal) {
+  return record_step(assembler, u, t, outcome, recorded, sign, &internal);
+}
+
 LoadControl::LoadControl(const model::Model& model, VectorX forces)
     : model_(model), forces_(std::move(forces)) {}
 

@@ -67,17 +67,38 @@ class PathControl {
   virtual double monitored(const VectorX& forces, const VectorX& energies) const;
   /// What the path parameter is a fraction of, for messages ("the prescribed motion").
   virtual std::string parameter_name() const { return "the path"; }
+
+  // Hooks of a control that carries a state of its own along the path (a time integrator:
+  // velocity and acceleration), or solves its parameter (MGDCM). Each default leaves the
+  // follower's static behaviour.
+
+  /// Terms added to every solve of `increment` (a time step's inertia and damping, built
+  /// from the accepted state); nullptr: the follower's own (FollowOptions::extra). Called
+  /// once per attempt, before correct(); the terms live until the next call.
+  virtual ExtraTerms* extra_terms(const Increment& /*increment*/) { return nullptr; }
   /// The increment's corrector: iterate from `u` (all DOFs: the accepted state or a
   /// predictor, with advance() applied) to the equilibrium that ends `increment`, with at
   /// most `max_iterations` iterations (0: options.max_iterations) and the optional `extra`
-  /// terms. By default Newton at the prescribed parameter under `external`
-  /// (newton_equilibrium). A control whose parameter is an unknown of each increment (MGDCM,
-  /// an arc-length method) solves it with the displacements instead and sets increment.to
-  /// to where it converged: the step records that parameter and the policy hears it.
+  /// terms (extra_terms(), else the follower's). By default Newton at the prescribed
+  /// parameter under `external` (newton_equilibrium). A control may supply its own: MGDCM's
+  /// (an arc-length method) solves the parameter with the displacements and sets
+  /// increment.to to where it converged (the step records that parameter and the policy
+  /// hears it); an implicit time step's chord iterations keep the factorisation from the
+  /// previous step; an explicit step's update solves nothing.
   virtual NewtonOutcome correct(Increment& increment, assembly::Assembler& assembler,
                                 TangentSolver& solver, VectorX& u, const VectorX& external,
                                 const NewtonOptions& options, int max_iterations,
                                 ExtraTerms* extra);
+  /// Record a converged increment at u as a path step (record_step, the internal force at
+  /// u into `internal`); a control whose corrector already evaluated u may reuse that.
+  virtual PathStep record(assembly::Assembler& assembler, const VectorX& u, double t,
+                          const NewtonOutcome& outcome, const std::vector<Index>& recorded,
+                          double sign, VectorX& internal);
+  /// The increment was accepted at u (its recorded step and the internal force there),
+  /// before the stop rule is asked: a time control updates its velocity, acceleration and
+  /// energies here.
+  virtual void accepted(const Increment& /*increment*/, const VectorX& /*u*/,
+                        const PathStep& /*step*/, const VectorX& /*internal*/) {}
 };
 
 /// The model's supported DOFs, in order (whose reactions a load-driven path records).

@@ -55,17 +55,22 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
   auto solve_at = [&](VectorX& trial) {
     control.advance(increment, u, trial, external);
     const int limit = increment.newton_limit > 0 ? increment.newton_limit : default_limit;
+    ExtraTerms* own = control.extra_terms(increment);
     const NewtonOutcome outcome =
         increment.damping == 1.0
             ? control.correct(increment, assembler, solver, trial, external, options.newton,
-                              limit, options.extra)
+                              limit, own ? own : options.extra)
             : damped_newton(assembler, solver, trial, options.newton, increment.damping);
     result.newton_iterations += outcome.iterations;
     return outcome;
   };
-  // The last accepted points of the path, for the extrapolated starting guess.
+  // The last accepted points of the path, for the extrapolated starting guess (kept only
+  // when extrapolating).
+  const bool extrapolating = options.extrapolation > 0;
   std::vector<double> path_t{0.0};
-  std::vector<VectorX> path_u{u};
+  std::vector<VectorX> path_u;
+  if (extrapolating) path_u.push_back(u);
+  VectorX internal;  // the internal force at an accepted increment's end (control.accepted)
   int previous_negative = 0;  // stability of the last accepted equilibrium
   // The secant start's last two equilibria: the one before u and the increment between.
   VectorX previous_u;
@@ -114,7 +119,7 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     }
     // Where the increment ended: t_new, unless the corrector solved for the parameter.
     const double reached = increment.to;
-    PathStep step = record_step(assembler, trial, reached, outcome, recorded, sign);
+    PathStep step = control.record(assembler, trial, reached, outcome, recorded, sign, internal);
     if (!finite_step(step)) {
       failure = kStepNotFinite;
       return false;
@@ -126,11 +131,14 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     u = trial;
     if (outcome.negative_eigenvalues >= 0) previous_negative = outcome.negative_eigenvalues;
     result.steps.push_back(std::move(step));
-    path_t.push_back(reached);
-    path_u.push_back(u);
-    if (path_t.size() > 4) {  // the cubic's four points at most
-      path_t.erase(path_t.begin());
-      path_u.erase(path_u.begin());
+    control.accepted(increment, u, result.steps.back(), internal);
+    if (extrapolating) {
+      path_t.push_back(reached);
+      path_u.push_back(u);
+      if (path_t.size() > 4) {  // the cubic's four points at most
+        path_t.erase(path_t.begin());
+        path_u.erase(path_u.begin());
+      }
     }
     return true;
   };

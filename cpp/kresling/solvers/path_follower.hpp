@@ -10,6 +10,10 @@
 /// along the path. The follower records each converged increment, applies the caller's
 /// check and stop rule, and tells the policy whether it was accepted. (Adaptive increments
 /// with dense output, adaptive_path.hpp, follow the same controls.)
+/// Time integration is the same loop with time as the parameter (time_control.hpp): its
+/// control supplies each increment's extra terms (inertia and damping), its corrector and
+/// hears each accepted increment (PathControl's hooks), its policy halves failed steps
+/// (time_steps.hpp).
 
 #include <functional>
 #include <string>
@@ -43,7 +47,9 @@ struct FollowOptions {
   /// or state condition (the arm's: stable, every cell in its state).
   std::function<std::string(const Increment&, const VectorX& u, const NewtonOutcome&)> check;
   StopRule stop;                  ///< ends the path early (completed) when it returns true
-  ExtraTerms* extra = nullptr;    ///< terms added to every Newton solve (optional)
+  /// Terms added to every Newton solve (optional), unless the control supplies an
+  /// increment's own (PathControl::extra_terms: a time step's inertia and damping).
+  ExtraTerms* extra = nullptr;
 };
 
 /// Follow `control` with the increments of `policy` from `u` (all DOFs; the accepted state at t = 0,

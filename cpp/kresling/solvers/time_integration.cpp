@@ -11,7 +11,9 @@
 #include "kresling/core/interrupt.hpp"
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/newton.hpp"
-#include "kresling/solvers/rigid_body.hpp"
+#include "kresling/solvers/path_follower.hpp"
+#include "kresling/solvers/time_control.hpp"
+#include "kresling/solvers/time_steps.hpp"
 
 namespace kresling::solvers {
 
@@ -30,31 +32,36 @@ struct StepStart {
 // model's equilibrium: Newton then solves the step's effective equation (time_integration.hpp).
 class StepTerms final : public ExtraTerms {
  public:
-  StepTerms(const StepStart& start, double dt, double alpha, double beta, double gamma,
+  StepTerms(const StepStart& start, double alpha, double beta, double gamma,
             const VectorX& masses, double mass_damping, double stiffness_damping,
             const assembly::SparseMatrix& k0_full, const std::vector<double>& k0_values)
-      : s_(start), dt_(dt), alpha_(alpha), beta_(beta), gamma_(gamma), m_(masses),
+      : s_(start), alpha_(alpha), beta_(beta), gamma_(gamma), m_(masses),
         am_(mass_damping), bk_(stiffness_damping), k0_(k0_full), k0_values_(k0_values) {}
 
-  VectorX acceleration(const VectorX& u) const {
-    return (u - s_.u - dt_ * s_.v) / (beta_ * dt_ * dt_) - (0.5 / beta_ - 1.0) * s_.a;
+  /// The step the terms are for [s].
+  void set_step(double dt) { dt_ = dt; }
+
+  // The acceleration, velocity and damping force at u, into a, v and c (buffers the
+  // caller keeps from step to step: a Newton iterate allocates nothing here).
+  void acceleration(const VectorX& u, VectorX& a) const {
+    a = (u - s_.u - dt_ * s_.v) / (beta_ * dt_ * dt_) - (0.5 / beta_ - 1.0) * s_.a;
   }
-  VectorX velocity(const VectorX& a) const {
-    return s_.v + dt_ * ((1.0 - gamma_) * s_.a + gamma_ * a);
+  void velocity(const VectorX& a, VectorX& v) const {
+    v = s_.v + dt_ * ((1.0 - gamma_) * s_.a + gamma_ * a);
   }
-  VectorX damping_force(const VectorX& v) const {
-    VectorX c = am_ * m_.cwiseProduct(v);
+  void damping_force(const VectorX& v, VectorX& c) {
+    c = am_ * m_.cwiseProduct(v);
     if (bk_ != 0.0) {
-      const VectorX kv = k0_.selfadjointView<Eigen::Lower>() * v;
-      c += bk_ * kv;
+      kv_.noalias() = k0_.selfadjointView<Eigen::Lower>() * v;
+      c += bk_ * kv_;
     }
-    return c;
   }
 
   void add_force(const VectorX& u, VectorX& force) override {
-    const VectorX a = acceleration(u);
-    const VectorX v = velocity(a);
-    force = (1.0 + alpha_) * (force + damping_force(v)) + m_.cwiseProduct(a) -
+    acceleration(u, a_);
+    velocity(a_, v_);
+    damping_force(v_, c_);
+    force = (1.0 + alpha_) * (force + c_) + m_.cwiseProduct(a_) -
             alpha_ * (s_.internal + s_.damping);
   }
   void add_tangent(const VectorX&, assembly::Workspace& w) override {
@@ -66,11 +73,12 @@ class StepTerms final : public ExtraTerms {
 
  private:
   const StepStart& s_;
-  double dt_, alpha_, beta_, gamma_;
+  double dt_ = 1.0, alpha_, beta_, gamma_;
   const VectorX& m_;
   double am_, bk_;
   const assembly::SparseMatrix& k0_;
   const std::vector<double>& k0_values_;
+  VectorX a_, v_, c_, kv_;  // add_force's buffers
 };
 
 void check_options(const TimeIntegrationOptions& o) {
@@ -96,48 +104,6 @@ void check_options(const TimeIntegrationOptions& o) {
 // refactorises (Newton's method).
 constexpr int kChordIterations = 6;
 
-// One step's equilibrium from the predictor u. The effective tangent (K + M / (beta dt^2)
-// + damping) changes little from step to step, so with `reuse` the step first iterates
-// with the factorisation an earlier step of the same dt left in `solver` (chord
-// iterations: a force evaluation and a solve each, no assembly of the tangent, no
-// factorisation); as soon as a correction shrinks less than by half (the tangent has
-// drifted) or after kChordIterations, Newton's method takes over from there. A chord
-// correction below the tolerance ends the step: its contraction (below 1/2) leaves an
-// error smaller than the correction itself.
-NewtonOutcome solve_step(assembly::Assembler& assembler, TangentSolver& solver, VectorX& u,
-                         const VectorX& external, const NewtonOptions& options,
-                         StepTerms& terms, bool reuse, bool& refactorised) {
-  int chords = 0;
-  refactorised = false;
-  if (reuse) {
-    VectorX force, trial = u;
-    double previous = INFINITY;
-    while (chords < std::min(kChordIterations, options.max_iterations - 1)) {
-      check_interrupt();
-      assembler.assemble(trial, force, /*with_matrix=*/false);
-      terms.add_force(trial, force);
-      const VectorX du = solver.solve(gather_rows(assembler, external - force));
-      const double size = du.norm();
-      if (!std::isfinite(size) || size > 0.5 * previous) break;
-      ++chords;
-      scatter_add_rows(assembler, du, trial);
-      u = trial;
-      if (size <= options.tolerance) {
-        NewtonOutcome out;
-        out.converged = true;
-        out.iterations = chords;
-        return out;
-      }
-      previous = size;
-    }
-  }
-  refactorised = true;
-  NewtonOutcome out = newton_equilibrium(assembler, solver, u, external, options,
-                                         options.max_iterations - chords, &terms);
-  out.iterations += chords;
-  return out;
-}
-
 // Whether a model's elements limit Newton's corrections (a barrier): its steps then take
 // Newton's own iterations, which respect the limits, every time.
 bool limits_steps(const model::Model& model) {
@@ -146,6 +112,122 @@ bool limits_steps(const model::Model& model) {
   }
   return false;
 }
+
+// Time as the path parameter of Newmark's and HHT-alpha's steps: each increment is a step
+// of dt = increment.size from the accepted state `s_` (displacement, velocity,
+// acceleration), started at Newmark's predictor, with the step's inertia and damping as
+// extra terms; an accepted step moves the state on and records its motion and energies.
+class NewmarkControl final : public TimeControl {
+ public:
+  NewmarkControl(const model::Model& model, const TimeLoad& load, const VectorX& masses,
+                 const TimeIntegrationOptions& options, StepStart start,
+                 const assembly::SparseMatrix& k0, const std::vector<double>& k0_values)
+      : TimeControl(model, load),
+        s_(std::move(start)),
+        alpha_(options.hht_alpha),
+        beta_(0.25 * (1.0 - alpha_) * (1.0 - alpha_)),
+        gamma_(0.5 - alpha_),
+        masses_(masses),
+        terms_(s_, alpha_, beta_, gamma_, masses, options.mass_damping,
+               options.stiffness_damping, k0, k0_values),
+        chords_allowed_(!limits_steps(model)) {}
+
+  // The step's external force (1 + alpha) f(t_{n+1}) - alpha f(t_n) and its predictor.
+  void advance(const Increment& increment, const VectorX&, VectorX& u,
+               VectorX& external) override {
+    const double dt = increment.size;
+    load_.at(increment.to, model_.num_dofs(), next_load_);
+    external = (1.0 + alpha_) * next_load_ - alpha_ * s_.load;
+    u = s_.u + dt * s_.v + (0.5 - beta_) * dt * dt * s_.a;  // the step's predictor
+  }
+
+  ExtraTerms* extra_terms(const Increment& increment) override {
+    terms_.set_step(increment.size);
+    return &terms_;
+  }
+
+  // One step's equilibrium from the predictor u. The effective tangent (K + M / (beta
+  // dt^2) + damping) changes little from step to step, so when the solver holds the
+  // factorisation an earlier step of the same dt left, the step first iterates with it
+  // (chord iterations: a force evaluation and a solve each, no assembly of the tangent, no
+  // factorisation); as soon as a correction shrinks less than by half (the tangent has
+  // drifted) or after kChordIterations, Newton's method takes over from there. A chord
+  // correction below the tolerance ends the step: its contraction (below 1/2) leaves an
+  // error smaller than the correction itself.
+  NewtonOutcome correct(Increment& increment, assembly::Assembler& assembler,
+                        TangentSolver& solver, VectorX& u, const VectorX& external,
+                        const NewtonOptions& options, int, ExtraTerms* extra) override {
+    const double dt = increment.size;
+    int chords = 0;
+    if (chords_allowed_ && factorised_dt_ == dt) {
+      VectorX& force = chord_force_;
+      VectorX& trial = chord_trial_;
+      trial = u;
+      double previous = INFINITY;
+      while (chords < std::min(kChordIterations, options.max_iterations - 1)) {
+        check_interrupt();
+        assembler.assemble(trial, force, /*with_matrix=*/false);
+        extra->add_force(trial, force);
+        const VectorX du = solver.solve(gather_rows(assembler, external - force));
+        const double size = du.norm();
+        if (!std::isfinite(size) || size > 0.5 * previous) break;
+        ++chords;
+        scatter_add_rows(assembler, du, trial);
+        u = trial;
+        if (size <= options.tolerance) {
+          NewtonOutcome out;
+          out.converged = true;
+          out.iterations = chords;
+          out.negative_eigenvalues = negative_;
+          return out;
+        }
+        previous = size;
+      }
+    }
+    NewtonOutcome out = newton_equilibrium(assembler, solver, u, external, options,
+                                           options.max_iterations - chords, extra);
+    out.iterations += chords;
+    // The solver now holds a factorisation of this dt's tangent, and its stability is the
+    // step's; a failed step leaves none worth keeping.
+    factorised_dt_ = out.converged ? dt : 0.0;
+    negative_ = out.negative_eigenvalues;
+    return out;
+  }
+
+  // Energy balance of the step (exact for the average acceleration scheme on linear
+  // models): u_{n+1} - u_n times the mean damping and external forces.
+  void accepted(const Increment& increment, const VectorX& u, const PathStep& step,
+                const VectorX& internal) override {
+    terms_.acceleration(u, a_);
+    terms_.velocity(a_, v_);
+    terms_.damping_force(v_, damping_);
+    du_ = u - s_.u;
+    dissipated_ += 0.5 * du_.dot(s_.damping + damping_);
+    work_ += 0.5 * du_.dot(s_.load + next_load_);
+    s_.t = increment.to;
+    s_.u = u;
+    s_.v.swap(v_);
+    s_.a.swap(a_);
+    s_.internal = internal;
+    s_.damping.swap(damping_);
+    s_.load.swap(next_load_);
+    record_motion(s_.v, 0.5 * s_.v.dot(masses_.cwiseProduct(s_.v)), step.energy(), dissipated_,
+                  work_);
+  }
+
+ private:
+  StepStart s_;
+  double alpha_, beta_, gamma_;
+  const VectorX& masses_;
+  StepTerms terms_;
+  bool chords_allowed_;
+  VectorX next_load_;         // f(t_{n+1}) of the step under way
+  VectorX a_, v_, damping_, du_;  // an accepted step's, kept to allocate nothing per step
+  VectorX chord_force_, chord_trial_;  // the chord iterations
+  double factorised_dt_ = 0;  // the dt whose effective tangent the solver holds (0: none)
+  int negative_ = -1;         // the stability that factorisation reported
+  double dissipated_ = 0.0, work_ = 0.0;
+};
 
 }  // namespace
 
@@ -173,13 +255,18 @@ void check_motion_input(const model::Model& model, const VectorX& masses, const 
 }
 
 VectorX TimeLoad::at(double t, Index n) const {
-  VectorX out = VectorX::Zero(n);
+  VectorX out;
+  at(t, n, out);
+  return out;
+}
+
+void TimeLoad::at(double t, Index n, VectorX& out) const {
+  out.setZero(n);
   for (const auto& term : terms) {
     const double f = term.factor ? term.factor(t) : 1.0;
     if (!std::isfinite(f)) throw std::invalid_argument("load_factor: not finite at t = " + format_number(t));
     out += f * term.forces;
   }
-  return out;
 }
 
 TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
@@ -205,8 +292,6 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
   }
   const Index n = model.num_dofs();
 
-  const double alpha = options.hht_alpha;
-  const double beta = 0.25 * (1.0 - alpha) * (1.0 - alpha), gamma = 0.5 - alpha;
   assembly::Assembler assembler(model, assembly::unmasked_dofs(model.fixed()), options.shift,
                                 assembly::Storage::Lower);
   TangentSolver solver(options.newton.cholesky);
@@ -217,110 +302,48 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
   for (Index i = 0; i < n; ++i) {
     if (model.fixed()[i]) s.u[i] = s.v[i] = 0.0;
   }
-  // The initial stiffness: of every DOF (for C v) and in the solver's pattern (its tangent).
-  assembly::Workspace full(model, assembly::all_dofs(n), 0.0, assembly::Storage::Lower);
+  // Stiffness-proportional damping needs the initial stiffness: of every DOF (for C v) and
+  // in the solver's pattern (its share of the tangent). Without it neither is built (a
+  // workspace of every DOF and two tangent assemblies: a small model's run pays for them
+  // as for several steps).
+  const bool stiffness_damped = options.stiffness_damping != 0.0;
   VectorX force;
-  assembly::assemble(model, full, s.u, force, true);
-  const assembly::SparseMatrix k0 = full.matrix();
-  assembler.assemble(s.u, force, true);
-  const std::vector<double> k0_values(assembler.matrix().valuePtr(),
-                                      assembler.matrix().valuePtr() + assembler.matrix().nonZeros());
+  assembly::SparseMatrix k0;
+  if (stiffness_damped) {
+    assembly::Workspace full(model, assembly::all_dofs(n), 0.0, assembly::Storage::Lower);
+    assembly::assemble(model, full, s.u, force, true);
+    k0 = full.matrix();
+  }
+  assembler.assemble(s.u, force, stiffness_damped);
+  std::vector<double> k0_values;
+  if (stiffness_damped) {
+    k0_values.assign(assembler.matrix().valuePtr(),
+                     assembler.matrix().valuePtr() + assembler.matrix().nonZeros());
+  }
   s.internal = force;
   s.load = time_load.at(0.0, n);
-  {
-    StepTerms none(s, 1.0, 0.0, 0.25, 0.5, masses, options.mass_damping, options.stiffness_damping,
-                   k0, k0_values);
-    s.damping = none.damping_force(s.v);
+  s.damping = options.mass_damping * masses.cwiseProduct(s.v);
+  if (stiffness_damped) {
+    const VectorX kv = k0.selfadjointView<Eigen::Lower>() * s.v;
+    s.damping += options.stiffness_damping * kv;
   }
   // a0 from the equation of motion at the start, M a0 = f(0) - C v0 - f_int(u0).
   s.a = VectorX::Zero(n);
   for (Index i = 0; i < n; ++i) {
     if (!model.fixed()[i]) s.a[i] = (s.load[i] - s.damping[i] - s.internal[i]) / masses[i];
   }
+  VectorX u = s.u;
 
-  TimeHistory h;
+  NewmarkControl control(model, time_load, masses, options, std::move(s), k0, k0_values);
+  HalvedTimeSteps policy(options.time_step, options.duration, options.max_halvings);
+  FollowOptions follow;
+  follow.newton = options.newton;
+  follow.stop = options.stop;
+  PathResult path;
+  follow_path(control, assembler, solver, u, policy, follow, path);
+  TimeHistory h = std::move(control.history);
+  h.path = std::move(path);
   h.time_step = options.time_step;
-  std::vector<Index> supported;
-  for (Index i = 0; i < n; ++i) {
-    if (model.fixed()[i]) supported.push_back(i);
-  }
-  h.path.constraint_dofs = supported;
-  h.path.families = family_names(model);
-  auto kinetic = [&](const VectorX& v) { return 0.5 * v.dot(masses.cwiseProduct(v)); };
-  double dissipated = 0.0, work = 0.0;
-
-  const double nominal = options.time_step;
-  const double smallest = std::ldexp(nominal, -options.max_halvings);
-  double dt = nominal;
-  const double end = options.duration;
-  // The dt whose effective tangent the solver holds factorised (0: none), and the
-  // stability that factorisation reported.
-  double factorised_dt = 0.0;
-  int negative = -1;
-  const bool chords_allowed = !limits_steps(model);
-  while (s.t < end * (1.0 - 1e-12)) {
-    check_interrupt();
-    dt = std::min(dt, end - s.t);
-    ++h.path.attempted_increments;
-    StepTerms terms(s, dt, alpha, beta, gamma, masses, options.mass_damping,
-                    options.stiffness_damping, k0, k0_values);
-    const double t_new = s.t + dt;
-    const VectorX load = time_load.at(t_new, n);
-    const VectorX external = (1.0 + alpha) * load - alpha * s.load;
-    VectorX u = s.u + dt * s.v + (0.5 - beta) * dt * dt * s.a;  // the step's predictor
-    bool refactorised = false;
-    NewtonOutcome out = solve_step(assembler, solver, u, external, options.newton, terms,
-                                   chords_allowed && factorised_dt == dt, refactorised);
-    h.path.newton_iterations += out.iterations;
-    if (refactorised) {  // the solver now holds a factorisation of this dt's tangent
-      factorised_dt = dt;
-      negative = out.negative_eigenvalues;
-    }
-    out.negative_eigenvalues = negative;
-    PathStep step;
-    if (out.converged) {
-      step = record_step(assembler, u, t_new, out, supported, 1.0, &force);
-      if (!finite_step(step)) {
-        out.converged = false;
-        out.failure = kStepNotFinite;
-      }
-    }
-    if (!out.converged) {
-      factorised_dt = 0.0;
-      dt *= 0.5;
-      if (dt < smallest) {
-        h.path.failed_increment = h.path.attempted_increments;
-        h.path.message = "time step at t = " + format_number(s.t) + " s failed after " +
-                         std::to_string(options.max_halvings) + " halvings: " + out.failure;
-        return h;
-      }
-      continue;
-    }
-    const VectorX a = terms.acceleration(u);
-    const VectorX v = terms.velocity(a);
-    // Energy balance of the step (exact for the average acceleration scheme on linear
-    // models): u_{n+1} - u_n times the mean damping and external forces.
-    const VectorX du = u - s.u;
-    const VectorX damping = terms.damping_force(v);
-    dissipated += 0.5 * du.dot(s.damping + damping);
-    work += 0.5 * du.dot(s.load + load);
-    s.t = t_new;
-    s.u = u;
-    s.v = v;
-    s.a = a;
-    s.internal = force;
-    s.damping = damping;
-    s.load = load;
-    h.path.steps.push_back(std::move(step));
-    h.velocity.push_back(v);
-    h.kinetic.push_back(kinetic(v));
-    h.strain.push_back(h.path.steps.back().energy());
-    h.dissipated.push_back(dissipated);
-    h.work.push_back(work);
-    if (options.stop && options.stop(h.path.steps.back())) break;
-    dt = std::min(2.0 * dt, nominal);  // grown back after a halving
-  }
-  h.path.completed = true;
   return h;
 }
 

@@ -3,7 +3,9 @@
 /// Implicit time integration of M a + C v + f_int(u) = f(t): Newmark's average
 /// acceleration (the trapezoidal rule) and its HHT-alpha generalisation, each step a Newton
 /// solve of the model with the inertia and damping terms added (newton.hpp's ExtraTerms),
-/// the step halved on failure and grown back. Units: mm, N, s, so masses in tonnes.
+/// the step halved on failure and grown back: the path follower (path_follower.hpp) with
+/// time as its parameter (time_control.hpp) and HalvedTimeSteps (time_steps.hpp). Units:
+/// mm, N, s, so masses in tonnes.
 ///
 /// HHT-alpha (Hilber, Hughes and Taylor), alpha in [-1/3, 0]: beta = (1 - alpha)^2 / 4,
 /// gamma = 1/2 - alpha, and the equation of motion balanced at t_n + (1 + alpha) dt,
@@ -61,6 +63,8 @@ struct TimeLoad {
   /// The load at t [N], n entries (zero without terms); throws std::invalid_argument when
   /// a factor is not finite.
   VectorX at(double t, Index n) const;
+  /// The same into `out` (resized to n entries), which a run reuses from step to step.
+  void at(double t, Index n, VectorX& out) const;
 };
 
 /// The checks every integrator makes of its input: masses, each load term's forces, u0 and

@@ -1,0 +1,48 @@
+#pragma once
+/// \file time_control.hpp
+/// Time as a path's parameter (path_control.hpp): the control of the time integrators
+/// (time_integration.hpp, explicit_dynamics.hpp), which the path follower steps like any
+/// other. The model is the same at every time, its supports hold their DOFs at zero and
+/// their reactions are recorded, and the load is a TimeLoad. What a scheme adds (its
+/// inertia and damping terms, its corrector, the velocity and acceleration it carries from
+/// step to step) its own control supplies through the hooks of PathControl; the motion it
+/// records per step (velocity and energies) goes into `history`.
+
+#include <string>
+#include <vector>
+
+#include "kresling/model/model.hpp"
+#include "kresling/solvers/path_control.hpp"
+#include "kresling/solvers/time_integration.hpp"
+
+namespace kresling::solvers {
+
+class TimeControl : public PathControl {
+ public:
+  /// `model` and `load` are kept by reference.
+  TimeControl(const model::Model& model, const TimeLoad& load);
+  const model::Model& model_at(double) override { return model_; }
+  /// The time control holds no DOFs and its load enters through advance(): nothing here.
+  void apply(double, VectorX&, VectorX&) override {}
+  std::vector<Index> recorded_dofs() const override { return supported_; }
+  double recorded_sign() const override { return 1.0; }
+  /// "time step at t = <t> s failed after <max_bisections> halvings: <reason>".
+  std::string failure_message(int k, int steps, double t, int max_bisections,
+                              const std::string& reason) const override;
+  std::string parameter_name() const override { return "the time"; }
+
+  /// The motion of every recorded step: velocity, kinetic, strain, dissipated and work
+  /// (path, stable_time_step and time_step are the integrator's to set).
+  TimeHistory history;
+
+ protected:
+  /// Append one recorded step's motion to `history`.
+  void record_motion(const VectorX& velocity, double kinetic, double strain, double dissipated,
+                     double work);
+
+  const model::Model& model_;
+  const TimeLoad& load_;
+  std::vector<Index> supported_;
+};
+
+}  // namespace kresling::solvers
