@@ -147,19 +147,6 @@ bool limits_steps(const model::Model& model) {
   return false;
 }
 
-// Shorten the predictor's move from u0 to u as the barrier families allow, as Newton's
-// corrections are: a predictor that jumped a barrier would leave Newton on its far side.
-void limit_predictor(const model::Model& model, const VectorX& u0, VectorX& u) {
-  const VectorX move = u - u0;
-  double fraction = 1.0;
-  for (const auto& family : model.families()) {
-    if (family->limits_steps()) {
-      fraction = std::min(fraction, family->step_limit(model.nodes(), u0, move));
-    }
-  }
-  if (fraction < 1.0) u = u0 + fraction * move;
-}
-
 }  // namespace
 
 void check_motion_input(const model::Model& model, const VectorX& masses, const TimeLoad& load,
@@ -281,7 +268,9 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
     const VectorX load = time_load.at(t_new, n);
     const VectorX external = (1.0 + alpha) * load - alpha * s.load;
     VectorX u = s.u + dt * s.v + (0.5 - beta) * dt * dt * s.a;  // the step's predictor
-    if (!chords_allowed) limit_predictor(model, s.u, u);
+    if (!chords_allowed) {  // a predictor beyond a barrier would leave Newton on its far side
+      u = s.u + std::min(1.0, barrier_step_fraction(model, s.u, u - s.u)) * (u - s.u);
+    }
     bool refactorised = false;
     NewtonOutcome out = solve_step(assembler, solver, u, external, options.newton, terms,
                                    chords_allowed && factorised_dt == dt, refactorised);
