@@ -262,9 +262,12 @@ def _contact_table(problem, model) -> dict:
 def _self_contact_table(problem, pm) -> dict:
     """The self-contact family's columns: the pattern's triangles (N5B8 centre nodes
     included), kept off each other."""
-    return {"triangles": np.asarray(pm.elements.triangles, dtype=np.int64),
-            "distance": np.array([problem.contact.distance]),
-            "stiffness": np.array([_barrier_stiffness(problem, pm.model)])}
+    table = {"triangles": np.asarray(pm.elements.triangles, dtype=np.int64),
+             "distance": np.array([problem.contact.distance]),
+             "stiffness": np.array([_barrier_stiffness(problem, pm.model)])}
+    if problem.contact.exact_tangent:
+        table["exact_tangent"] = np.array([1.0])
+    return table
 
 
 def _holds_elements(columns: dict) -> bool:
