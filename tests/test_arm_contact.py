@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from kresling.arm import build_arm
-from kresling.arm.analyses import pull_until_snap
+from kresling.arm.analyses import ArmSolver, pull_until_snap
 from kresling.arm.masses import _cell_triangles
 from kresling.arm.structure import ArmParameters
 from triangle_intersection_helpers import intersecting_pairs
@@ -69,3 +69,16 @@ def test_a_single_tendon_pull_bends_the_arm_without_panels_passing_through():
     assert all(_crossing_pairs(arm, s.displacement) == 0 for s in held.states)
     assert _crossing_pairs(arm, held.after.displacement) == 0
     assert held.pull < free.pull - 10.0
+
+
+def test_a_solver_reused_after_a_pull_follows_the_pattern_its_pairs_changed():
+    # A pull brings pairs within d_hat and grows the tangent's pattern; the next solve from
+    # the built arm factorises a tangent of another pattern, which the solver must be told.
+    arm = build_arm("100", parameters=CONTACT)
+    solver = ArmSolver(arm)
+    first = pull_until_snap(arm, (1.0, 0.0, 0.0), solver=solver)
+    assert first.snapped and first.configuration_after == "x00"
+    built = solver.built()
+    assert not built.displacement.any() and built.negative_eigenvalues == 0
+    again = pull_until_snap(arm, (1.0, 0.0, 0.0), solver=solver)
+    assert again.pull == pytest.approx(first.pull, rel=1e-12)
