@@ -173,7 +173,9 @@ void bind_arm_model(py::module_& m) {
       .def_readwrite("tendon_radius", &ArmParameters::tendon_radius)
       .def_readwrite("guide_radius", &ArmParameters::guide_radius)
       .def_readwrite("guide_factor", &ArmParameters::guide_factor)
-      .def_readwrite("tendon_stiffness", &ArmParameters::tendon_stiffness);
+      .def_readwrite("tendon_stiffness", &ArmParameters::tendon_stiffness)
+      .def_readwrite("contact_distance", &ArmParameters::contact_distance)
+      .def_readwrite("contact_stiffness", &ArmParameters::contact_stiffness);
 
   py::class_<Arm>(m, "Arm")
       .def_readonly("model", &Arm::model)

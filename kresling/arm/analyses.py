@@ -149,16 +149,19 @@ class ArmSolver:
         An increment may be halved this many times.
     tolerance : float, default 1e-6
         Newton tolerance on the correction [mm].
+    max_iterations : int, default 30
+        Newton iterations of an increment before it is halved.
     """
 
     def __init__(self, arm: Arm, *, steps: int = 10, max_bisections: int = 12,
-                 tolerance: float = 1e-6):
+                 tolerance: float = 1e-6, max_iterations: int = 30):
         if not isinstance(arm, Arm):
             raise ValueError(f"arm = {show(arm)} is invalid: must be a kresling.arm.Arm")
         o = _core.analyses.ArmOptions()
         o.steps = as_integer("steps", steps, minimum=1)
         o.max_bisections = as_integer("max_bisections", max_bisections, minimum=0)
         o.tolerance = as_real("tolerance", tolerance)
+        o.max_iterations = as_integer("max_iterations", max_iterations, minimum=1)
         self.arm = arm
         self._core = _core.analyses.ArmSolver(arm._core, o)
 

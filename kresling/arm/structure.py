@@ -51,6 +51,13 @@ class ArmParameters:
         500 N is a nylon line of about 0.4 mm (an assumption).
     specimen : SpecimenParameters
         The cells' stiffnesses (the thesis's by default).
+    contact_distance : float, default 0.0
+        d_hat [mm] of contact between the panels (the cells' side triangles and the levels'
+        polygons, within and between modules; docs/contact.md, 'Panels in models and
+        problem files'); 0: no contact. Below the smallest gap between two panels as built
+        (0.60 mm in a contracted module of the thesis's optimum).
+    contact_stiffness : float, default 0.0
+        The barrier's stiffness kappa [N/mm^3]; > 0 with contact.
     """
 
     tendon_radius: float = 32.0
@@ -58,9 +65,12 @@ class ArmParameters:
     guide_factor: float = 1e4
     tendon_stiffness: float = 500.0
     specimen: SpecimenParameters = field(default_factory=SpecimenParameters)
+    contact_distance: float = 0.0
+    contact_stiffness: float = 0.0
 
     def __post_init__(self):
-        for name in ("tendon_radius", "guide_radius", "guide_factor", "tendon_stiffness"):
+        for name in ("tendon_radius", "guide_radius", "guide_factor", "tendon_stiffness",
+                     "contact_distance", "contact_stiffness"):
             object.__setattr__(self, name, as_real(name, getattr(self, name)))
         if not isinstance(self.specimen, SpecimenParameters):
             raise ValueError(f"specimen = {show(self.specimen)} is invalid: must be a "
@@ -74,6 +84,8 @@ class ArmParameters:
         p.guide_radius = self.guide_radius
         p.guide_factor = self.guide_factor
         p.tendon_stiffness = self.tendon_stiffness
+        p.contact_distance = self.contact_distance
+        p.contact_stiffness = self.contact_stiffness
         return p
 
 

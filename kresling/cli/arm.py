@@ -40,6 +40,13 @@ def register(subparsers) -> None:
                      help="axial rigidity EA of each tendon [N] (default 500, an assumption)")
     arm.add_argument("--guide-radius", type=float, default=40.0,
                      help="circumradius of the guide plates [mm] (default 40, an assumption)")
+    arm.add_argument("--contact", type=float, default=0.0, metavar="D_HAT",
+                     help="keep the panels off each other, within and between modules: the "
+                     "barrier's distance d_hat [mm] (default 0: no contact; below 0.595, the "
+                     "nearest panels of a contracted module as built)")
+    arm.add_argument("--contact-stiffness", type=float, default=485.0,
+                     help="the barrier's stiffness kappa [N/mm^3] (default 485: at d_hat / 2 "
+                     "= 0.15 mm as stiff as the three-module arm's mean diagonal stiffness)")
     analysis = parser.add_argument_group("analysis (one at most)")
     analysis.add_argument("--tip-load", type=float, nargs=3, metavar=("FX", "FY", "FZ"),
                           help="tip force [N] on the tip guide's centre")
@@ -107,8 +114,8 @@ def run_reporting(args) -> int:
 
 
 def run(args) -> int:
-    from kresling.arm import (CAPACITY_DIRECTIONS, DEFAULT_PRETENSION, ArmParameters, ArmSolver,
-                              arm_summary, build_arm, load_capacity, pull_until_snap, tip_load)
+    from kresling.arm import (CAPACITY_DIRECTIONS, DEFAULT_PRETENSION, ArmSolver, arm_summary,
+                              build_arm, load_capacity, pull_until_snap, tip_load)
     from kresling.manipulator import TendonDrive
 
     chosen = [name for name, on in (("--tip-load", args.tip_load is not None),
@@ -144,8 +151,7 @@ def run(args) -> int:
     if args.protocol:
         return _run_protocol(args)
     configuration = _configuration(args)
-    parameters = ArmParameters(tendon_radius=args.tendon_radius, guide_radius=args.guide_radius,
-                               tendon_stiffness=args.tendon_stiffness)
+    parameters = _parameters(args)
     arm = build_arm(configuration, n=args.n, lam=args.lam, Lc=args.Lc, R=args.R,
                     parameters=parameters)
     if args.crease_switch is not None:
@@ -220,7 +226,7 @@ def run(args) -> int:
 
 
 def _run_table(args) -> int:
-    from kresling.arm import DEFAULT_PRETENSION, ArmParameters
+    from kresling.arm import DEFAULT_PRETENSION
     from kresling.arm.capacity import capacity_rows, load_capacity_table
 
     if args.config is not None:
@@ -229,8 +235,7 @@ def _run_table(args) -> int:
     if modules < 1:
         raise ValueError(f"modules = {modules} is invalid: must be an integer >= 1")
     pretension = DEFAULT_PRETENSION if args.pretension is None else args.pretension
-    parameters = ArmParameters(tendon_radius=args.tendon_radius, guide_radius=args.guide_radius,
-                               tendon_stiffness=args.tendon_stiffness)
+    parameters = _parameters(args)
     table = load_capacity_table(modules, pretension=pretension, n=args.n, lam=args.lam,
                                 Lc=args.Lc, R=args.R, parameters=parameters)
     rows = capacity_rows(table)
@@ -266,12 +271,17 @@ def _pretension(args) -> float:
 
 
 def _arm_options(args) -> dict:
+    return {"n": args.n, "lam": args.lam, "Lc": args.Lc, "R": args.R,
+            "parameters": _parameters(args)}
+
+
+def _parameters(args):
+    """The arm's parameters from the command line (tendons, guides, panel contact)."""
     from kresling.arm import ArmParameters
 
-    return {"n": args.n, "lam": args.lam, "Lc": args.Lc, "R": args.R,
-            "parameters": ArmParameters(tendon_radius=args.tendon_radius,
-                                        guide_radius=args.guide_radius,
-                                        tendon_stiffness=args.tendon_stiffness)}
+    return ArmParameters(tendon_radius=args.tendon_radius, guide_radius=args.guide_radius,
+                         tendon_stiffness=args.tendon_stiffness, contact_distance=args.contact,
+                         contact_stiffness=args.contact_stiffness if args.contact > 0 else 0.0)
 
 
 def _run_protocol(args) -> int:

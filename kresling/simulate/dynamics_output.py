@@ -57,7 +57,8 @@ class DynamicRun(Simulation):
             columns[f"u_{stop.node}_{stop.axis}"] = self.path.displacement[:, stop.dof]
         families = super().history_columns()
         for name, values in families.items():
-            if name.startswith("energy_") or name == "iterations":
+            if name.startswith(("energy_", "reaction_planes_")) or name in ("min_gap",
+                                                                             "iterations"):
                 columns[name] = values
         return columns
 

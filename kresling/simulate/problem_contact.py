@@ -15,12 +15,15 @@ __all__ = ["Contact", "read_contact", "auto_barrier_stiffness"]
 class Contact:
     """``distance``: d_hat [mm], the gap below which the barrier acts; ``stiffness``: kappa
     [N/mm^3] or None for "auto"; ``planes``: tuples (point, normal), possibly none;
-    ``self_contact``: whether panels are kept off each other."""
+    ``self_contact``: whether panels are kept off each other; ``exact_tangent``: whether
+    the panel pairs' Hessians enter Newton's tangent exact (True) or projected to be
+    positive semi-definite (False, ``tangent = "projected"``)."""
 
     distance: float
     stiffness: float | None
     planes: tuple
     self_contact: bool = False
+    exact_tangent: bool = False
 
 
 def read_contact(t, number, positive, boolean, vector3):
@@ -30,6 +33,9 @@ def read_contact(t, number, positive, boolean, vector3):
     raw = t.get("stiffness", lambda t_, k, v, a: v, "auto")
     stiffness = None if raw == "auto" else positive(t, "stiffness", raw)
     self_contact = t.get("self", boolean, False)
+    tangent = t.get("tangent", lambda t_, k, v, a: v, "projected")
+    if tangent not in ("projected", "exact"):
+        t.fail("tangent", f"= {tangent!r} is invalid: must be \"projected\" or \"exact\"")
     planes = t.get("planes", lambda t_, k, v, a: v, [], required=not self_contact,
                    allowed="an array of { point = [x, y, z], normal = [nx, ny, nz] }")
     if not isinstance(planes, list) or not (planes or self_contact):
@@ -46,7 +52,7 @@ def read_contact(t, number, positive, boolean, vector3):
             t.fail("planes", f"has normal {list(normal)}: must not be zero")
         out.append((point, normal))
     t.finish()
-    return Contact(distance, stiffness, tuple(out), bool(self_contact))
+    return Contact(distance, stiffness, tuple(out), bool(self_contact), tangent == "exact")
 
 
 def _barrier_curvature(d_hat: float) -> float:

@@ -113,10 +113,7 @@ class Simulation:
                 energies[name] = path.energy_of(name)
                 energies["total"] = energies["total"] + energies[name]
         energies["total"] = energies.pop("total")
-        if {"contact", "self_contact"} & set(path.families):
-            gaps = [_min_gap(self.model.element_state(u)) for u in path.displacement]
-            if None not in gaps:  # (a mesh of one panel has no pair to measure)
-                columns["min_gap"] = np.array(gaps)
+        columns.update(_contact_columns(self.model, path))
         for name, values in energies.items():
             columns[f"energy_{name}"] = values
         columns["iterations"] = path.iterations
@@ -265,9 +262,12 @@ def _contact_table(problem, model) -> dict:
 def _self_contact_table(problem, pm) -> dict:
     """The self-contact family's columns: the pattern's triangles (N5B8 centre nodes
     included), kept off each other."""
-    return {"triangles": np.asarray(pm.elements.triangles, dtype=np.int64),
-            "distance": np.array([problem.contact.distance]),
-            "stiffness": np.array([_barrier_stiffness(problem, pm.model)])}
+    table = {"triangles": np.asarray(pm.elements.triangles, dtype=np.int64),
+             "distance": np.array([problem.contact.distance]),
+             "stiffness": np.array([_barrier_stiffness(problem, pm.model)])}
+    if problem.contact.exact_tangent:
+        table["exact_tangent"] = np.array([1.0])
+    return table
 
 
 def _holds_elements(columns: dict) -> bool:
@@ -275,6 +275,25 @@ def _holds_elements(columns: dict) -> bool:
     the self-contact family)."""
     key = "triangles" if "triangles" in columns else "nodes"
     return columns[key].size > 0
+
+
+def _contact_columns(model, path) -> dict:
+    """The contact columns of ``history.csv`` along ``path``: ``min_gap`` [mm] (with planes
+    or panel contact) and, with planes, ``reaction_planes_x/y/z`` [N], the planes' force on
+    the model (the barrier's force on its nodes, summed over every node and plane)."""
+    if not {"contact", "self_contact"} & set(path.families):
+        return {}
+    states = [model.element_state(u) for u in path.displacement]
+    columns = {}
+    gaps = [_min_gap(state) for state in states]
+    if None not in gaps:  # (a mesh of one panel has no pair to measure)
+        columns["min_gap"] = np.array(gaps)
+    if "contact" in path.families:
+        reaction = np.array([state["contact_force"].reshape(-1, 3).sum(axis=0)
+                             for state in states]).reshape(-1, 3)
+        for k, axis in enumerate("xyz"):
+            columns[f"reaction_planes_{axis}"] = reaction[:, k]
+    return columns
 
 
 def _min_gap(state: dict) -> float | None:

@@ -51,6 +51,12 @@ struct ArmSolver::Impl {
     current = std::move(next);
     current_pulls = pulls;
   }
+  // Factorise the tangent just assembled, its pattern first told to the solver (contact
+  // pairs change it between solves).
+  solvers::FactorizeInfo factorize_tangent() {
+    solvers::follow_pattern(*assembler, solver);
+    return solver.factorize(assembler->matrix());
+  }
   // Bind the assemblers to a model of their own again (after a path follower bound them
   // to its control's), with the pulls they had.
   void rebind(const model::Arm& arm) {
@@ -141,7 +147,7 @@ ArmState ArmSolver::built() {
   ArmState s = evaluate(VectorX::Zero(arm_->model.num_dofs()), {0.0, 0.0, 0.0});
   VectorX force;
   impl_->assembler->assemble(s.displacement, force, true);
-  s.negative_eigenvalues = impl_->solver.factorize(impl_->assembler->matrix()).negative_eigenvalues;
+  s.negative_eigenvalues = impl_->factorize_tangent().negative_eigenvalues;
   return s;
 }
 
@@ -290,7 +296,7 @@ Eigen::Matrix3d ArmSolver::tip_compliance(const ArmState& state) {
   impl_->set_pulls(*arm_, state.pulls);
   VectorX force;
   impl_->assembler->assemble(state.displacement, force, true);
-  const auto info = impl_->solver.factorize(impl_->assembler->matrix());
+  const auto info = impl_->factorize_tangent();
   Eigen::Matrix3d C = Eigen::Matrix3d::Constant(ArmState::kNaN);
   if (!info.ok) return C;
   const Index tip = arm_->tip_node();
@@ -308,7 +314,7 @@ std::vector<double> ArmSolver::softest_mode_heights(const ArmState& state) {
   VectorX force;
   impl_->assembler->assemble(state.displacement, force, true);
   std::vector<double> out;
-  if (!impl_->solver.factorize(impl_->assembler->matrix()).ok) return out;
+  if (!impl_->factorize_tangent().ok) return out;
   // Inverse iteration: converges to the eigenvector of the smallest eigenvalue, fast where
   // that one is far below the next (near a limit point).
   VectorX x = VectorX::Ones(impl_->assembler->size());
@@ -332,7 +338,7 @@ Eigen::Matrix3d ArmSolver::tension_sensitivity(const ArmState& state) {
   impl_->set_pulls(arm, state.pulls);
   VectorX force;
   impl_->assembler->assemble(state.displacement, force, true);
-  const auto info = impl_->solver.factorize(impl_->assembler->matrix());
+  const auto info = impl_->factorize_tangent();
   Eigen::Matrix3d S = Eigen::Matrix3d::Constant(ArmState::kNaN);
   if (!info.ok) return S;
   const NodeMatrix x = arm.model.deformed(state.displacement);

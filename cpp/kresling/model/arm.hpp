@@ -45,6 +45,11 @@ struct ArmParameters {
   /// Axial rigidity EA of each tendon [N]. The thesis does not give its tendons' material;
   /// 500 N is a nylon line of about 0.4 mm (E ~ 4 GPa), an assumption.
   double tendon_stiffness = 500.0;
+  /// Contact between the panels (the cells' side triangles and the levels' polygons, within
+  /// a module and between modules; self_contact_family.hpp): the barrier's distance d_hat
+  /// [mm] (0: no contact) and its stiffness kappa [N/mm^3] (> 0 with contact).
+  double contact_distance = 0.0;
+  double contact_stiffness = 0.0;
 };
 
 /// The arm's model and where its parts are.

@@ -70,20 +70,26 @@ double PlaneContactFamily::assemble(const NodeMatrix& X, const VectorX& u,
 
 void PlaneContactFamily::add_state(const NodeMatrix& x, ElementState& state) const {
   VectorX gap(static_cast<Index>(size())), energy(static_cast<Index>(size()));
-  const VectorX zero = VectorX::Zero(3 * x.rows());
+  // The force each plane exerts on its node, minus the barrier's gradient (3 per pair): a
+  // floor's reaction on a model is their sum (zero beyond d_hat).
+  VectorX force = VectorX::Zero(3 * static_cast<Index>(size()));
   for (std::size_t e = 0; e < size(); ++e) {
     const Index node = nodes_[e / planes_.size()];
     const ContactPlane& plane = planes_[e % planes_.size()];
     const Vector3 p = x.row(node).transpose();
-    gap[static_cast<Index>(e)] = std::abs(elements::point_plane_signed_distance(p, plane.origin, plane.normal));
-    energy[static_cast<Index>(e)] =
-        gap[static_cast<Index>(e)] < d_hat_
-            ? elements::point_plane_barrier(p, plane.origin, plane.normal, d_hat_, stiffness_,
-                                            elements::BarrierHessian::None).value
-            : 0.0;
+    const Index i = static_cast<Index>(e);
+    gap[i] = std::abs(elements::point_plane_signed_distance(p, plane.origin, plane.normal));
+    energy[i] = 0.0;
+    if (gap[i] < d_hat_) {
+      const auto b = elements::point_plane_barrier(p, plane.origin, plane.normal, d_hat_,
+                                                   stiffness_, elements::BarrierHessian::None);
+      energy[i] = b.value;
+      force.segment<3>(3 * i) = -b.gradient;
+    }
   }
   state.add("contact_gap", gap);
   state.add("contact_energy", energy);
+  state.add("contact_force", force);
 }
 
 double PlaneContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,

@@ -28,13 +28,18 @@
 namespace kresling::model {
 
 /// Table columns: triangles (3 node indices a row), distance (d_hat [mm], one value),
-/// stiffness (kappa [N/mm^3], one value).
+/// stiffness (kappa [N/mm^3], one value), optionally exact_tangent (one value, 1: the
+/// pairs' exact Hessians in the tangent; absent or 0: projected).
 class SelfContactFamily final : public ElementFamily {
  public:
   /// Kinds of active elements.
   enum Kind : std::uint8_t { PointTriangle = 0, EdgeEdge = 1 };
 
-  SelfContactFamily(std::vector<Index> triangles, double d_hat, double stiffness);
+  /// `exact_tangent`: the pairs' exact Hessians in the tangent (indefinite in general; the
+  /// Jacobian of the force, so Newton converges quadratically and the tangent's inertia
+  /// tells stability) instead of their projections onto the positive semi-definite cone.
+  SelfContactFamily(std::vector<Index> triangles, double d_hat, double stiffness,
+                    bool exact_tangent = false);
   static FamilyPtr from_table(const Table& table);
 
   const char* name() const override { return "self_contact"; }
@@ -73,6 +78,7 @@ class SelfContactFamily final : public ElementFamily {
   elements::TriangleMatrix triangles_;
   elements::EdgeMatrix edges_;
   double d_hat_, stiffness_;
+  bool exact_tangent_ = false;
   // The broad phase's candidates kept across evaluations (the family's only state, a cache:
   // every result is that of a broad phase of its own).
   std::unique_ptr<elements::ContactCandidateCache> cache_;

@@ -1,5 +1,6 @@
 #include "kresling/solvers/energy_minimum.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -67,7 +68,10 @@ EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
     if (step.norm() > o.max_step) step *= o.max_step / step.norm();
     // Backtracking on the energy; a step below the rounding of the energy is taken whole.
     const double slope = std::min(e.gradient.dot(step), 0.0);
-    double alpha = 1.0;
+    // No further than a contact barrier allows: across it the energy is finite again.
+    VectorX move = VectorX::Zero(u.size());
+    scatter_add_rows(assembler, step, move);
+    double alpha = std::min(1.0, barrier_step_fraction(assembler.model(), u, move));
     VectorX trial;
     for (int halvings = 0;; ++halvings) {
       trial = u;

@@ -61,17 +61,21 @@ void apply_correction(assembly::Assembler& assembler, const VectorX& du, VectorX
   VectorX step = VectorX::Zero(u.size());
   scatter_add_rows(assembler, du, step);
   double fraction = extra ? extra->step_limit(u, step) : 1.0;
-  if (limited) {
-    for (const auto& family : assembler.model().families()) {
-      if (family->limits_steps()) {
-        fraction = std::min(fraction, family->step_limit(assembler.model().nodes(), u, step));
-      }
-    }
-  }
+  if (limited) fraction = std::min(fraction, barrier_step_fraction(assembler.model(), u, step));
   u += (fraction < 1.0 ? fraction : 1.0) * step;
 }
 
 }  // namespace
+
+double barrier_step_fraction(const model::Model& model, const VectorX& u, const VectorX& du) {
+  double fraction = 1.0;
+  for (const auto& family : model.families()) {
+    if (family->limits_steps()) {
+      fraction = std::min(fraction, family->step_limit(model.nodes(), u, du));
+    }
+  }
+  return fraction;
+}
 
 NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& solver,
                                  VectorX& u, const VectorX& external,

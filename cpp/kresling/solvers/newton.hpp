@@ -52,6 +52,12 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
                                  const NewtonOptions& options, int max_iterations = 0,
                                  ExtraTerms* extra = nullptr);
 
+/// The largest fraction in [0, 1] of the move `du` from `u` (one entry per DOF each) that
+/// no family of the model that limits steps (a contact barrier) lets a pair cross along;
+/// 1 when no family limits steps. Every move of a solver (a Newton correction, a time
+/// step's predictor, a path's extrapolated start, a line search's step) is shortened by it.
+double barrier_step_fraction(const model::Model& model, const VectorX& u, const VectorX& du);
+
 /// Before factorising the tangent just assembled: tell `solver` its pattern when the model
 /// has a family whose elements change with the state (contact pairs), so that a new pattern
 /// is analysed anew; nothing otherwise.

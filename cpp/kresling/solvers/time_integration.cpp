@@ -139,6 +139,9 @@ class NewmarkControl final : public TimeControl {
     load_.at(increment.to, model_.num_dofs(), next_load_);
     external = (1.0 + alpha_) * next_load_ - alpha_ * s_.load;
     u = s_.u + dt * s_.v + (0.5 - beta_) * dt * dt * s_.a;  // the step's predictor
+    if (!chords_allowed_) {  // a predictor beyond a barrier would leave Newton on its far side
+      u = s_.u + std::min(1.0, barrier_step_fraction(model_, s_.u, u - s_.u)) * (u - s_.u);
+    }
   }
 
   ExtraTerms* extra_terms(const Increment& increment) override {
