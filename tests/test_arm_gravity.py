@@ -96,7 +96,8 @@ def test_arm_frequencies_match_a_dense_eigensolve():
 
 
 @pytest.mark.parametrize("kwargs, name", [({"orientation": "sideways"}, "orientation"),
-                                          ({"g": -1.0}, "g"), ({"masses": 3}, "masses")])
+                                          ({"g": -1.0}, "g"), ({"masses": 3}, "masses"),
+                                          ({"g": 5e-324}, "g = 5e-324")])  # m g underflows
 def test_bad_gravity_options_are_named(kwargs, name):
     with pytest.raises(ValueError, match=name):
         gravity_sag(build_arm("0"), **kwargs)

@@ -170,6 +170,9 @@ def gravity_sag(arm: Arm, orientation="hanging", *, start: ArmState | None = Non
     gravity = g * np.asarray(ORIENTATIONS[orientation])
     model = held_tendons_model(arm, start.pulls)
     weight = (masses.node[:, None] * gravity[None, :]).ravel()
+    if not np.any(weight):  # a g so small that every weight m g underflows to zero
+        raise ValueError(f"g = {g!r} mm/s^2 is invalid: too small for any weight (m g) of "
+                         f"this arm's masses to be non-zero")
     steps = as_integer("steps", steps, minimum=1, maximum=1000)
     path = solve_force_control(model, weight, steps, initial=start.displacement, tolerance=1e-6)
     u = path.displacement[-1] if path.num_steps else start.displacement
