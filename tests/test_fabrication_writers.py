@@ -119,3 +119,12 @@ def test_unknown_extension(name, tmp_path):
 def test_module_fold_is_refused(tmp_path):
     with pytest.raises(ValueError, match="module = True is invalid with .fold"):
         write_pattern(tmp_path / "m.fold", OPTIMUM, module=True)
+
+
+def test_a_png_under_one_pixel_across_is_refused_naming_dpi(tmp_path):
+    # A 3-sided cell's sheet is ~100 x 59 mm with its margins: at 0.125 dpi under a pixel
+    # across, which cairo cannot draw ("the SVG size is undefined").
+    design = kresling.Design(3, 0.75, 1.0, R=16.0)
+    with pytest.raises(ValueError, match=r"dpi = 0\.125 .* under one pixel"):
+        write_pattern(tmp_path / "sheet.png", design, "laminate", dpi=0.125)
+    assert write_pattern(tmp_path / "sheet.png", design, "laminate", dpi=1.0).stat().st_size

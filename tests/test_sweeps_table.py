@@ -38,6 +38,14 @@ def test_csv_round_trip_is_exact(tmp_path):
         assert [str(x) for x in a.tolist()] == [str(x) for x in b.tolist()]  # NaN included
 
 
+def test_a_header_naming_a_column_twice_is_refused_with_its_line(tmp_path):
+    # A damaged file whose header repeats a name: its rows would fill that column twice.
+    path = tmp_path / "t.csv"
+    path.write_text("n,Lc,n\n4,15.0,4\n")
+    with pytest.raises(ValueError, match=r"t\.csv, line 1: .*\['n'\] more than once"):
+        SweepTable.read_csv(path)
+
+
 def test_selection_best_and_grid():
     table = made_up()
     assert len(table.where(n=4)) == 6 and len(table.where(n=4, lam=0.9)) == 3

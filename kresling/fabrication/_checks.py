@@ -54,10 +54,16 @@ def cut_path_count(count: int, cause: str) -> None:
 
 
 def png_pixels(width_mm: float, height_mm: float, dpi: float) -> float:
-    """``dpi`` checked: finite, > 0 and giving at most :data:`MAX_PNG_PIXELS` pixels."""
+    """``dpi`` checked: finite, > 0, at least one pixel across and at most
+    :data:`MAX_PNG_PIXELS` pixels."""
     given, dpi = dpi, _real("dpi", dpi)
     if dpi <= 0:
         raise ValueError(f"dpi = {show(given)} is invalid: must be > 0")
+    if min(width_mm, height_mm) / 25.4 * dpi < 1.0:  # cairo cannot draw a 0-pixel image
+        smallest = 25.4 / min(width_mm, height_mm)
+        raise ValueError(f"dpi = {show(given)} is invalid for a {width_mm:.6g} x {height_mm:.6g} "
+                         f"mm sheet: the PNG would be under one pixel across; must be at least "
+                         f"{smallest:.3g}")
     pixels = (width_mm / 25.4 * dpi) * (height_mm / 25.4 * dpi)
     if pixels > MAX_PNG_PIXELS:
         largest = dpi * math.sqrt(MAX_PNG_PIXELS / pixels)

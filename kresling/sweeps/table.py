@@ -320,7 +320,11 @@ class SweepTable:
             records = list(csv_records(f, path))
         if not records:
             raise ValueError(f"{path} is empty: a sweep table starts with its header line")
-        header = records[0][1]
+        header_line, header = records[0]
+        repeated = sorted({name for name in header if header.count(name) > 1})
+        if repeated:
+            raise ValueError(f"{path}, line {header_line}: the header names column(s) "
+                             f"{repeated} more than once: each column once")
         columns = {name: [] for name in header}
         for line, row in records[1:]:
             if len(row) != len(header):
