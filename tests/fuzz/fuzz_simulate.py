@@ -104,7 +104,7 @@ KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices"
         "predictor", "density", "mass", "modes", "about", "contact", "distance", "planes",
         "point", "normal", "self", "unit", "scale", "frame", "assignments", "dynamics",
         "scheme", "time_step", "duration", "damping", "gravity", "hht_alpha", "record_every",
-        "time", "ramp_time", "alpha", "beta", "load_factor", "unknown_key"]
+        "time", "ramp_time", "alpha", "beta", "load_factor", "tangent", "unknown_key"]
 values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_001, 10**6]),
                    st.sampled_from(
     ["xyz", "z", "w", "N5B8", "N4B5", "auto", "manual", "linear", "mgdcm", "force_control",
@@ -120,7 +120,8 @@ values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_0
      {"harmonic": [1.0, 0.0]}, {"harmonic": [1e300, 1e300]}, {"alpha": 5.0}, {"beta": -1.0},
      {"gamma": 1.0}, [0.0, 0.0, -9810.0], 1e-9, 1e-4, -0.05, -0.5,
      {"load_factor": 1.0, "steps": 2}, {"load_factor": 1e300},
-     {"distance": 0.2, "self": True}, {"distance": 5.0, "self": True}, True]))
+     {"distance": 0.2, "self": True}, {"distance": 5.0, "self": True}, True, "exact",
+     "projected", {"distance": 0.1, "self": True, "tangent": "exact"}]))
 
 
 def mutate(problem, edits):
