@@ -7,7 +7,8 @@ equilibrium path from flat, and the actuation's signs choose it. The checks: tha
 eigenvalues; the end of the fold not depending on how many increments reach it; a Miura
 sheet driven to targets of one magnitude (not its rigid-folding ratios, so the senses are
 not forced by a mechanism) taking the senses of its assignments, and with every assignment
-flipped taking the flipped senses, as the mirror image of the first fold."""
+flipped taking the flipped senses, as the mirror image of the first fold; and Rabbit Ear's
+crane, which folds some creases the other way, doing so along one stable path."""
 
 from __future__ import annotations
 
@@ -17,10 +18,14 @@ import numpy as np
 import pytest
 
 from kresling.assembly import assemble
+from kresling.io import read_fold
 from kresling.io.fold_format import fold_angles
 from kresling.io.miura import miura_sheet
 from kresling.model import ManualProperties, build_pattern_model
+from kresling.simulate import simulate
 from kresling.solvers import fold
+from public_files import RABBIT_EAR, SHEET, held_and_far
+from public_files import STIFF as STIFF_MATERIAL  # the same stiffness as a problem's table
 
 STIFF = ManualProperties(bar_modulus=1e5, bar_area=1.0, fold_stiffness=1.0, bend_stiffness=1.0)
 
@@ -104,3 +109,30 @@ def test_a_flat_miura_sheet_folds_each_crease_the_way_it_is_assigned_or_flipped(
     mirrored = ends[1.0] * np.array([1.0, 1.0, -1.0])
     np.testing.assert_allclose(ends[-1.0], mirrored, atol=1e-5)
     assert np.abs(ends[1.0][:, 2]).max() > 1.0  # it did fold out of the plane
+
+
+def test_the_cranes_fold_from_flat_is_one_stable_path_whatever_its_increments():
+    # Rabbit Ear's crane, every crease driven to a tenth of its +-180 deg: some creases go
+    # the other way (tests/test_io_public_folds.py records it), and this shows that it is
+    # the model's one path from flat, not a branch taken by chance: 10 and 100 increments
+    # end at the same state (measured 4.7e-11 mm apart; Newton's tolerance 1e-6 mm bounds
+    # it) with the tangent positive definite at every increment.
+    path = RABBIT_EAR / "crane.fold"
+    pattern = read_fold(path, frame=1, **SHEET)
+    letters = np.array(read_fold(path, **SHEET).edges_assignment)
+    targets = 0.1 * np.where(letters == "M", -180.0, 180.0)
+    actuation = [{"edges": [edge], "fold_angle_deg": float(target)}
+                 for edge, letter, target in zip(pattern.edges.tolist(), letters, targets)
+                 if letter in "MV"]
+    ends = []
+    for steps in (10, 100):
+        sim = simulate({"pattern": {"file": str(path), "frame": 1, **SHEET}, "material": STIFF_MATERIAL,
+                        "laws": {"fold_limits_deg": [1.0, 359.0]},
+                        "support": [{"nodes": held_and_far(pattern)[0], "fix": "xyz"}],
+                        "actuation": actuation, "analysis": {"method": "fold", "steps": steps}},
+                       progress=False)
+        assert sim.completed, sim.path.message
+        assert np.all(np.asarray(sim.path.negative_eigenvalues) == 0)
+        assert sim.summary()["fold"]["left_branch"] > 0  # the case the path decides
+        ends.append(sim.path.displacement[-1])
+    np.testing.assert_allclose(ends[1], ends[0], atol=1e-6)
