@@ -19,7 +19,7 @@ corners held. The columns:
   stiffness (30 geometric steps) lost it (Newton failed) or ``1`` if it got there, and the
   other-way counts (model hinges / by faces) and the energy where it ended (``-`` if lost).
 
-Run: ``python studies/fold_from_flat.py`` (about a minute).
+Run: ``python studies/fold_from_flat.py`` (about ten seconds).
 """
 
 from __future__ import annotations
