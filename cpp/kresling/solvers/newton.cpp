@@ -42,14 +42,6 @@ double mechanism_scale(const assembly::Assembler& assembler) {
   return std::max((X.colwise().maxCoeff() - X.colwise().minCoeff()).norm(), 1.0);
 }
 
-// Whether any element family of the model limits Newton's corrections.
-bool families_limit_steps(const model::Model& model) {
-  for (const auto& family : model.families()) {
-    if (family->limits_steps()) return true;
-  }
-  return false;
-}
-
 // Apply the correction du (assembled rows) to u, shortened as `extra` and the model's
 // families allow (a barrier that must not be stepped across).
 void apply_correction(assembly::Assembler& assembler, const VectorX& du, VectorX& u,
@@ -66,6 +58,20 @@ void apply_correction(assembly::Assembler& assembler, const VectorX& du, VectorX
 }
 
 }  // namespace
+
+bool families_limit_steps(const model::Model& model) {
+  for (const auto& family : model.families()) {
+    if (family->limits_steps()) return true;
+  }
+  return false;
+}
+
+void shorten_to_barriers(const model::Model& model, const VectorX& from, VectorX& to) {
+  if (!families_limit_steps(model)) return;
+  const VectorX move = to - from;
+  const double fraction = barrier_step_fraction(model, from, move);
+  if (fraction < 1.0) to = from + fraction * move;
+}
 
 double barrier_step_fraction(const model::Model& model, const VectorX& u, const VectorX& du) {
   double fraction = 1.0;

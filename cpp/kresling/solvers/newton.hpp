@@ -58,6 +58,13 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
 /// step's predictor, a path's extrapolated start, a line search's step) is shortened by it.
 double barrier_step_fraction(const model::Model& model, const VectorX& u, const VectorX& du);
 
+/// Whether any element family of the model limits each move (a contact barrier).
+bool families_limit_steps(const model::Model& model);
+
+/// Shorten the move from `from` to `to` (all DOFs) to the fraction barrier_step_fraction
+/// allows; `to` is left as it is when the model has no barrier or the whole move is allowed.
+void shorten_to_barriers(const model::Model& model, const VectorX& from, VectorX& to);
+
 /// Before factorising the tangent just assembled: tell `solver` its pattern when the model
 /// has a family whose elements change with the state (contact pairs), so that a new pattern
 /// is analysed anew; nothing otherwise.

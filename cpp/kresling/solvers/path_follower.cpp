@@ -81,15 +81,12 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     VectorX trial = u;
     NewtonOutcome outcome;
     if (options.secant_start) {
-      if (previous_size > 0.0) {
-        const VectorX move = (increment.size / previous_size) * (u - previous_u);
-        trial += std::min(1.0, barrier_step_fraction(assembler.model(), u, move)) * move;
-      }
+      if (previous_size > 0.0) trial += (increment.size / previous_size) * (u - previous_u);
+      shorten_to_barriers(assembler.model(), u, trial);
       outcome = solve_at(trial);
     } else if (options.extrapolation > 0 && increment.damping == 1.0) {
       extrapolate(path_t, path_u, options.extrapolation, t_new, trial);
-      const double fraction = barrier_step_fraction(assembler.model(), u, trial - u);
-      if (fraction < 1.0) trial = u + fraction * (trial - u);
+      shorten_to_barriers(assembler.model(), u, trial);
       outcome = solve_at(trial);
       // Two cases where the previous equilibrium is the better start (MERLIN2's): past a
       // limit point of the driven motion (a snap) the extrapolated guess lies beyond the

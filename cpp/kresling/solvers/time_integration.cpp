@@ -104,15 +104,6 @@ void check_options(const TimeIntegrationOptions& o) {
 // refactorises (Newton's method).
 constexpr int kChordIterations = 6;
 
-// Whether a model's elements limit Newton's corrections (a barrier): its steps then take
-// Newton's own iterations, which respect the limits, every time.
-bool limits_steps(const model::Model& model) {
-  for (const auto& family : model.families()) {
-    if (family->limits_steps()) return true;
-  }
-  return false;
-}
-
 // Time as the path parameter of Newmark's and HHT-alpha's steps: each increment is a step
 // of dt = increment.size from the accepted state `s_` (displacement, velocity,
 // acceleration), started at Newmark's predictor, with the step's inertia and damping as
@@ -130,7 +121,9 @@ class NewmarkControl final : public TimeControl {
         masses_(masses),
         terms_(s_, alpha_, beta_, gamma_, masses, options.mass_damping,
                options.stiffness_damping, k0, k0_values),
-        chords_allowed_(!limits_steps(model)) {}
+        // A model whose elements limit each correction (a barrier) takes Newton's own
+        // iterations, which respect the limits, every step.
+        chords_allowed_(!families_limit_steps(model)) {}
 
   // The step's external force (1 + alpha) f(t_{n+1}) - alpha f(t_n) and its predictor.
   void advance(const Increment& increment, const VectorX&, VectorX& u,
@@ -139,9 +132,8 @@ class NewmarkControl final : public TimeControl {
     load_.at(increment.to, model_.num_dofs(), next_load_);
     external = (1.0 + alpha_) * next_load_ - alpha_ * s_.load;
     u = s_.u + dt * s_.v + (0.5 - beta_) * dt * dt * s_.a;  // the step's predictor
-    if (!chords_allowed_) {  // a predictor beyond a barrier would leave Newton on its far side
-      u = s_.u + std::min(1.0, barrier_step_fraction(model_, s_.u, u - s_.u)) * (u - s_.u);
-    }
+    // A predictor beyond a barrier would leave Newton on its far side.
+    shorten_to_barriers(model_, s_.u, u);
   }
 
   ExtraTerms* extra_terms(const Increment& increment) override {
