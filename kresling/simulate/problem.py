@@ -704,7 +704,7 @@ def load_problem(problem) -> Problem:
     contact = None
     if root.has("contact"):
         contact = read_contact(_Table(root.get("contact", lambda t, k, v, a: v), "contact", source,
-                                      text), _number, _positive, _boolean, _vector3)
+                                      text), _number, _positive, _boolean, _vector3, _string)
     if analysis.tolerance is None:
         analysis = replace(analysis, tolerance=default_tolerance(pattern, compat))
     root.finish()

@@ -26,16 +26,14 @@ class Contact:
     exact_tangent: bool = False
 
 
-def read_contact(t, number, positive, boolean, vector3):
+def read_contact(t, number, positive, boolean, vector3, string):
     """The ``[contact]`` table ``t`` (a reader of the problem's tables)."""
     distance = t.get("distance", positive, required=True,
                      allowed="d_hat [mm]: the barrier acts at gaps below it")
     raw = t.get("stiffness", lambda t_, k, v, a: v, "auto")
     stiffness = None if raw == "auto" else positive(t, "stiffness", raw)
     self_contact = t.get("self", boolean, False)
-    tangent = t.get("tangent", lambda t_, k, v, a: v, "projected")
-    if tangent not in ("projected", "exact"):
-        t.fail("tangent", f"= {tangent!r} is invalid: must be \"projected\" or \"exact\"")
+    tangent = t.get("tangent", string, "projected", choices=("projected", "exact"))
     planes = t.get("planes", lambda t_, k, v, a: v, [], required=not self_contact,
                    allowed="an array of { point = [x, y, z], normal = [nx, ny, nz] }")
     if not isinstance(planes, list) or not (planes or self_contact):
