@@ -16,7 +16,7 @@ import pytest
 from kresling.geometry import Design
 from kresling.model import kresling_specimen
 from kresling.model.masses import specimen_triangles
-from kresling.solvers import solve_force_control
+from kresling.solvers import solve_displacement_control, solve_force_control
 from triangle_intersection_helpers import intersecting_pairs, segment_crosses_triangle
 
 N = 8
@@ -96,3 +96,35 @@ def test_with_contact_the_cell_rests_on_itself_with_its_panels_apart(touching):
     gaps = [float(model.element_state(u)["self_contact_gap"].min()) for u in path.displacement]
     assert min(gaps) > 0.0 and gaps[-1] < D_HAT
     assert 0.0 < positions[-1][N + 1:, 2].mean() < 4 * D_HAT
+
+
+def test_a_prescribed_motion_through_the_base_is_refused_at_contact_not_taken():
+    # The top polygon driven 3 mm past the base (displacement control): the drive sets the
+    # top's DOFs itself, so the barrier cannot shorten that move as it shortens Newton's
+    # corrections. Without contact the drive takes the top through the base; with it, the
+    # increments are halved as the top nears the base and the path ends there, saying why,
+    # with the top above the base at every recorded increment.
+    design = Design(N, 0.8, 0.0, 30.0)
+    fixed = np.zeros((2 * (N + 1), 3), bool)
+    fixed[: N + 1] = True
+    specimen = kresling_specimen(design, ["extended"], fixed=fixed)
+    height = float(specimen.level_height[-1])
+    for contact in (False, True):
+        model = specimen.model
+        if contact:
+            model = model.replace(families={"self_contact": {
+                "triangles": specimen_triangles(specimen), "distance": [D_HAT],
+                "stiffness": [1.0]}})
+        prescribed = np.zeros((model.num_nodes, 3))
+        prescribed[N + 1:, 2] = -(height + 3.0)
+        path = solve_displacement_control(model, prescribed, 100, extrapolation=3)
+        top = [(model.nodes + u.reshape(-1, 3))[N + 1:, 2].min() for u in path.displacement]
+        if not contact:
+            assert path.completed and top[-1] == pytest.approx(-3.0)
+        else:
+            assert not path.completed
+            assert "carry panels into each other" in path.message
+            assert min(top) > 0.0
+            # It ended where the panels touch: the top within a few d_hat of the base
+            # (the flattened cell's layers), past 95 % of the way down.
+            assert path.load_factor[-1] > 0.95 * height / (height + 3.0)

@@ -73,6 +73,18 @@ void shorten_to_barriers(const model::Model& model, const VectorX& from, VectorX
   if (fraction < 1.0) to = from + fraction * move;
 }
 
+const char* const kHeldMoveBlocked =
+    "the prescribed motion would carry panels into each other within the increment (the "
+    "contact barrier holds them apart; the drive cannot go on past where they touch)";
+
+bool held_move_blocked(const model::Model& model, const VectorX& from, const VectorX& to,
+                       const std::vector<Index>& held) {
+  if (held.empty() || !families_limit_steps(model)) return false;
+  VectorX move = VectorX::Zero(from.size());
+  for (Index i : held) move[i] = to[i] - from[i];
+  return barrier_step_fraction(model, from, move) < 1.0;
+}
+
 double barrier_step_fraction(const model::Model& model, const VectorX& u, const VectorX& du) {
   double fraction = 1.0;
   for (const auto& family : model.families()) {
