@@ -69,9 +69,6 @@ class SelfContactFamily final : public ElementFamily {
   // min_gap, and the pair that has it when `pair` is not null.
   double nearest_pair(const NodeMatrix& x, NearestPair* pair) const;
   void find_active(const NodeMatrix& x, ActiveElements& out) const;
-  // Whether the step dx from x0 is too short beside every pair's gap (the cache's
-  // clearance) for any collision check to shorten it.
-  bool step_is_clear(const NodeMatrix& x0, const NodeMatrix& dx) const;
   // The pair energy of active element e of `active` at positions x (rest positions X for
   // the edge-edge mollifier's threshold).
   elements::ScalarDerivatives<12> pair_energy(const NodeMatrix& X, const NodeMatrix& x,
