@@ -82,6 +82,26 @@ void for_each_pair(const ContactCandidates& c, const elements::TriangleMatrix& t
   for (const auto& pair : c.edge_edge) visit(edge_edge_nodes(e, pair), true);
 }
 
+// Visit, in the list's order, every pair of the kept list `view` that may be closer than
+// `distance` at the positions it is served at (KeptView::may_be_within): the others are
+// passed over at a comparison each.
+template <typename Visit>
+void for_each_kept_within(const elements::KeptView& view, double distance,
+                          const elements::TriangleMatrix& t, const elements::EdgeMatrix& e,
+                          Visit&& visit) {
+  const elements::KeptCandidates& kept = *view.list;
+  for (std::size_t i = 0; i < kept.pairs.point_triangle.size(); ++i) {
+    if (view.may_be_within(kept.point_triangle_distance[i], distance)) {
+      visit(point_triangle_nodes(t, kept.pairs.point_triangle[i]), false);
+    }
+  }
+  for (std::size_t i = 0; i < kept.pairs.edge_edge.size(); ++i) {
+    if (view.may_be_within(kept.edge_edge_distance[i], distance)) {
+      visit(edge_edge_nodes(e, kept.pairs.edge_edge[i]), true);
+    }
+  }
+}
+
 }  // namespace
 
 SelfContactFamily::SelfContactFamily(std::vector<Index> triangles, double d_hat,
@@ -122,8 +142,10 @@ void SelfContactFamily::find_active(const NodeMatrix& x, ActiveElements& out) co
   out = ActiveElements{};
   out.width = 4;
   const double s_hat = d_hat_ * d_hat_;
-  const auto c = cache_->candidates(x, triangles_, edges_);
-  for_each_pair(*c, triangles_, edges_, [&](const std::array<Index, 4>& n, bool edge_edge) {
+  // Only pairs that may be within d_hat: the others would fail the tests below.
+  const elements::KeptView view = cache_->candidates(x, triangles_, edges_);
+  for_each_kept_within(view, d_hat_, triangles_, edges_,
+                       [&](const std::array<Index, 4>& n, bool edge_edge) {
     if (box_gap(x, n, edge_edge) >= d_hat_) return;  // the list holds pairs to 2 d_hat
     if (squared_distance(x, n, edge_edge) >= s_hat) return;  // beyond d_hat: no energy
     out.nodes.insert(out.nodes.end(), n.begin(), n.end());
@@ -218,18 +240,28 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
   const NodeMatrix x0 = deformed(X, u);
   const NodeMatrix dx = Eigen::Map<const NodeMatrix>(du.data(), X.rows(), 3);
   const NodeMatrix x1 = x0 + dx;
+  elements::CcdOptions options;
+  const double eta = options.conservative_rescaling;
+  // ACCD (contact_ccd.cpp) finds no impact for a pair whose first advance, eta d / l_p from
+  // its gap d at x0, already covers the step: it returns t_max without a second distance.
+  // Its rate l_p is the largest move on each side after the pair's mean move is taken off;
+  // a node's move less the mean of four is at most (3/4 + 3/4) max |dx|, so l_p <= 3 max
+  // |dx|. Pairs farther than twice 3 max |dx| / eta at x0 (the factor 2 absorbs the rounding
+  // of the distances and of l_p) thus cannot shorten the step.
+  const double largest = dx.rows() ? dx.rowwise().norm().maxCoeff() : 0.0;
+  const double far = 2.0 * 3.0 * largest / eta;
   // The kept candidates cover the step when it is short beside the list's skin; otherwise
   // those of the swept boxes, which hold every pair that may meet along it.
-  auto c = cache_->candidates(x0, triangles_, edges_, &dx);
-  if (!c) {
-    c = std::make_shared<const ContactCandidates>(
-        elements::contact_candidates(x0, triangles_, edges_, 0.0, dx));
-  }
+  const elements::KeptView view = cache_->candidates(x0, triangles_, edges_, &dx);
+  // Every pair that is not excluded is farther than the list's clearance: when that is
+  // beyond `far`, no check would shorten the step, and it is taken as it is (the same 1
+  // the checks would give, at the cost of a pass over the nodes). Converged Newton
+  // corrections, far shorter than the gaps, take this way.
+  if (view.list && far <= view.clearance()) return 1.0;
   double fraction = 1.0;
-  for_each_pair(*c, triangles_, edges_, [&](const std::array<Index, 4>& n, bool edge_edge) {
+  auto check = [&](const std::array<Index, 4>& n, bool edge_edge) {
     const auto ccd = edge_edge ? elements::edge_edge_ccd
                                : elements::point_triangle_ccd;
-    elements::CcdOptions options;
     options.t_max = fraction;  // only an earlier impact can shorten the step further
     // ACCD's first advance, eta gap / rate, from a lower bound of the gap: when it already
     // reaches t_max, ACCD would find no impact (most candidates, at a fraction of its cost).
@@ -238,7 +270,14 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
     const auto toi = ccd(row(x0, n[0]), row(x0, n[1]), row(x0, n[2]), row(x0, n[3]),
                          row(x1, n[0]), row(x1, n[1]), row(x1, n[2]), row(x1, n[3]), options);
     if (toi.impact) fraction = std::min(fraction, toi.toi);
-  });
+  };
+  if (view.list) {
+    // Only the kept pairs that may be within `far` of each other at x0.
+    for_each_kept_within(view, far, triangles_, edges_, check);
+  } else {
+    for_each_pair(elements::contact_candidates(x0, triangles_, edges_, 0.0, dx), triangles_,
+                  edges_, check);
+  }
   return fraction;
 }
 

@@ -158,6 +158,7 @@ PathResult follow_adaptive(PathControl& control, assembly::Assembler& assembler,
       predicted = previous.t >= 0.0 ? hermite_u(previous, a, t1)
                                     : VectorX(a.u + (t1 - a.t) * a.velocity);
       b.u = predicted;
+      shorten_to_barriers(assembler.model(), a.u, b.u);  // no pair crosses on the way there
       b.outcome = newton(b.u, t1);
     }
     // Past a bifurcation a predicted start may land on a less stable branch than the one
@@ -221,13 +222,17 @@ PathResult follow_adaptive(PathControl& control, assembly::Assembler& assembler,
     if (ok) {
       // The samples in (a.t, b.t]: b itself, or the Hermite curves (displacements, forces,
       // energies) between a and b; across a located event, Newton at the sample.
+      // With a barrier (contact) a curve between two states that are apart may still pass
+      // a pair through each other: each sample is then solved by Newton from it instead,
+      // its start shortened from a as every move is.
       const bool same_stability = a.negative == b.negative;
+      const bool interpolate = same_stability && !families_limit_steps(assembler.model());
       while (next <= steps && sample_at(next) <= b.t) {
         const double ts = sample_at(next);
         PathStep step;
         if (ts == b.t) {
           step = as_step(b);
-        } else if (same_stability) {
+        } else if (interpolate) {
           step.load_factor = ts;
           step.displacement = hermite_u(a, b, ts);
           control.apply(ts, step.displacement, external);  // the held DOFs exactly
@@ -240,6 +245,7 @@ PathResult follow_adaptive(PathControl& control, assembly::Assembler& assembler,
         } else {
           ++result.attempted_increments;
           VectorX w = hermite_u(a, b, ts);
+          shorten_to_barriers(assembler.model(), a.u, w);
           const NewtonOutcome o = newton(w, ts);
           if (!accepted(o)) {
             ok = false;

@@ -17,6 +17,11 @@
 /// then ends on, converged by Newton as in fixed steps). No increment crosses a change of
 /// the tangent's negative-eigenvalue count, a hinge crossing a limit of the enhanced linear
 /// law, or a cable going taut or slack: each is located to 1e-3 of a sample spacing first.
+/// With a barrier among the model's families (contact), every move is limited by its
+/// collision check: each predictor is shortened from the last converged point, and the
+/// samples inside an increment are converged by Newton from the Hermite curve (so shortened
+/// too) rather than interpolated, since a curve between two states whose panels are apart
+/// may still pass them through each other.
 
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/solvers/newton.hpp"

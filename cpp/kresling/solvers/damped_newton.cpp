@@ -9,6 +9,7 @@ namespace kresling::solvers {
 NewtonOutcome damped_newton(assembly::Assembler& assembler, TangentSolver& solver, VectorX& u,
                             const NewtonOptions& options, double damping) {
   NewtonOutcome out;
+  const bool limited = families_limit_steps(assembler.model());
   VectorX force;
   while (out.iterations < options.max_iterations) {
     check_interrupt();
@@ -22,7 +23,15 @@ NewtonOutcome damped_newton(assembly::Assembler& assembler, TangentSolver& solve
       return out;
     }
     out.negative_eigenvalues = info.negative_eigenvalues;
-    scatter_add_rows(assembler, damping * du, u);
+    if (limited) {
+      // Shortened further where a barrier would be stepped across (newton.hpp).
+      VectorX step = VectorX::Zero(u.size());
+      scatter_add_rows(assembler, damping * du, step);
+      const double fraction = barrier_step_fraction(assembler.model(), u, step);
+      u += (fraction < 1.0 ? fraction : 1.0) * step;
+    } else {
+      scatter_add_rows(assembler, damping * du, u);
+    }
     if (du.norm() <= options.tolerance) {
       out.converged = true;
       return out;

@@ -11,7 +11,9 @@ namespace kresling::solvers {
 
 /// Iterate from `u` (all DOFs, updated in place) with corrections damping * du, at most
 /// options.max_iterations times; converged once an undamped correction du is <=
-/// options.tolerance. No external force (MERLIN2 damps displacement control only).
+/// options.tolerance. No external force (MERLIN2 damps displacement control only). Each
+/// damped correction is shortened further to what the model's barriers allow
+/// (barrier_step_fraction), as Newton's are.
 NewtonOutcome damped_newton(assembly::Assembler& assembler, TangentSolver& solver, VectorX& u,
                             const NewtonOptions& options, double damping);
 

@@ -117,6 +117,7 @@ NewtonOutcome MgdcmControl::correct(Increment& increment, assembly::Assembler& a
   if (extra) throw std::invalid_argument("MGDCM: its corrector takes no extra terms");
   const int limit = max_iterations > 0 ? max_iterations : newton.max_iterations;
   const VectorX F = gather_rows(assembler, forces_);
+  const bool limited = families_limit_steps(assembler.model());
   VectorX force;
   double lambda = increment.from;
   trial_direction_ = direction_;
@@ -151,8 +152,24 @@ NewtonOutcome MgdcmControl::correct(Increment& increment, assembly::Assembler& a
       outcome_.failure = "the iteration produced NaN";
       break;
     }
-    scatter_add_rows(assembler, du, u);
-    lambda += dl;
+    if (limited) {
+      // A barrier must not be stepped across: the correction and its load increment are
+      // shortened together (the point moves along the same line of (u, lambda)), while the
+      // full correction's size decides convergence, as in Newton's own.
+      VectorX step = VectorX::Zero(u.size());
+      scatter_add_rows(assembler, du, step);
+      const double fraction = barrier_step_fraction(assembler.model(), u, step);
+      if (fraction < 1.0) {
+        u += fraction * step;
+        lambda += fraction * dl;
+      } else {
+        u += step;
+        lambda += dl;
+      }
+    } else {
+      scatter_add_rows(assembler, du, u);
+      lambda += dl;
+    }
     const double err = du.norm();
     corrections_.push_back(err);
     if (err <= newton.tolerance) {

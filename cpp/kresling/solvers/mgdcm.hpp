@@ -14,7 +14,10 @@
 /// corrections stall at an accuracy floor above the tolerance (round-off near a singular
 /// tangent, at a bifurcation or limit point), a shorter step cannot help, so the increment
 /// is retried with a longer one, to land past the singular point; where that fails too the
-/// path ends with the floor and the tolerance it would need.
+/// path ends with the floor and the tolerance it would need. With a barrier among the
+/// model's families (contact), each correction and its load increment are shortened
+/// together to the fraction the collision check allows (barrier_step_fraction), so that no
+/// iterate steps across it.
 ///
 /// MGDCM is a configuration of the path follower (path_follower.hpp): MgdcmControl is the
 /// control whose corrector solves each increment's load factor with the displacements, and
