@@ -98,10 +98,11 @@ def test_with_contact_the_cell_rests_on_itself_with_its_panels_apart(touching):
     assert 0.0 < positions[-1][N + 1:, 2].mean() < 4 * D_HAT
 
 
-def test_a_prescribed_motion_through_the_base_is_refused_at_contact_not_taken():
-    # The top polygon driven 3 mm past the base (displacement control): the drive sets the
-    # top's DOFs itself, so the barrier cannot shorten that move as it shortens Newton's
-    # corrections. Without contact the drive takes the top through the base; with it, the
+@pytest.mark.parametrize("adaptive", [False, True], ids=["fixed", "adaptive"])
+def test_a_prescribed_motion_through_the_base_is_refused_at_contact_not_taken(adaptive):
+    # The top polygon driven 3 mm past the base (displacement control, in fixed or adaptive
+    # increments): the drive sets the top's DOFs itself, so the barrier cannot shorten that
+    # move as it shortens Newton's corrections. Without contact the drive takes the top through the base; with it, the
     # increments are halved as the top nears the base and the path ends there, saying why,
     # with the top above the base at every recorded increment.
     design = Design(N, 0.8, 0.0, 30.0)
@@ -117,7 +118,8 @@ def test_a_prescribed_motion_through_the_base_is_refused_at_contact_not_taken():
                 "stiffness": [1.0]}})
         prescribed = np.zeros((model.num_nodes, 3))
         prescribed[N + 1:, 2] = -(height + 3.0)
-        path = solve_displacement_control(model, prescribed, 100, extrapolation=3)
+        path = solve_displacement_control(model, prescribed, 100, extrapolation=3,
+                                          adaptive=adaptive)
         top = [(model.nodes + u.reshape(-1, 3))[N + 1:, 2].min() for u in path.displacement]
         if not contact:
             assert path.completed and top[-1] == pytest.approx(-3.0)

@@ -55,9 +55,18 @@ PathResult follow_adaptive(PathControl& control, assembly::Assembler& assembler,
   const double smallest = std::ldexp(spacing, -options.max_bisections);
   const double event_width = kEventWidth * spacing;
   auto sample_at = [&](int k) { return k == steps ? 1.0 : k * spacing; };
-  auto newton = [&](VectorX& w, double t) {
+  // Newton at t from w; `from` (the last equilibrium) when the drive's held DOFs move from
+  // there, checked against the barriers first (start_within_barriers: a prescribed jump the
+  // barriers cannot shorten).
+  const std::vector<Index> held = control.held_dofs();
+  auto newton = [&](VectorX& w, double t, const VectorX* from = nullptr) {
     bind(t);
     control.apply(t, w, external);
+    if (from != nullptr && !start_within_barriers(assembler.model(), *from, w, held)) {
+      NewtonOutcome blocked;
+      blocked.failure = kHeldMoveBlocked;
+      return blocked;
+    }
     const NewtonOutcome outcome = newton_equilibrium(assembler, solver, w, external,
                                                      options.newton, newton_limit);
     result.newton_iterations += outcome.iterations;
@@ -159,7 +168,7 @@ PathResult follow_adaptive(PathControl& control, assembly::Assembler& assembler,
                                     : VectorX(a.u + (t1 - a.t) * a.velocity);
       b.u = predicted;
       shorten_to_barriers(assembler.model(), a.u, b.u);  // no pair crosses on the way there
-      b.outcome = newton(b.u, t1);
+      b.outcome = newton(b.u, t1, &a.u);
     }
     // Past a bifurcation a predicted start may land on a less stable branch than the one
     // the last equilibrium leads on to (the branch the fixed-step path follows): retry from
@@ -167,7 +176,7 @@ PathResult follow_adaptive(PathControl& control, assembly::Assembler& assembler,
     if (!located && accepted(b.outcome) && a.negative >= 0 &&
         b.outcome.negative_eigenvalues > a.negative) {
       VectorX plain = a.u;
-      const NewtonOutcome retry = newton(plain, t1);
+      const NewtonOutcome retry = newton(plain, t1, &a.u);
       if (accepted(retry) && retry.negative_eigenvalues >= 0 &&
           retry.negative_eigenvalues < b.outcome.negative_eigenvalues) {
         b.u = plain;
@@ -246,7 +255,7 @@ PathResult follow_adaptive(PathControl& control, assembly::Assembler& assembler,
           ++result.attempted_increments;
           VectorX w = hermite_u(a, b, ts);
           shorten_to_barriers(assembler.model(), a.u, w);
-          const NewtonOutcome o = newton(w, ts);
+          const NewtonOutcome o = newton(w, ts, &a.u);
           if (!accepted(o)) {
             ok = false;
             b.outcome.failure = "a sample inside the increment: " + why(o);

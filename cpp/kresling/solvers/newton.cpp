@@ -77,12 +77,14 @@ const char* const kHeldMoveBlocked =
     "the prescribed motion would carry panels into each other within the increment (the "
     "contact barrier holds them apart; the drive cannot go on past where they touch)";
 
-bool held_move_blocked(const model::Model& model, const VectorX& from, const VectorX& to,
-                       const std::vector<Index>& held) {
-  if (held.empty() || !families_limit_steps(model)) return false;
-  VectorX move = VectorX::Zero(from.size());
-  for (Index i : held) move[i] = to[i] - from[i];
-  return barrier_step_fraction(model, from, move) < 1.0;
+bool start_within_barriers(const model::Model& model, const VectorX& from, VectorX& start,
+                           const std::vector<Index>& held) {
+  if (held.empty() || !families_limit_steps(model)) return true;
+  VectorX moved = from;  // `from` with only the held DOFs moved
+  for (Index i : held) moved[i] = start[i];
+  if (barrier_step_fraction(model, from, moved - from) < 1.0) return false;
+  shorten_to_barriers(model, moved, start);
+  return true;
 }
 
 double barrier_step_fraction(const model::Model& model, const VectorX& u, const VectorX& du) {

@@ -65,15 +65,17 @@ bool families_limit_steps(const model::Model& model);
 /// allows; `to` is left as it is when the model has no barrier or the whole move is allowed.
 void shorten_to_barriers(const model::Model& model, const VectorX& from, VectorX& to);
 
-/// A drive's own move of the DOFs it holds (a prescribed displacement) is not a correction
-/// the barriers may shorten: the drive sets those DOFs exactly. True when moving only the
-/// `held` DOFs from their values in `from` to those in `to` (all DOFs each) would close a
-/// pair past what barrier_step_fraction allows, i.e. the drive would carry panels into or
-/// through each other within the increment; false when the model has no barrier.
-bool held_move_blocked(const model::Model& model, const VectorX& from, const VectorX& to,
-                       const std::vector<Index>& held);
+/// An increment's start under a drive that sets the DOFs it holds (a prescribed
+/// displacement): the barriers cannot shorten that move, so it is checked on its own.
+/// Returns false when moving only the `held` DOFs from their values in `from` to those in
+/// `start` (all DOFs each) would close a pair past what barrier_step_fraction allows (the
+/// drive would carry panels into or through each other within the increment); otherwise
+/// shortens the free DOFs' part of the start, from there, as shorten_to_barriers does, and
+/// returns true. Without a barrier in the model, or with no held DOF, nothing is done.
+bool start_within_barriers(const model::Model& model, const VectorX& from, VectorX& start,
+                           const std::vector<Index>& held);
 
-/// The failure of an increment whose held move is blocked (held_move_blocked).
+/// The failure of an increment whose held move is blocked (start_within_barriers).
 extern const char* const kHeldMoveBlocked;
 
 /// Before factorising the tangent just assembled: tell `solver` its pattern when the model

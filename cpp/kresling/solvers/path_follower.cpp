@@ -58,15 +58,10 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     // The drive's move of its held DOFs is checked on its own (the barriers cannot shorten
     // it): an increment whose prescribed motion would close a contact fails and is halved,
     // so a path never jumps through a pair the free DOFs' corrections would keep apart.
-    if (held_move_blocked(assembler.model(), u, trial, held)) {
+    if (!start_within_barriers(assembler.model(), u, trial, held)) {
       NewtonOutcome blocked;
       blocked.failure = kHeldMoveBlocked;
       return blocked;
-    }
-    if (!held.empty() && families_limit_steps(assembler.model())) {
-      VectorX moved = u;  // the last equilibrium with only the held DOFs moved
-      for (Index i : held) moved[i] = trial[i];
-      shorten_to_barriers(assembler.model(), moved, trial);  // the free DOFs' start from it
     }
     const int limit = increment.newton_limit > 0 ? increment.newton_limit : default_limit;
     ExtraTerms* own = control.extra_terms(increment);
