@@ -1,5 +1,5 @@
 """Rabbit Ear's crane and Origami Simulator's flapping bird folded by Origami Simulator's model
-(studies/origami_simulator_model.py: its equations written again), every target applied at
+(tests/origami_simulator_model.py: its equations written again), every target applied at
 once from the flat sheet as the simulator does when it opens a pattern, and with its
 ingredients switched one at a time (docs/folding.md, 'Folding from flat').
 
@@ -34,12 +34,14 @@ from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
+TESTS = Path(__file__).resolve().parent.parent / "tests"
+sys.path.insert(0, str(TESTS))
 import origami_simulator_model as osm  # noqa: E402
+from origami_simulator_page import simulators_triangles  # noqa: E402
 
 from kresling.io import fold_angles, read_fold, read_pattern  # noqa: E402
 
-PUBLIC = Path(__file__).resolve().parent.parent / "tests" / "data" / "public"
+PUBLIC = TESTS / "data" / "public"
 
 
 def crane():
@@ -52,27 +54,6 @@ def crane():
 def bird():
     pattern = read_pattern(PUBLIC / "origami_simulator" / "flappingBird.svg")
     return pattern, np.nan_to_num(pattern.edges_fold_angle), 0.6
-
-
-def simulators_triangles(pattern, path, folder):
-    """The simulator's triangles of an SVG, in the pattern's vertex numbers (matched by
-    position: it lays the sheet in its x-z plane)."""
-    sys.path.insert(0, str(PUBLIC.parent.parent))
-    from origami_simulator_page import import_svg
-    folder.mkdir(parents=True, exist_ok=True)
-    built = import_svg(path, folder)
-    theirs = np.array(built["vertices"])[:, [0, 2]]
-    ours = np.asarray(pattern.vertices)[:, :2]
-    best = None
-    for flip in ((1, 1), (1, -1), (-1, 1), (-1, -1)):
-        q = theirs * flip
-        q = (q - q.min(axis=0)) / np.ptp(q, axis=0).max()
-        p = (ours - ours.min(axis=0)) / np.ptp(ours, axis=0).max()
-        d = np.linalg.norm(q[:, None] - p[None], axis=2)
-        if best is None or d.min(axis=1).max() < best[0]:
-            best = (d.min(axis=1).max(), d.argmin(axis=1))
-    assert best[0] < 1e-6 and len(set(best[1])) == len(ours), "vertices do not match"
-    return best[1][np.array(built["triangles"])]
 
 
 def other_way(pattern, model, run, targets):
@@ -108,11 +89,11 @@ def main(argv=None):
         make = makers[name]
         pattern, targets, percent = make()
         runs = [(label, *variant, osm.build(pattern, targets)) for label, variant in variants.items()]
-        if name == "bird":
-            triangles = simulators_triangles(
-                pattern, PUBLIC / "origami_simulator" / "flappingBird.svg",
-                Path(tempfile.mkdtemp()))
-            runs.append(("its triangles", {}, 0, osm.build(pattern, targets, triangles)))
+        svg = PUBLIC / "origami_simulator" / "flappingBird.svg" if name == "bird" else None
+        triangles = simulators_triangles(pattern, Path(tempfile.mkdtemp()), svg)
+        theirs = osm.build(pattern, targets, triangles)
+        runs += [(label + " + its triangles" if change or ramp else "its triangles", change,
+                  ramp, theirs) for label, (change, ramp) in variants.items()]
         for label, change, ramp, model in runs:
             if only and label not in only:
                 continue

@@ -1,5 +1,5 @@
-"""Origami Simulator's model, written again from its equations: the reference the study
-studies/origami_simulator_fold.py folds public patterns with.
+"""Origami Simulator's model, written again from its equations: the reference the tests of
+public folds and studies/origami_simulator_fold.py compare the model's folds with.
 
 Origami Simulator (Ghassaei, Demaine and Gershenfeld, "Fast, Interactive Origami Simulation
 using GPU Computation", 7OSME 2018) folds a triangulated sheet by damped explicit dynamics.
