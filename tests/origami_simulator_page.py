@@ -22,7 +22,10 @@ import shutil
 import subprocess
 from pathlib import Path
 
+import numpy as np
 import pytest
+
+from kresling.io.fold_format import fold_document
 
 JS = Path(__file__).resolve().parent / "data" / "public" / "origami_simulator" / "js"
 SCRIPTS = ("jquery-3.2.1.min.js", "underscore-min.js", "three.min.js", "SVGLoader.js",
@@ -112,3 +115,33 @@ def open_fold(path, folder: Path) -> dict:
               "var event = jQuery.Event('change'); event.target = {files: [file]};"
               "$('#fileSelector').trigger(event);")
     return _run(action, folder)
+
+
+def simulators_triangles(pattern, folder: Path, path=None):
+    """The triangles Origami Simulator folds ``pattern`` on, in the pattern's vertex numbers.
+
+    Its importer triangulates the faces (earcut); from the SVG at ``path``, or, without one,
+    from the pattern written as a FOLD file and opened. Its vertices are matched to the
+    pattern's by position (it lays the sheet in its x-z plane, scaled).
+    """
+    folder.mkdir(parents=True, exist_ok=True)
+    if path is None:
+        path = folder / "pattern.fold"
+        path.write_text(json.dumps(fold_document(
+            pattern.vertices[:, :2], pattern.edges, pattern.edges_assignment, pattern.faces,
+            edges_fold_angle=np.nan_to_num(pattern.edges_fold_angle))))
+        built = open_fold(path, folder)
+    else:
+        built = import_svg(path, folder)
+    theirs = np.array(built["vertices"])[:, [0, 2]]
+    ours = np.asarray(pattern.vertices)[:, :2]
+    best = None
+    for flip in ((1, 1), (1, -1), (-1, 1), (-1, -1)):
+        q = theirs * flip
+        q = (q - q.min(axis=0)) / np.ptp(q, axis=0).max()
+        p = (ours - ours.min(axis=0)) / np.ptp(ours, axis=0).max()
+        d = np.linalg.norm(q[:, None] - p[None], axis=2)
+        if best is None or d.min(axis=1).max() < best[0]:
+            best = (d.min(axis=1).max(), d.argmin(axis=1))
+    assert best[0] < 1e-6 and len(set(best[1])) == len(ours), "vertices do not match"
+    return best[1][np.array(built["triangles"])]

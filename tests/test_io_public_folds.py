@@ -5,6 +5,7 @@ refused up front, naming their hinges."""
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -13,6 +14,9 @@ import pytest
 from kresling.io import fold_angles, read_fold, read_pattern
 from kresling.model import build_pattern_model
 from kresling.simulate import simulate
+import origami_simulator_model as osm
+from kresling.io.fold_format import fold_document
+from origami_simulator_page import needs_browser, simulators_triangles
 from public_files import (MANUAL, ORIGAMI_SIMULATOR, RABBIT_EAR, SHEET, SPEC, STIFF,
                           held_and_far, read)
 
@@ -42,7 +46,7 @@ def test_a_folded_flat_key_frame_is_refused_up_front_naming_its_hinges(path):
 
 # -- folding as the tools show it ------------------------------------------------------------
 
-def _fold(path, keys, targets, steps):
+def _fold(path, keys, targets, steps, material=STIFF):
     """Fold the pattern's creases (M and V) to ``targets`` [deg], one per edge; the model's
     vertices at the end and the fold's summary."""
     pattern = read(path, keys)
@@ -51,7 +55,7 @@ def _fold(path, keys, targets, steps):
                  for edge, letter, target in zip(pattern.edges.tolist(),
                                                  pattern.edges_assignment, targets)
                  if letter in "MV"]
-    sim = simulate({"pattern": {"file": str(path), **keys}, "material": STIFF,
+    sim = simulate({"pattern": {"file": str(path), **keys}, "material": material,
                     "laws": {"fold_limits_deg": [1.0, 359.0]},
                     "support": [{"nodes": held, "fix": "xyz"}], "actuation": actuation,
                     "analysis": {"method": "fold", "steps": steps}}, progress=False)
@@ -112,7 +116,10 @@ def test_the_bird_base_folds_into_its_files_folded_frame(path, crease_frame, fol
 #: foldable. It is not a choice of branch at flat: the flat tangent is positive definite and
 #: the path from it unique (the same end to 5e-11 mm in 10 to 1,000 increments, stable
 #: throughout; docs/folding.md, 'Folding from flat'), so these need a model whose equilibrium
-#: folds them that way, not another start.
+#: folds them that way, not another start. Origami Simulator's model does not fold them so
+#: either, by the faces' normals these tests measure: the crane 19 creases the other way, the
+#: bird 2 (its hinges all in their sense: soft bars, face-angle springs and its triangles
+#: together; test below and studies/origami_simulator_fold.py).
 NOT_YET = pytest.mark.xfail(strict=True, reason="simultaneous folding from flat takes a few "
                                                 "creases the other way (see NOT_YET)")
 
@@ -161,3 +168,94 @@ def test_origami_simulators_patterns_fold_at_its_default_percent_each_crease_in_
     reached = np.degrees(fold_angles(pattern.faces, pattern.edges, x))[creases]
     assert np.all(np.sign(reached) == np.sign(targets[creases]))
     assert np.all(np.abs(reached) > 0.5 * np.abs(targets[creases]))
+
+
+def _on_simulators_triangles(pattern, triangles, targets, folder):
+    """The pattern split into the simulator's triangles, written as a FOLD file: its edges
+    and letters as they are, the new diagonals joins (``J``: bend hinges, the faces one
+    panel); the file and the targets [deg] per edge of it."""
+    edges = [tuple(e) for e in pattern.edges.tolist()]
+    known = {frozenset(e) for e in edges}
+    letters, angles = list(pattern.edges_assignment), list(targets)
+    for triangle in triangles.tolist():
+        for side in zip(triangle, triangle[1:] + triangle[:1]):
+            if frozenset(side) not in known:
+                known.add(frozenset(side))
+                edges.append(side)
+                letters.append("J")
+                angles.append(0.0)
+    xy = pattern.vertices[:, :2]
+
+    def area(t):                       # twice the signed area: > 0 counter-clockwise
+        (ax, ay), (bx, by), (cx, cy) = xy[t]
+        return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    counter_clockwise = [t if area(t) > 0 else t[::-1] for t in triangles.tolist()]
+    path = folder / "on_triangles.fold"
+    path.write_text(json.dumps(fold_document(pattern.vertices, edges, letters,
+                                             counter_clockwise, edges_fold_angle=angles)))
+    return path, np.array(angles)
+
+
+@pytest.mark.slow
+@needs_browser
+def test_the_crane_folds_as_origami_simulators_model_on_its_triangles_with_its_bars(tmp_path):
+    """Rabbit Ear's crane at a tenth of its +-180 deg, folded here on the triangles Origami
+    Simulator splits it into, with its bars' stiffness against the creases', and by the
+    simulator's own model (tests/origami_simulator_model.py, from Ghassaei, Demaine and
+    Gershenfeld 2018: bars of stiffness 20 / L0, hinges 0.7 L0 towards their targets times
+    the crease percent, face-angle springs 0.2, damped explicit dynamics from flat with
+    every target at once): both take the same creases the other way, and every crease to
+    within a degree."""
+    crane = read_fold(RABBIT_EAR / "crane.fold", **SHEET)
+    pattern = read_fold(RABBIT_EAR / "crane.fold", **SHEET, frame=1)
+    targets = np.where(np.array(crane.edges_assignment) == "M", -180.0, 180.0)
+    creases = np.array([a in "MV" for a in pattern.edges_assignment])
+    triangles = simulators_triangles(pattern, tmp_path / "simulator")
+    reference = osm.build(pattern, targets, triangles)
+    run = osm.integrate(reference, 0.1)
+    assert run.settled
+    theirs = np.degrees(fold_angles(pattern.faces, pattern.edges, run.x))
+    # This model: the simulator's bars are 20 / 0.7 times as stiff as its creases per length
+    # (a ratio free of the sheet's scale); its panels' diagonals as stiff as the creases.
+    path, on_triangles = _on_simulators_triangles(pattern, triangles, 0.1 * targets, tmp_path)
+    soft = dict(STIFF, bar_modulus=osm.AXIAL_STIFFNESS / osm.CREASE_STIFFNESS)
+    _, x, report = _fold(path, {}, on_triangles, steps=10, material=soft)
+    ours = np.degrees(fold_angles(pattern.faces, pattern.edges, x[:pattern.num_vertices]))
+    other_way = creases & (np.sign(theirs) != np.sign(targets)) & (np.abs(theirs) > 1.0)
+    assert other_way.sum() >= 10                    # measured 19 of 102
+    both_moved = creases & (np.abs(theirs) > 1.0) & (np.abs(ours) > 1.0)
+    assert both_moved.sum() > 0.9 * creases.sum()   # measured 95
+    assert np.all(np.sign(ours[both_moved]) == np.sign(theirs[both_moved]))
+    # Within 1 deg on every crease (measured 0.78 deg, median 0.15): this model has no
+    # face-angle springs, and the dynamics stops at a kinetic energy of 1e-10 per node.
+    assert np.max(np.abs(ours - theirs)[creases]) < 1.0
+
+
+@pytest.mark.slow
+@needs_browser
+@pytest.mark.xfail(strict=True, reason="with the simulator's soft bars the fold from flat "
+                                       "stops (Newton fails) at 45 to 70 % of the way")
+def test_the_flapping_bird_folds_as_origami_simulators_model_on_its_triangles(tmp_path):
+    """Origami Simulator's flapping bird at its opening 60 %, by the simulator's own model
+    (tests/origami_simulator_model.py, from Ghassaei, Demaine and Gershenfeld 2018: bars of
+    stiffness 20 / L0, hinges 0.7 L0 towards their targets times the crease percent,
+    face-angle springs 0.2, damped explicit dynamics from flat with every target at once)
+    on its own triangles: every crease's hinge in its sense. Folded here on those triangles
+    with the simulator's bars' stiffness against the creases', each crease's hinge should
+    go the way the simulator's does."""
+    path = ORIGAMI_SIMULATOR / "flappingBird.svg"
+    pattern = read_pattern(path)
+    targets = np.nan_to_num(pattern.edges_fold_angle)
+    triangles = simulators_triangles(pattern, tmp_path / "simulator", path)
+    reference = osm.build(pattern, targets, triangles)
+    run = osm.integrate(reference, 0.6)
+    assert run.settled
+    theirs = osm.hinge_angles(reference, run.x)
+    driven = reference.hinge_is_crease
+    assert np.all(np.sign(theirs[driven]) == np.sign(reference.hinge_target[driven]))
+    fold_file, on_triangles = _on_simulators_triangles(pattern, triangles, 0.6 * targets,
+                                                       tmp_path)
+    soft = dict(STIFF, bar_modulus=osm.AXIAL_STIFFNESS / osm.CREASE_STIFFNESS)
+    _, x, report = _fold(fold_file, {}, on_triangles, steps=20, material=soft)
+    ours = osm.hinge_angles(reference, x[:pattern.num_vertices])
+    assert np.all(np.sign(ours[driven]) == np.sign(theirs[driven]))
