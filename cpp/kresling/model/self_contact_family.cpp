@@ -239,7 +239,6 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
                                      const VectorX& du) const {
   const NodeMatrix x0 = deformed(X, u);
   const NodeMatrix dx = Eigen::Map<const NodeMatrix>(du.data(), X.rows(), 3);
-  const NodeMatrix x1 = x0 + dx;
   elements::CcdOptions options;
   const double eta = options.conservative_rescaling;
   // ACCD (contact_ccd.cpp) finds no impact for a pair whose first advance, eta d / l_p from
@@ -258,6 +257,7 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
   // the checks would give, at the cost of a pass over the nodes). Converged Newton
   // corrections, far shorter than the gaps, take this way.
   if (view.list && far <= view.clearance()) return 1.0;
+  const NodeMatrix x1 = x0 + dx;
   double fraction = 1.0;
   auto check = [&](const std::array<Index, 4>& n, bool edge_edge) {
     const auto ccd = edge_edge ? elements::edge_edge_ccd

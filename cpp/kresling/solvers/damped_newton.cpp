@@ -23,15 +23,8 @@ NewtonOutcome damped_newton(assembly::Assembler& assembler, TangentSolver& solve
       return out;
     }
     out.negative_eigenvalues = info.negative_eigenvalues;
-    if (limited) {
-      // Shortened further where a barrier would be stepped across (newton.hpp).
-      VectorX step = VectorX::Zero(u.size());
-      scatter_add_rows(assembler, damping * du, step);
-      const double fraction = barrier_step_fraction(assembler.model(), u, step);
-      u += (fraction < 1.0 ? fraction : 1.0) * step;
-    } else {
-      scatter_add_rows(assembler, damping * du, u);
-    }
+    // Shortened further where a barrier would be stepped across (newton.hpp).
+    add_correction_within_barriers(assembler, damping * du, u, limited);
     if (du.norm() <= options.tolerance) {
       out.converged = true;
       return out;

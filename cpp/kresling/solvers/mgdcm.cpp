@@ -152,24 +152,11 @@ NewtonOutcome MgdcmControl::correct(Increment& increment, assembly::Assembler& a
       outcome_.failure = "the iteration produced NaN";
       break;
     }
-    if (limited) {
-      // A barrier must not be stepped across: the correction and its load increment are
-      // shortened together (the point moves along the same line of (u, lambda)), while the
-      // full correction's size decides convergence, as in Newton's own.
-      VectorX step = VectorX::Zero(u.size());
-      scatter_add_rows(assembler, du, step);
-      const double fraction = barrier_step_fraction(assembler.model(), u, step);
-      if (fraction < 1.0) {
-        u += fraction * step;
-        lambda += fraction * dl;
-      } else {
-        u += step;
-        lambda += dl;
-      }
-    } else {
-      scatter_add_rows(assembler, du, u);
-      lambda += dl;
-    }
+    // A barrier must not be stepped across: the correction and its load increment are
+    // shortened together (the point moves along the same line of (u, lambda)), while the
+    // full correction's size decides convergence, as in Newton's own.
+    const double fraction = add_correction_within_barriers(assembler, du, u, limited);
+    lambda += fraction < 1.0 ? fraction * dl : dl;
     const double err = du.norm();
     corrections_.push_back(err);
     if (err <= newton.tolerance) {

@@ -46,8 +46,8 @@ double mechanism_scale(const assembly::Assembler& assembler) {
 // families allow (a barrier that must not be stepped across).
 void apply_correction(assembly::Assembler& assembler, const VectorX& du, VectorX& u,
                       ExtraTerms* extra, bool limited) {
-  if (extra == nullptr && !limited) {
-    scatter_add_rows(assembler, du, u);
+  if (extra == nullptr) {
+    add_correction_within_barriers(assembler, du, u, limited);
     return;
   }
   VectorX step = VectorX::Zero(u.size());
@@ -64,6 +64,19 @@ bool families_limit_steps(const model::Model& model) {
     if (family->limits_steps()) return true;
   }
   return false;
+}
+
+double add_correction_within_barriers(const assembly::Assembler& assembler, const VectorX& du,
+                                      VectorX& u, bool limited) {
+  if (!limited) {
+    scatter_add_rows(assembler, du, u);
+    return 1.0;
+  }
+  VectorX step = VectorX::Zero(u.size());
+  scatter_add_rows(assembler, du, step);
+  const double fraction = std::min(1.0, barrier_step_fraction(assembler.model(), u, step));
+  u += fraction * step;
+  return fraction;
 }
 
 void shorten_to_barriers(const model::Model& model, const VectorX& from, VectorX& to) {

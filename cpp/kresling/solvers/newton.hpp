@@ -61,6 +61,12 @@ double barrier_step_fraction(const model::Model& model, const VectorX& u, const 
 /// Whether any element family of the model limits each move (a contact barrier).
 bool families_limit_steps(const model::Model& model);
 
+/// Add the correction `du` (one entry per assembled row) to `u` (all DOFs), shortened to
+/// what the model's barriers allow when `limited` (families_limit_steps of the model);
+/// returns the fraction of it taken (1 when not limited). Every corrector's update.
+double add_correction_within_barriers(const assembly::Assembler& assembler, const VectorX& du,
+                                      VectorX& u, bool limited);
+
 /// Shorten the move from `from` to `to` (all DOFs) to the fraction barrier_step_fraction
 /// allows; `to` is left as it is when the model has no barrier or the whole move is allowed.
 void shorten_to_barriers(const model::Model& model, const VectorX& from, VectorX& to);
