@@ -25,7 +25,9 @@ PRESS = 30.0         # N on the top polygon, shared by its corners (over five ti
                      # snap force of the same cell with Lc = 1 mm, 5.3 N)
 
 
-def _pressed(contact: bool):
+def _cell(contact: bool):
+    """The flat-contracting cell, extended, its base polygon held; with contact its
+    triangles are a self_contact family. The specimen, the model and the triangles."""
     design = Design(N, 0.8, 0.0, 30.0)
     fixed = np.zeros((2 * (N + 1), 3), bool)
     fixed[: N + 1] = True                                   # the base polygon held
@@ -35,6 +37,11 @@ def _pressed(contact: bool):
     if contact:
         model = model.replace(families={"self_contact": {
             "triangles": triangles, "distance": [D_HAT], "stiffness": [1.0]}})
+    return specimen, model, triangles
+
+
+def _pressed(contact: bool):
+    _, model, triangles = _cell(contact)
     forces = np.zeros((model.num_nodes, 3))
     forces[N + 1: 2 * N + 1, 2] = -PRESS / N
     path = solve_force_control(model, forces, 80)
@@ -102,20 +109,12 @@ def test_with_contact_the_cell_rests_on_itself_with_its_panels_apart(touching):
 def test_a_prescribed_motion_through_the_base_is_refused_at_contact_not_taken(adaptive):
     # The top polygon driven 3 mm past the base (displacement control, in fixed or adaptive
     # increments): the drive sets the top's DOFs itself, so the barrier cannot shorten that
-    # move as it shortens Newton's corrections. Without contact the drive takes the top through the base; with it, the
-    # increments are halved as the top nears the base and the path ends there, saying why,
-    # with the top above the base at every recorded increment.
-    design = Design(N, 0.8, 0.0, 30.0)
-    fixed = np.zeros((2 * (N + 1), 3), bool)
-    fixed[: N + 1] = True
-    specimen = kresling_specimen(design, ["extended"], fixed=fixed)
-    height = float(specimen.level_height[-1])
+    # move as it shortens Newton's corrections. Without contact the drive takes the top
+    # through the base; with it, the increments are halved as the top nears the base and the
+    # path ends there, saying why, with the top above the base at every recorded increment.
     for contact in (False, True):
-        model = specimen.model
-        if contact:
-            model = model.replace(families={"self_contact": {
-                "triangles": specimen_triangles(specimen), "distance": [D_HAT],
-                "stiffness": [1.0]}})
+        specimen, model, _ = _cell(contact)
+        height = float(specimen.level_height[-1])
         prescribed = np.zeros((model.num_nodes, 3))
         prescribed[N + 1:, 2] = -(height + 3.0)
         path = solve_displacement_control(model, prescribed, 100, extrapolation=3,
