@@ -4,6 +4,7 @@
 
 #include "kresling/model/bar_family.hpp"
 #include "kresling/model/cable_family.hpp"
+#include "kresling/model/face_angle_family.hpp"
 #include "kresling/model/hinge_family.hpp"
 #include "kresling/model/plane_contact_family.hpp"
 #include "kresling/model/self_contact_family.hpp"
@@ -23,6 +24,8 @@ const std::vector<FamilyKind>& family_kinds() {
       {"contact", &PlaneContactFamily::from_table, "nodes kept off rigid planes by a barrier"},
       {"self_contact", &SelfContactFamily::from_table,
        "panels (triangles) kept off each other by a barrier"},
+      {"face_angles", &FaceAngleFamily::from_table,
+       "springs on the interior angles of triangles (the panels' in-plane shear)"},
   };
   return kinds;
 }
