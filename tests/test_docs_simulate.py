@@ -52,6 +52,9 @@ VARIANTS = [
      "dynamics": {"scheme": "explicit", "time_step": 1e-5, "duration": 0.01,
                   "record_every": 10},
      "analysis": {"method": "dynamic", "stop": {"node": 3, "axis": "z", "beyond": 1.0}}},
+    {**FORCE, "actuation": [{"edges": [[0, 2]], "fold_angle_deg": 10.0}],
+     "analysis": {"method": "fold", "steps": 2, "snap": True,
+                  "stop": {"node": 3, "axis": "z", "beyond": 1.0}}},
 ]
 # The page's heading of each table, and where in the problem the unknown key goes.
 TABLES = {

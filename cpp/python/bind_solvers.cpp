@@ -78,6 +78,11 @@ void bind_path_result(py::module_& m) {
         for (std::size_t k = 0; k < r.steps.size(); ++k) out[k] = r.steps[k].negative_eigenvalues;
         return out;
       })
+      .def_property_readonly("snapped", [](const PathResult& r) {
+        Eigen::Matrix<bool, Eigen::Dynamic, 1> out(static_cast<Index>(r.steps.size()));
+        for (std::size_t k = 0; k < r.steps.size(); ++k) out[k] = r.steps[k].snapped;
+        return out;
+      })
       .def_readonly("completed", &PathResult::completed)
       .def_readonly("message", &PathResult::message)
       .def_readonly("failed_increment", &PathResult::failed_increment)
@@ -254,7 +259,8 @@ void bind_solvers(py::module_& m) {
       .def_readwrite("max_bisections", &FoldOptions::max_bisections)
       .def_readwrite("extrapolation", &FoldOptions::extrapolation)
       .def_readwrite("adaptive", &FoldOptions::adaptive)
-      .def_readwrite("adaptive_tolerance", &FoldOptions::adaptive_tolerance);
+      .def_readwrite("adaptive_tolerance", &FoldOptions::adaptive_tolerance)
+      .def_readwrite("snap", &FoldOptions::snap);
 
   m.def(
       "fold",

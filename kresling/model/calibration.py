@@ -75,15 +75,27 @@ class ManualProperties:
     fold_stiffness, bend_stiffness : float or array_like, optional
         Rotational stiffness per unit hinge length [N*mm/rad/mm]; needed when the pattern
         has hinges of that kind.
+    face_stiffness : float, optional
+        Stiffness of a spring on every interior angle of every triangle of the model
+        [N*mm/rad^2]: the panels' in-plane shear stiffness beside their bars, as Origami
+        Simulator gives its faces (energy ``k/2 (alpha - alpha0)^2`` per corner; the
+        ``face_angles`` element family). None or 0: no such springs.
     """
 
     bar_modulus: float
     bar_area: object
     fold_stiffness: object = None
     bend_stiffness: object = None
+    face_stiffness: object = None
 
     def __post_init__(self):
         object.__setattr__(self, "bar_modulus", as_positive_real("bar_modulus", self.bar_modulus))
+        if self.face_stiffness is not None:
+            k = as_real("face_stiffness", self.face_stiffness)
+            if not (math.isfinite(k) and k >= 0.0):
+                raise ValueError(f"face_stiffness = {self.face_stiffness!r} is invalid: must be "
+                                 "a finite number >= 0 [N*mm/rad^2]")
+            object.__setattr__(self, "face_stiffness", k)
 
 
 @dataclass(frozen=True)

@@ -286,11 +286,36 @@ def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", la
     model = Model(elements.nodes, elements.bars, hinges, hinge_rest_angle=rest,
                   bar_modulus=bar_modulus, bar_area=bar_area, bar_law=laws.bar,
                   hinge_stiffness=np.asarray(k, dtype=float), hinge_law=law,
-                  hinge_limits=np.asarray(limits, dtype=float).reshape(-1, 2), fixed=fixed)
+                  hinge_limits=np.asarray(limits, dtype=float).reshape(-1, 2), fixed=fixed,
+                  families=_face_angle_family(material, elements))
     check_rest_angles(model.hinge_rest_angle, hinges, family,
                       source=getattr(pattern, "source", "") or "pattern")
     return PatternModel(model, elements, tuple(family), np.asarray(element, dtype=np.int64),
                         tuple(bar_family), stiffness, on_edge)
+
+
+def _face_angle_family(material, elements) -> dict | None:
+    """The ``face_angles`` family of a material with a face stiffness: one element per
+    triangle of the panels, resting at its flat interior angles."""
+    k = getattr(material, "face_stiffness", None)
+    if not k:
+        return None
+    triangles = np.asarray(elements.triangles, dtype=np.int64).reshape(-1, 3)
+    return {"face_angles": {"nodes": triangles,
+                            "rest_angle": triangle_angles(elements.nodes, triangles),
+                            "stiffness": np.full(len(triangles), float(k))}}
+
+
+def triangle_angles(nodes, triangles) -> np.ndarray:
+    """Interior angles [rad] of triangles (T, 3) of ``nodes`` (N, 3), shape (T, 3): at each
+    triangle's first, second and third node."""
+    x = np.asarray(nodes, dtype=float)[np.asarray(triangles, dtype=np.int64)]
+    angles = []
+    for p in range(3):
+        u, w = x[:, (p + 1) % 3] - x[:, p], x[:, (p + 2) % 3] - x[:, p]
+        # atan2 of the sine and cosine keeps full precision near 0 and pi.
+        angles.append(np.arctan2(np.linalg.norm(np.cross(u, w), axis=1), np.sum(u * w, axis=1)))
+    return np.stack(angles, axis=1)
 
 
 def _boundary_families(pattern, elements) -> list:

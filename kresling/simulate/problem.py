@@ -118,6 +118,9 @@ class Analysis:
     #: path through the last equilibria; a start other than "previous" uses bisection, not
     #: MERLIN2's step control, under merlin2_compat).
     predictor: str = "previous"
+    #: ``method = "fold"``: where the fold's equilibrium path ends, snap to a stable state
+    #: and fold on (:func:`kresling.solvers.solve_fold`'s ``snap``).
+    snap: bool = False
     #: ``method = "modes"``: how many of the lowest modes, about which state: "rest" or a
     #: :class:`~kresling.simulate.problem_modes.LoadedState`.
     modes: int = 10
@@ -449,7 +452,8 @@ def _read_material(t):
             bar_area=t.get("bar_area", _quantities, required=True,
                            allowed="the bars' area [mm^2] (a number or one per bar)"),
             fold_stiffness=t.get("fold_stiffness", _stiffnesses, None),
-            bend_stiffness=t.get("bend_stiffness", _stiffnesses, None))
+            bend_stiffness=t.get("bend_stiffness", _stiffnesses, None),
+            face_stiffness=t.get("face_stiffness", _quantity, None))
     sheet_mass = read_sheet_mass(t, material, _quantity)
     t.finish()
     return material, compat, sheet_mass
@@ -494,6 +498,8 @@ def _read_analysis(t, num_nodes):
             t.fail("predictor", "applies to fixed increments only: adaptive increments start "
                                 "each Newton solve from their own cubic Hermite curves")
         settings["predictor"] = t.get("predictor", _string, "previous", choices=PREDICTORS)
+        if method == "fold":
+            settings["snap"] = t.get("snap", _boolean, False)
     elif method == "dynamic":
         pass  # the steps are [dynamics]'s
     elif method == "modes":

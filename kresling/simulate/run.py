@@ -131,7 +131,8 @@ class Simulation:
         """``method = "fold"``: how far the driven creases got. ``short_of_target`` counts
         the creases more than 1 deg from their target fold angle at the end (held at their
         law's limit, by the structure, or by a path that stopped), ``worst`` names the
-        farthest; ``left_branch`` counts those folded the other way from their target."""
+        farthest; ``left_branch`` counts those folded the other way from their target;
+        ``snaps`` the fold fractions (the steps' load factors) where the fold snapped."""
         plan = self.fold
         if plan is None or not self.path.num_steps or not plan.hinges.size:
             return {}
@@ -145,7 +146,8 @@ class Simulation:
                 "worst": {"hinge": int(plan.hinges[worst]),
                           "target_deg": float(plan.target_deg[worst]),
                           "fold_angle_deg": float(reached[worst])},
-                "left_branch": int(np.count_nonzero(other_way))}
+                "left_branch": int(np.count_nonzero(other_way)),
+                "snaps": [float(t) for t in self.path.load_factor[self.path.snapped]]}
 
     def summary(self) -> dict:
         path = self.path
@@ -228,8 +230,11 @@ def build_problem_model(problem) -> PatternModel:
         families["self_contact"] = _self_contact_table(problem, pm)
     if not families:
         return pm
+    # The pattern model's own families (the faces' angle springs) stay beside the new ones.
+    own = {name: pm.model.family(name) for name in pm.model.families
+           if name not in ("bars", "hinges", "cables")}
     try:
-        model = pm.model.replace(families=families)
+        model = pm.model.replace(families={**own, **families})
     except ValueError as error:
         key = "[contact]" if "contact" in str(error) else "[[spring]]"
         raise ValueError(f"{problem.source}: {key}: {error}") from None
@@ -308,7 +313,7 @@ def _min_gap(state: dict) -> float | None:
 _MATERIAL_KEYS = {"youngs_modulus": "E", "poisson_ratio": "nu", "thickness": "thickness",
                   "length_scale": "length_scale", "bar_modulus": "bar_modulus",
                   "bar_area": "bar_area", "fold_stiffness": "fold_stiffness",
-                  "bend_stiffness": "bend_stiffness"}
+                  "bend_stiffness": "bend_stiffness", "face_stiffness": "face_stiffness"}
 
 
 def _where(message: str) -> str:
@@ -420,7 +425,8 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
             adaptive = analysis.increments == "adaptive"
             path = solve_fold(model, plan.stages, analysis.steps, forces=vector,
                               extrapolation=PREDICTORS.index(analysis.predictor),
-                              adaptive=adaptive, adaptive_tolerance=ADAPTIVE_TOLERANCE, **common)
+                              adaptive=adaptive, adaptive_tolerance=ADAPTIVE_TOLERANCE,
+                              snap=analysis.snap, **common)
         else:
             monitor = analysis.stop
             path = solve_mgdcm(model, vector, initial_load_factor=analysis.initial_load_factor,

@@ -43,6 +43,9 @@ class PathResult:
     newton_iterations : int
         Newton iterations of every increment tried, including rejected ones
         (``iterations`` counts those of the accepted increments only).
+    snapped : ndarray of bool, shape (S,)
+        Steps reached by a snap (a fold's ``snap=True``): where the path the step before
+        was on ended, an energy descent to a stable state, not a continuation of it.
     """
 
     load_factor: np.ndarray
@@ -58,6 +61,7 @@ class PathResult:
     failed_increment: int
     attempted_increments: int
     newton_iterations: int
+    snapped: np.ndarray
 
     @classmethod
     def _from_core(cls, core) -> "PathResult":

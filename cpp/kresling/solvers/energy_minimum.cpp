@@ -19,24 +19,30 @@ struct Evaluation {
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
 };
 
-bool evaluate(assembly::Assembler& assembler, const VectorX& u, Evaluation& e) {
+// The load's work f . u (0 without a load).
+double work(const VectorX* external, const VectorX& u) {
+  return external ? external->dot(u) : 0.0;
+}
+
+bool evaluate(assembly::Assembler& assembler, const VectorX& u, const VectorX* external,
+              Evaluation& e) {
   VectorX force;
-  e.energy = assembler.assemble(u, force, /*with_matrix=*/true).total();
-  e.gradient = gather_rows(assembler, force);
+  e.energy = assembler.assemble(u, force, /*with_matrix=*/true).total() - work(external, u);
+  e.gradient = gather_rows(assembler, external ? VectorX(force - *external) : force);
   const Eigen::MatrixXd K = Eigen::MatrixXd(assembler.matrix()).selfadjointView<Eigen::Lower>();
   e.eigen.compute(K);
   return std::isfinite(e.energy) && e.gradient.allFinite() && e.eigen.info() == Eigen::Success;
 }
 
-double energy_at(assembly::Assembler& assembler, const VectorX& u) {
+double energy_at(assembly::Assembler& assembler, const VectorX& u, const VectorX* external) {
   VectorX force;
-  return assembler.assemble(u, force, /*with_matrix=*/false).total();
+  return assembler.assemble(u, force, /*with_matrix=*/false).total() - work(external, u);
 }
 
 }  // namespace
 
 EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
-                              const EnergyMinimumOptions& o) {
+                              const EnergyMinimumOptions& o, const VectorX* external) {
   require_positive("tolerance", o.tolerance);
   require_positive("escape_step", o.escape_step);
   require_positive("min_curvature", o.min_curvature);
@@ -46,7 +52,7 @@ EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
   Evaluation e;
   for (out.iterations = 0; out.iterations < o.max_iterations; ++out.iterations) {
     check_interrupt();
-    if (!evaluate(assembler, u, e)) {
+    if (!evaluate(assembler, u, external, e)) {
       out.failure = "the energy or its derivatives are not finite (an element degenerated)";
       return out;
     }
@@ -76,7 +82,7 @@ EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
     for (int halvings = 0;; ++halvings) {
       trial = u;
       scatter_add_rows(assembler, alpha * step, trial);
-      const double energy = energy_at(assembler, trial);
+      const double energy = energy_at(assembler, trial, external);
       const bool rounding = alpha * step.norm() <= 10.0 * o.tolerance;
       if ((std::isfinite(energy) && energy <= e.energy + 1e-4 * alpha * slope) || rounding) break;
       if (halvings == 40) {

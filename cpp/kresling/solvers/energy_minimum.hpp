@@ -1,7 +1,8 @@
 #pragma once
 /// \file energy_minimum.hpp
-/// Descend to a stable equilibrium (a local minimum of the strain energy) of a small model
-/// with no external load: where a structure released at `u` comes to rest.
+/// Descend to a stable equilibrium (a local minimum of the potential energy: the strain
+/// energy less the work of a constant external load, none by default) of a small model:
+/// where a structure released at `u` comes to rest.
 ///
 /// Newton's method finds any equilibrium, saddles included; this finds minima. Each
 /// iteration takes the "saddle-free" Newton step -|K|^-1 g, with |K| = V |Lambda| V^T the
@@ -31,7 +32,7 @@ struct EnergyMinimumOptions {
 struct EnergyMinimum {
   bool converged = false;
   int iterations = 0;
-  double energy = 0.0;               ///< strain energy at the end [N mm]
+  double energy = 0.0;               ///< potential energy at the end [N mm]
   int negative_eigenvalues = -1;     ///< of the free tangent at the end
   double smallest_eigenvalue = 0.0;  ///< of the free tangent at the end [N/mm]
   std::string failure;               ///< why not converged
@@ -39,8 +40,10 @@ struct EnergyMinimum {
 
 /// Descend from `u` (all DOFs, updated in place) on the assembler's rows (its other DOFs
 /// stay where they are). The assembler should store the full matrix with no diagonal shift
-/// (a shift would hide a zero-stiffness mode from the inertia).
+/// (a shift would hide a zero-stiffness mode from the inertia). `external` (optional, one
+/// entry per DOF) is a constant load whose work f . u is taken off the strain energy.
 EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
-                              const EnergyMinimumOptions& options = {});
+                              const EnergyMinimumOptions& options = {},
+                              const VectorX* external = nullptr);
 
 }  // namespace kresling::solvers

@@ -108,6 +108,7 @@ PathResult solve_fold(const model::Model& model, const std::vector<FoldStage>& s
   follow.newton = options.newton;
   follow.max_bisections = options.max_bisections;
   follow.extrapolation = options.extrapolation;
+  follow.snap = options.snap;
   bool stopped = false;  // the caller's rule ended the fold
   follow.stop = [&](const PathStep& step) {
     stopped = options.stop && options.stop(step);

@@ -36,6 +36,10 @@ struct FoldOptions {
   /// The samples' estimated energy error relative to the largest stored energy so far, in
   /// (0, 1e-4].
   double adaptive_tolerance = 1e-9;
+  /// Where the fold's equilibrium path ends (a limit point of the rest angles: no
+  /// equilibrium near at the next increment), the sheet snaps to a stable state by an
+  /// energy descent and the fold goes on from there (FollowOptions::snap).
+  bool snap = false;
   StopRule stop;
 };
 

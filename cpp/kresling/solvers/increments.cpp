@@ -46,6 +46,14 @@ bool EqualIncrements::rejected(const Increment&, const std::string& reason) {
   return !failed_;
 }
 
+bool EqualIncrements::resume(const Increment& increment) {
+  failed_ = false;
+  first_failure_.clear();
+  dt_ = nominal_;
+  accepted(increment);
+  return true;
+}
+
 void EqualIncrements::finish(const PathControl& control, PathResult& result) const {
   if (!failed_) {
     result.completed = true;

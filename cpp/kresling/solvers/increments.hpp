@@ -22,6 +22,8 @@ class EqualIncrements final : public StepPolicy {
   bool next(Increment& increment) override;
   void accepted(const Increment& increment) override;
   bool rejected(const Increment& increment, const std::string& reason) override;
+  /// Goes on from increment.to: the rest of the nominal increment, then the next ones.
+  bool resume(const Increment& increment) override;
   /// The message of a failed increment is the control's (PathControl::failure_message).
   void finish(const PathControl& control, PathResult& result) const override;
 

@@ -36,6 +36,10 @@ struct PathStep {
   /// Negative eigenvalues of the free tangent factorised in the step's last iteration:
   /// 0 = stable equilibrium; -1 = unknown (the tangent needed an LU factorisation).
   int negative_eigenvalues = -1;
+  /// Reached by a snap (FollowOptions::snap): where the path the step before it was on
+  /// ended, an energy descent at this step's parameter from that step's state, not a
+  /// continuation of it.
+  bool snapped = false;
 
   /// The total stored energy (the families' energies summed in order).
   double energy() const {

@@ -6,6 +6,7 @@
 
 #include "kresling/core/interrupt.hpp"
 #include "kresling/solvers/damped_newton.hpp"
+#include "kresling/solvers/energy_minimum.hpp"
 #include "kresling/solvers/increments.hpp"
 
 namespace kresling::solvers {
@@ -153,6 +154,46 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     }
     return true;
   };
+  // Past a limit point the structure snaps: at the failed increment's end, the energy
+  // descends from the last equilibrium to a stable one, which becomes the path's next step.
+  // The descent's steps are bounded by the model's size (not in mm), so it follows the
+  // landscape at any scale.
+  auto snap = [&]() {
+    if (assembler.size() > kMaxSnapDofs) return false;
+    if (control.changes_model()) assembler.rebind(control.model_at(increment.to));
+    VectorX trial = u;
+    control.advance(increment, u, trial, external);
+    if (!start_within_barriers(assembler.model(), u, trial, held)) return false;
+    const NodeMatrix& X = assembler.model().nodes();
+    const double size = std::max((X.colwise().maxCoeff() - X.colwise().minCoeff()).norm(), 1e-300);
+    EnergyMinimumOptions descent;
+    descent.tolerance = options.newton.tolerance;
+    descent.max_iterations = 2000;
+    descent.max_step = 0.01 * size;
+    descent.escape_step = 1e-3 * size;
+    const EnergyMinimum rest = minimize_energy(assembler, trial, descent, &external);
+    result.newton_iterations += rest.iterations;
+    if (!rest.converged) return false;
+    NewtonOutcome outcome;
+    outcome.converged = true;
+    outcome.iterations = rest.iterations;
+    outcome.negative_eigenvalues = rest.negative_eigenvalues;
+    PathStep step =
+        control.record(assembler, trial, increment.to, outcome, recorded, sign, internal);
+    if (!finite_step(step)) return false;
+    step.snapped = true;
+    u = trial;
+    previous_negative = 0;
+    result.steps.push_back(std::move(step));
+    control.accepted(increment, u, result.steps.back(), internal);
+    // The path jumped: nothing before the snap extrapolates past it.
+    previous_size = 0.0;
+    if (extrapolating) {
+      path_t.assign(1, increment.to);
+      path_u.assign(1, u);
+    }
+    return true;
+  };
   while (policy.next(increment)) {
     check_interrupt();
     ++result.attempted_increments;
@@ -164,6 +205,13 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
         return;
       }
     } else if (!policy.rejected(increment, failure)) {
+      if (options.snap && snap() && policy.resume(increment)) {
+        if (options.stop && options.stop(result.steps.back())) {
+          result.completed = true;
+          return;
+        }
+        continue;
+      }
       break;
     }
   }

@@ -50,7 +50,17 @@ struct FollowOptions {
   /// Terms added to every Newton solve (optional), unless the control supplies an
   /// increment's own (PathControl::extra_terms: a time step's inertia and damping).
   ExtraTerms* extra = nullptr;
+  /// Where the path ends (an increment fails at its smallest size: past a limit point of
+  /// the parameter, no equilibrium is near), let the structure snap: descend the energy at
+  /// the failed increment's end from the last equilibrium to a stable one
+  /// (energy_minimum.hpp), record it as a step (PathStep::snapped) and follow the path on
+  /// from there. For models of up to kMaxSnapDofs free DOFs (the descent is dense); a
+  /// descent that finds no stable state ends the path as before, saying so.
+  bool snap = false;
 };
+
+/// The largest model (free DOFs) a snap is tried on.
+inline constexpr Index kMaxSnapDofs = 3000;
 
 /// Follow `control` with the increments of `policy` from `u` (all DOFs; the accepted state at t = 0,
 /// left at the last accepted one). `assembler` is bound to a workspace whose rows leave out

@@ -44,6 +44,10 @@ class StepPolicy {
   virtual void accepted(const Increment& increment) = 0;
   /// The increment failed for `reason`; false ends the path (failed).
   virtual bool rejected(const Increment& increment, const std::string& reason) = 0;
+  /// After rejected() ended the path at `increment`, the follower reached its end another
+  /// way (a snap, FollowOptions::snap): true when the policy goes on from increment.to as
+  /// if it had been accepted. False by default: the policy cannot resume.
+  virtual bool resume(const Increment& /*increment*/) { return false; }
   /// Set result.completed and, for a path that ended early, failed_increment and message
   /// (worded by `control` or the policy). Called once when next() or rejected() ended the
   /// path (not when the caller's stop rule did).

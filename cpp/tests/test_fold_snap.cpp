@@ -1,0 +1,159 @@
+// A fold that snaps (FoldOptions::snap, FollowOptions::snap): one hinge whose wing is pulled
+// round by a zero-length spring, so that driving the hinge's rest angle past a limit point
+// ends its equilibrium path, and the wing must snap over the spring's hill to the far branch.
+//
+// The closed form. The wing node turns about the hinge's axis at radius 1 (two stiff bars),
+// by phi = theta - pi from flat. The hinge (linear law, k per length, length 1) rests at
+// theta0 = pi + phi0; the spring (stiffness ks, anchor at distance d from the axis, in the
+// direction phi_a) adds -ks d cos(phi - phi_a), so
+//
+//     E(phi) = k (phi - phi0)^2 / 2 - K cos(phi - phi_a),        K = ks d,  beta = K / k,
+//     equilibrium    phi0 = phi + beta sin(phi - phi_a),
+//     stability      1 + beta cos(phi - phi_a) > 0.
+//
+// With beta = 1.5 and phi_a = 2.0 rad the flat state (phi = 0) is a stable equilibrium for
+// phi0 = beta sin(-phi_a) = -1.364, where the fold starts; driving phi0 down to -1.45, the
+// branch ends where cos(phi - phi_a) = -1 / beta, at phi* = phi_a - acos(-1/beta) = -0.300
+// and phi0* = -1.418 (63 % of the way), and the far branch's equilibrium lies near -2.9.
+//
+// Tolerances: each step is checked by its equilibrium, |phi0(phi) - phi0| (the branch's
+// phi itself is ill-conditioned near the limit point). The bars (EA = 1e6 N) stretch under
+// the spring's pull by ~1e-6 mm, which changes K by ~1e-6 relative; Newton's and the
+// descent's 1e-8 mm add less. 1e-5 leaves room for both and catches any wrong state.
+
+#include <cmath>
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "kresling/elements/dihedral.hpp"
+#include "kresling/model/bar_family.hpp"
+#include "kresling/model/hinge_family.hpp"
+#include "kresling/model/model.hpp"
+#include "kresling/model/spring_family.hpp"
+#include "kresling/solvers/fold.hpp"
+
+using namespace kresling;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kBeta = 1.5, kPhiA = 2.0, kEnd = -1.45;
+// Increments small enough that Newton, started from the last equilibrium near the limit
+// point, finds nothing (with 10 to 100 it happens to converge on the far branch after 36 to
+// 41 iterations, a jump this test does not rely on).
+constexpr int kSteps = 400;
+
+// phi0 of the equilibrium at phi.
+double rest_offset(double phi) { return phi + kBeta * std::sin(phi - kPhiA); }
+
+// The fold's start (the flat state's phi0) and its phi0 at fold fraction t.
+const double kStart = rest_offset(0.0);
+double rest_at(double t) { return kStart + t * (kEnd - kStart); }
+// The fold fraction of the limit point.
+double limit_fraction() {
+  return (rest_offset(kPhiA - std::acos(-1.0 / kBeta)) - kStart) / (kEnd - kStart);
+}
+
+// The equilibrium phi at phi0 on the branch through [lo, hi] (bisection on the monotone
+// rest_offset there).
+double branch(double phi0, double lo, double hi) {
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (rest_offset(mid) > phi0 ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+struct Wing {
+  model::Model model;
+  double sign;  // theta = pi + sign * psi, psi the wing's turn about +x from +y towards +z
+};
+
+// Axis 0 -> 1 along x, held wing 2 at -y, turning wing 3 at +y; the spring's anchor at
+// distance 1.5 in the direction phi_a.
+Wing make_wing() {
+  NodeMatrix X(4, 3);
+  X << 0, 0, 0, 1, 0, 0, 0.5, -1, 0, 0.5, 1, 0;
+  const double turned = elements::dihedral_angle(X.row(0), X.row(1), X.row(2),
+                                                 Vector3(0.5, std::cos(0.1), std::sin(0.1)));
+  const double sign = turned > kPi ? 1.0 : -1.0;
+  std::vector<model::Bar> bars(2);
+  bars[0].nodes = {0, 3};
+  bars[1].nodes = {1, 3};
+  for (auto& b : bars) {
+    b.rest_length = (X.row(b.nodes[1]) - X.row(b.nodes[0])).norm();
+    b.law = {elements::BarLawKind::Linear, 1e6};
+  }
+  model::Hinge h;
+  h.nodes = {0, 1, 2, 3};
+  h.stiffness = 1.0;
+  h.rest_angle = kPi + kStart;
+  h.length = 1.0;
+  h.law.kind = elements::SpringLawKind::Linear;
+  const double d = kBeta, psi_a = sign * kPhiA;  // K = ks d with ks = 1
+  model::AnchorSpring spring{3, Vector3::Ones(), Vector3(0.5, d * std::cos(psi_a), d * std::sin(psi_a))};
+  std::vector<std::uint8_t> fixed(12, 1);
+  fixed[9] = fixed[10] = fixed[11] = 0;
+  model::Model m(X, fixed,
+                 {std::make_shared<model::BarFamily>(bars),
+                  std::make_shared<model::HingeFamily>(std::vector<model::Hinge>{h}),
+                  std::make_shared<model::SpringFamily>(std::vector<model::AnchorSpring>{spring})});
+  return {std::move(m), sign};
+}
+
+double phi_of(const Wing& w, const VectorX& u) {
+  const Vector3 x(0.5 + u[9], 1.0 + u[10], u[11]);
+  return w.sign * std::atan2(x[2], x[1]);
+}
+
+solvers::PathResult fold_to_end(const Wing& w, bool snap, int steps) {
+  solvers::FoldOptions o;
+  o.snap = snap;
+  o.newton.tolerance = 1e-8;
+  return solvers::solve_fold(w.model, {{{0}, (VectorX(1) << kPi + kEnd).finished()}}, steps,
+                             VectorX::Zero(12), o);
+}
+
+}  // namespace
+
+TEST(FoldSnap, WithoutSnapTheFoldEndsAtTheLimitPoint) {
+  const Wing w = make_wing();
+  const double limit = limit_fraction();
+  const auto path = fold_to_end(w, false, kSteps);
+  ASSERT_FALSE(path.completed);
+  const double last = path.steps.back().load_factor;
+  EXPECT_LE(last, limit);
+  EXPECT_GT(last, limit - 0.01);  // bisected to within a fraction of an increment of it
+  for (const auto& s : path.steps) EXPECT_FALSE(s.snapped);
+}
+
+TEST(FoldSnap, WithSnapItJumpsToTheFarBranchAndFoldsOn) {
+  const Wing w = make_wing();
+  const double phi_star = kPhiA - std::acos(-1.0 / kBeta);
+  const double far_edge = kPhiA - 2 * kPi + std::acos(-1.0 / kBeta);
+  const double limit = limit_fraction();
+  const auto path = fold_to_end(w, true, kSteps);
+  ASSERT_TRUE(path.completed) << path.message;
+  int snaps = 0;
+  for (const auto& s : path.steps) {
+    const double phi = phi_of(w, s.displacement);
+    EXPECT_EQ(s.negative_eigenvalues, 0) << s.load_factor;
+    EXPECT_NEAR(rest_offset(phi), rest_at(s.load_factor), 1e-5) << s.load_factor;
+    if (s.snapped) {
+      ++snaps;
+      // Where the branch ends: past the limit point by less than an increment (the bars'
+      // compliance moves it by ~1e-6 of the fold).
+      EXPECT_GT(s.load_factor, limit - 1e-4);
+      EXPECT_LT(s.load_factor, limit + 1.0 / kSteps);
+    }
+    if (snaps == 0) {
+      EXPECT_GE(phi, phi_star - 1e-4);  // on the branch that leaves the flat state
+    } else {
+      EXPECT_LT(phi, far_edge) << s.load_factor;  // on the far branch
+    }
+  }
+  EXPECT_EQ(snaps, 1);
+  // The far branch's equilibrium at the end, solved on its own.
+  EXPECT_NEAR(phi_of(w, path.steps.back().displacement), branch(kEnd, -kPi, far_edge), 1e-4);
+}
