@@ -16,6 +16,7 @@ from kresling.assembly import assemble
 from kresling.io import read_pattern
 from kresling.model import ManualProperties, Model, build_pattern_model, family_kinds
 from kresling.simulate import load_problem, simulate
+from kresling.simulate.run import build_problem_model
 from public_files import ORIGAMI_SIMULATOR
 
 
@@ -117,7 +118,6 @@ def test_the_problem_files_face_stiffness_shears_the_panel_less(tmp_path):
     # With panel contact added, the faces' springs stay in the model.
     both = load_problem(_problem(tmp_path, "face_stiffness = 50.0",
                                  "[contact]\ndistance = 0.1\nself = true"))
-    from kresling.simulate.run import build_problem_model
     assert {"face_angles", "self_contact"} <= set(build_problem_model(both).model.families)
 
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling import _core
-from kresling._validation import as_positive_real, as_real
+from kresling._validation import as_finite_real, as_positive_real, as_real
 
 __all__ = ["SheetMaterial", "ManualProperties", "SheetStiffness", "calibrate_sheet"]
 
@@ -91,8 +91,8 @@ class ManualProperties:
     def __post_init__(self):
         object.__setattr__(self, "bar_modulus", as_positive_real("bar_modulus", self.bar_modulus))
         if self.face_stiffness is not None:
-            k = as_real("face_stiffness", self.face_stiffness)
-            if not (math.isfinite(k) and k >= 0.0):
+            k = as_finite_real("face_stiffness", self.face_stiffness)
+            if k < 0.0:
                 raise ValueError(f"face_stiffness = {self.face_stiffness!r} is invalid: must be "
                                  "a finite number >= 0 [N*mm/rad^2]")
             object.__setattr__(self, "face_stiffness", k)

@@ -228,8 +228,7 @@ class Model:
             "hinge_law": [_name(SPRING_LAWS, c) for c in a["hinge_law"]],
             "hinge_limits": a["hinge_limits"], "fixed": a["fixed"],
             "cables": list(zip(a["cable_nodes"], a["cable_stiffness"], a["cable_rest_length"])),
-            "families": {name: self.family(name) for name in self.families
-                         if name not in _BUILTIN_FAMILIES},
+            "families": self._further_families(),
         }
         positional = {"nodes": a["nodes"], "bars": a["bars"], "hinges": a["hinges"]}
         for key, value in changes.items():
@@ -240,6 +239,17 @@ class Model:
             else:
                 raise ValueError(f"replace: unknown field {key!r}")
         return Model(positional["nodes"], positional["bars"], positional["hinges"], **kwargs)
+
+    def with_families(self, families: dict) -> "Model":
+        """A copy with further element families added (or, by name, replaced), the ones it
+        holds beside its bars, hinges and cables kept: ``{name: {column: array}}`` as for
+        ``Model(..., families=...)``."""
+        return self.replace(families={**self._further_families(), **families})
+
+    def _further_families(self) -> dict:
+        """The columns of every family beside the bars, hinges and cables, by name."""
+        return {name: self.family(name) for name in self.families
+                if name not in _BUILTIN_FAMILIES}
 
     # -- read-only views -------------------------------------------------------------
     def __getattr__(self, name):

@@ -301,21 +301,11 @@ def _face_angle_family(material, elements) -> dict | None:
     if not k:
         return None
     triangles = np.asarray(elements.triangles, dtype=np.int64).reshape(-1, 3)
-    return {"face_angles": {"nodes": triangles,
-                            "rest_angle": triangle_angles(elements.nodes, triangles),
-                            "stiffness": np.full(len(triangles), float(k))}}
-
-
-def triangle_angles(nodes, triangles) -> np.ndarray:
-    """Interior angles [rad] of triangles (T, 3) of ``nodes`` (N, 3), shape (T, 3): at each
-    triangle's first, second and third node."""
-    x = np.asarray(nodes, dtype=float)[np.asarray(triangles, dtype=np.int64)]
-    angles = []
-    for p in range(3):
-        u, w = x[:, (p + 1) % 3] - x[:, p], x[:, (p + 2) % 3] - x[:, p]
-        # atan2 of the sine and cosine keeps full precision near 0 and pi.
-        angles.append(np.arctan2(np.linalg.norm(np.cross(u, w), axis=1), np.sum(u * w, axis=1)))
-    return np.stack(angles, axis=1)
+    return {"face_angles": {
+        "nodes": triangles,
+        "rest_angle": _core.elements.triangle_angles(np.ascontiguousarray(elements.nodes, dtype=float),
+                                                     triangles),
+        "stiffness": np.full(len(triangles), float(k))}}
 
 
 def _boundary_families(pattern, elements) -> list:

@@ -230,11 +230,9 @@ def build_problem_model(problem) -> PatternModel:
         families["self_contact"] = _self_contact_table(problem, pm)
     if not families:
         return pm
-    # The pattern model's own families (the faces' angle springs) stay beside the new ones.
-    own = {name: pm.model.family(name) for name in pm.model.families
-           if name not in ("bars", "hinges", "cables")}
     try:
-        model = pm.model.replace(families={**own, **families})
+        # The pattern model's own families (the faces' angle springs) stay beside these.
+        model = pm.model.with_families(families)
     except ValueError as error:
         key = "[contact]" if "contact" in str(error) else "[[spring]]"
         raise ValueError(f"{problem.source}: {key}: {error}") from None

@@ -6,11 +6,6 @@ namespace kresling::elements {
 
 namespace {
 
-double angle_between(const Vector3& u, const Vector3& w) {
-  // atan2 keeps full precision near 0 and pi, where acos of the cosine would not.
-  return std::atan2(u.cross(w).norm(), u.dot(w));
-}
-
 // The corner at p with sides u = q - p, w = r - p: its angle, the angle's gradient with
 // respect to u and w, and (when asked) its Hessian in the (u, w) variables.
 struct Corner {
@@ -25,7 +20,7 @@ Corner corner(const Vector3& u, const Vector3& w, bool with_hessian) {
   const Vector3 a = u / lu, b = w / lw;
   const double c = a.dot(b);
   const double s = a.cross(b).norm();
-  k.angle = std::atan2(s, c);
+  k.angle = std::atan2(s, c);  // full precision near 0 and pi, where acos(c) would not be
   // Gradient of the cosine: dc/du = (b - c a) / |u|, dc/dw = (a - c b) / |w|.
   const Vector3 cu = (b - c * a) / lu, cw = (a - c * b) / lw;
   k.du = -cu / s;
@@ -50,8 +45,10 @@ Corner corner(const Vector3& u, const Vector3& w, bool with_hessian) {
 }  // namespace
 
 std::array<double, 3> corner_angles(const Vector3& x0, const Vector3& x1, const Vector3& x2) {
-  return {angle_between(x1 - x0, x2 - x0), angle_between(x2 - x1, x0 - x1),
-          angle_between(x0 - x2, x1 - x2)};
+  // The response's own formula, so that a triangle at its measured rest angles stores
+  // nothing to the last bit.
+  return {corner(x1 - x0, x2 - x0, false).angle, corner(x2 - x1, x0 - x1, false).angle,
+          corner(x0 - x2, x1 - x2, false).angle};
 }
 
 CornerAngleResponse corner_angle_response(const Vector3& x0, const Vector3& x1,

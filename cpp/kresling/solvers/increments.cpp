@@ -49,7 +49,6 @@ bool EqualIncrements::rejected(const Increment&, const std::string& reason) {
 bool EqualIncrements::resume(const Increment& increment) {
   failed_ = false;
   first_failure_.clear();
-  dt_ = nominal_;
   accepted(increment);
   return true;
 }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "kresling/core/interrupt.hpp"
+#include "kresling/model/model.hpp"
 #include "kresling/solvers/damped_newton.hpp"
 #include "kresling/solvers/energy_minimum.hpp"
 #include "kresling/solvers/increments.hpp"
@@ -85,6 +86,13 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
   // The secant start's last two equilibria: the one before u and the increment between.
   VectorX previous_u;
   double previous_size = 0.0;
+  // Take a recorded step (from `outcome`, at `trial`) as the path's next point.
+  auto keep = [&](PathStep step, const VectorX& trial, const NewtonOutcome& outcome) {
+    u = trial;
+    if (outcome.negative_eigenvalues >= 0) previous_negative = outcome.negative_eigenvalues;
+    result.steps.push_back(std::move(step));
+    control.accepted(increment, u, result.steps.back(), internal);
+  };
   auto attempt = [&](std::string& failure) {
     const double t_new = increment.to;
     if (control.changes_model()) assembler.rebind(control.model_at(t_new));
@@ -140,10 +148,7 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
       previous_u = u;
       previous_size = increment.size;
     }
-    u = trial;
-    if (outcome.negative_eigenvalues >= 0) previous_negative = outcome.negative_eigenvalues;
-    result.steps.push_back(std::move(step));
-    control.accepted(increment, u, result.steps.back(), internal);
+    keep(std::move(step), trial, outcome);
     if (extrapolating) {
       path_t.push_back(reached);
       path_u.push_back(u);
@@ -164,8 +169,7 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     VectorX trial = u;
     control.advance(increment, u, trial, external);
     if (!start_within_barriers(assembler.model(), u, trial, held)) return false;
-    const NodeMatrix& X = assembler.model().nodes();
-    const double size = std::max((X.colwise().maxCoeff() - X.colwise().minCoeff()).norm(), 1e-300);
+    const double size = model::node_extent(assembler.model().nodes());
     EnergyMinimumOptions descent;
     descent.tolerance = options.newton.tolerance;
     descent.max_iterations = 2000;
@@ -182,10 +186,7 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
         control.record(assembler, trial, increment.to, outcome, recorded, sign, internal);
     if (!finite_step(step)) return false;
     step.snapped = true;
-    u = trial;
-    previous_negative = 0;
-    result.steps.push_back(std::move(step));
-    control.accepted(increment, u, result.steps.back(), internal);
+    keep(std::move(step), trial, outcome);
     // The path jumped: nothing before the snap extrapolates past it.
     previous_size = 0.0;
     if (extrapolating) {
@@ -200,19 +201,14 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     std::string failure;
     if (attempt(failure)) {
       policy.accepted(increment);
-      if (options.stop && options.stop(result.steps.back())) {
-        result.completed = true;
-        return;
-      }
-    } else if (!policy.rejected(increment, failure)) {
-      if (options.snap && snap() && policy.resume(increment)) {
-        if (options.stop && options.stop(result.steps.back())) {
-          result.completed = true;
-          return;
-        }
-        continue;
-      }
+    } else if (policy.rejected(increment, failure)) {
+      continue;  // tried again smaller
+    } else if (!(options.snap && snap() && policy.resume(increment))) {
       break;
+    }
+    if (options.stop && options.stop(result.steps.back())) {
+      result.completed = true;
+      return;
     }
   }
   policy.finish(control, result);
