@@ -161,14 +161,14 @@ def _intersecting_increments(sim):
             if intersecting_pairs(_positions(sim, k), triangles)]
 
 
-def test_a_square_twist_folded_toward_flat_never_passes_through_itself(tmp_path):
+def test_a_square_twist_flat_folded_never_passes_through_itself(tmp_path):
     path = _square_twist(tmp_path, twist_deg=20.0)
-    # Without contact its pleats fold through the central square and each other: the
-    # fold reaches its targets with triangles crossing from about halfway on.
-    free = simulate(_twist_problem(path, contact=False), progress=False)
-    assert free.completed, free.path.message
+    # Without contact its pleats fold through the central square and each other: from
+    # about halfway on triangles cross (measured at 31 increments; Newton then fails in
+    # the last increment, at 0.99995 of the way).
+    free = simulate(_twist_problem(path, contact=False, target=180.0), progress=False)
     assert len(_intersecting_increments(free)) > 10
-    sim = simulate(_twist_problem(path, contact=True), progress=False)
+    sim = simulate(_twist_problem(path, contact=True, target=180.0), progress=False)
     assert sim.completed, sim.path.message
     assert _intersecting_increments(sim) == []
     gaps = sim.history_columns()["min_gap"]

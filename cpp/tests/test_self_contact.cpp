@@ -19,35 +19,15 @@
 #include "kresling/elements/contact_closest_points.hpp"
 #include "kresling/model/self_contact_family.hpp"
 #include "kresling/solvers/tangent_solver.hpp"
+#include "two_triangles_model.hpp"
 
 using namespace kresling;
 
 namespace {
 
-constexpr double kDHat = 0.5;
-
-// Two triangles 2 mm apart, one above the other, skewed so that point-triangle and
-// edge-edge pairs both enter as the upper one comes down.
-model::Model two_triangles() {
-  NodeMatrix X(6, 3);
-  X << 0, 0, 0, 4, 0, 0, 0, 4, 0,  //
-      1, 1, 2, 5, 1.5, 2, 0.5, 5, 2;
-  auto family = std::make_shared<model::SelfContactFamily>(
-      std::vector<Index>{0, 1, 2, 3, 4, 5}, kDHat, 10.0);
-  return model::Model(X, std::vector<std::uint8_t>(18, 0), {family});
-}
-
-// Displacement lowering the upper triangle by `drop` [mm], with a small twist from `seed`.
-VectorX lowered(double drop, unsigned seed = 1) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> jitter(-0.05, 0.05);
-  VectorX u = VectorX::Zero(18);
-  for (int n = 3; n < 6; ++n) {
-    u[3 * n + 2] = -drop;
-    for (int k = 0; k < 3; ++k) u[3 * n + k] += jitter(rng);
-  }
-  return u;
-}
+using contact_test::lowered;
+using contact_test::two_triangles;
+constexpr double kDHat = contact_test::kTwoTrianglesDHat;
 
 double energy(const model::Model& m, const VectorX& u) {
   VectorX force;
@@ -88,8 +68,8 @@ TEST(SelfContact, PatternIsRebuiltOnlyWhenNewPairsEnter) {
   EXPECT_EQ(force, fresh_force);
 }
 
-TEST(SelfContact, ForceIsTheEnergysGradientAndTheTangentIsPositiveSemiDefinite) {
-  const model::Model m = two_triangles();
+TEST(SelfContact, ForceIsTheEnergysGradientAndTheProjectedTangentIsPositiveSemiDefinite) {
+  const model::Model m = two_triangles(model::SelfContactFamily::TangentForm::Projected);
   for (double drop : {1.7, 1.8, 1.9}) {
     const VectorX u = lowered(drop, static_cast<unsigned>(10 * drop));
     assembly::Workspace w(m, assembly::all_dofs(18));

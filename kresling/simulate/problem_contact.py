@@ -8,22 +8,27 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Contact", "read_contact", "auto_barrier_stiffness"]
+__all__ = ["Contact", "read_contact", "auto_barrier_stiffness", "TANGENTS"]
+
+#: The ``tangent`` key's choices, in the order of the self-contact family's ``tangent``
+#: column codes (0, 1, 2).
+TANGENTS = ("projected", "exact", "adaptive")
 
 
 @dataclass(frozen=True)
 class Contact:
     """``distance``: d_hat [mm], the gap below which the barrier acts; ``stiffness``: kappa
     [N/mm^3] or None for "auto"; ``planes``: tuples (point, normal), possibly none;
-    ``self_contact``: whether panels are kept off each other; ``exact_tangent``: whether
-    the panel pairs' Hessians enter Newton's tangent exact (True) or projected to be
-    positive semi-definite (False, ``tangent = "projected"``)."""
+    ``self_contact``: whether panels are kept off each other; ``tangent``: how the panel
+    pairs' Hessians enter Newton's tangent: ``"projected"`` onto the positive semi-definite
+    cone, ``"exact"``, or ``"adaptive"`` (exact where the whole tangent is positive
+    definite, projected at the iterates where it is not)."""
 
     distance: float
     stiffness: float | None
     planes: tuple
     self_contact: bool = False
-    exact_tangent: bool = False
+    tangent: str = "adaptive"
 
 
 def read_contact(t, number, positive, boolean, vector3, string):
@@ -33,7 +38,7 @@ def read_contact(t, number, positive, boolean, vector3, string):
     raw = t.get("stiffness", lambda t_, k, v, a: v, "auto")
     stiffness = None if raw == "auto" else positive(t, "stiffness", raw)
     self_contact = t.get("self", boolean, False)
-    tangent = t.get("tangent", string, "projected", choices=("projected", "exact"))
+    tangent = t.get("tangent", string, "adaptive", choices=TANGENTS)
     planes = t.get("planes", lambda t_, k, v, a: v, [], required=not self_contact,
                    allowed="an array of { point = [x, y, z], normal = [nx, ny, nz] }")
     if not isinstance(planes, list) or not (planes or self_contact):
@@ -50,7 +55,7 @@ def read_contact(t, number, positive, boolean, vector3, string):
             t.fail("planes", f"has normal {list(normal)}: must not be zero")
         out.append((point, normal))
     t.finish()
-    return Contact(distance, stiffness, tuple(out), bool(self_contact), tangent == "exact")
+    return Contact(distance, stiffness, tuple(out), bool(self_contact), tangent)
 
 
 def _barrier_curvature(d_hat: float) -> float:

@@ -16,6 +16,7 @@ from kresling.simulate.actuation import FoldPlan, fold_plan
 from kresling.simulate.element_histories import ElementHistories, element_histories
 from kresling.simulate.modes_output import run_modes
 from kresling.simulate.problem import _AXES, PREDICTORS, Problem, load_problem, node_count
+from kresling.simulate.problem_contact import TANGENTS
 from kresling.solvers import (PathResult, solve_displacement_control, solve_force_control,
                               solve_fold, solve_mgdcm)
 
@@ -268,8 +269,8 @@ def _self_contact_table(problem, pm) -> dict:
     table = {"triangles": np.asarray(pm.elements.triangles, dtype=np.int64),
              "distance": np.array([problem.contact.distance]),
              "stiffness": np.array([_barrier_stiffness(problem, pm.model)])}
-    if problem.contact.exact_tangent:
-        table["exact_tangent"] = np.array([1.0])
+    if problem.contact.tangent != "adaptive":
+        table["tangent"] = np.array([float(TANGENTS.index(problem.contact.tangent))])
     return table
 
 

@@ -121,7 +121,8 @@ values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_0
      {"gamma": 1.0}, [0.0, 0.0, -9810.0], 1e-9, 1e-4, -0.05, -0.5,
      {"load_factor": 1.0, "steps": 2}, {"load_factor": 1e300},
      {"distance": 0.2, "self": True}, {"distance": 5.0, "self": True}, True, "exact",
-     "projected", {"distance": 0.1, "self": True, "tangent": "exact"}]))
+     "projected", "adaptive", {"distance": 0.1, "self": True, "tangent": "exact"},
+     {"distance": 0.1, "self": True, "tangent": "adaptive"}]))
 
 
 def mutate(problem, edits):

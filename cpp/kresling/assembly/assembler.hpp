@@ -38,9 +38,10 @@ class Assembler {
   /// must outlive the assembler or the next rebind.
   void rebind(const model::Model& model);
 
-  /// assemble(model(), workspace(), u, force, with_matrix), the fit checked at binding.
-  Energies assemble(const VectorX& u, VectorX& force, bool with_matrix) {
-    return assemble_unchecked(*model_, *workspace_, u, force, with_matrix);
+  /// assemble(model(), workspace(), u, force, with_matrix, definite), the fit checked at
+  /// binding.
+  Energies assemble(const VectorX& u, VectorX& force, bool with_matrix, bool definite = false) {
+    return assemble_unchecked(*model_, *workspace_, u, force, with_matrix, definite);
   }
 
   /// The tangent from the last assemble(..., true) call (see Workspace::matrix).

@@ -227,13 +227,13 @@ void Workspace::add_matrix_values(const std::vector<double>& values, double fact
 }
 
 Energies assemble(const model::Model& model, Workspace& workspace, const VectorX& u,
-                  VectorX& force, bool with_matrix) {
+                  VectorX& force, bool with_matrix, bool definite) {
   workspace.require_fits(model);
-  return assemble_unchecked(model, workspace, u, force, with_matrix);
+  return assemble_unchecked(model, workspace, u, force, with_matrix, definite);
 }
 
 Energies assemble_unchecked(const model::Model& model, Workspace& w, const VectorX& u,
-                            VectorX& force, bool with_matrix) {
+                            VectorX& force, bool with_matrix, bool definite) {
   if (u.size() != model.num_dofs()) {
     throw std::invalid_argument("u: has " + std::to_string(u.size()) + " entries, must have " +
                                 std::to_string(model.num_dofs()));
@@ -248,6 +248,7 @@ Energies assemble_unchecked(const model::Model& model, Workspace& w, const Vecto
   energies.count = families.size();
   for (std::size_t f = 0; f < families.size(); ++f) {
     model::AssemblyTarget target{force, with_matrix ? values : nullptr, &w.slots_[f]};
+    target.definite = definite;
     // Without a tangent the family finds its active elements itself (those of the pattern
     // may belong to another state).
     if (with_matrix && families[f]->changes_elements()) target.active = &w.active_[f];

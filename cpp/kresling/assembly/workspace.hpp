@@ -74,11 +74,13 @@ class Workspace;
 
 /// Evaluate `model` at displacement u (length num_dofs) through `workspace`: `force` gets
 /// the internal force of every DOF (resized to num_dofs); if `with_matrix`, the workspace's
-/// tangent values are refilled (read them with workspace.matrix()). Throws
+/// tangent values are refilled (read them with workspace.matrix()), each family's own or,
+/// with `definite`, positive semi-definite where a family can make it so
+/// (ElementFamily::adapts_tangent). Throws
 /// std::invalid_argument if the workspace was built for another connectivity, or for a u of
 /// the wrong size.
 Energies assemble(const model::Model& model, Workspace& workspace, const VectorX& u,
-                  VectorX& force, bool with_matrix);
+                  VectorX& force, bool with_matrix, bool definite = false);
 
 class Workspace {
  public:
@@ -120,7 +122,8 @@ class Workspace {
 
  private:
   friend Energies assemble_unchecked(const model::Model& model, Workspace& workspace,
-                                     const VectorX& u, VectorX& force, bool with_matrix);
+                                     const VectorX& u, VectorX& force, bool with_matrix,
+                                     bool definite);
 
   std::vector<Index> connectivity_;  // see connectivity_of
   std::vector<Index> rows_;
@@ -146,6 +149,6 @@ class Workspace {
 /// assemble() without the connectivity check, for a caller that made it once for many
 /// evaluations (an Assembler checks when it is bound). `workspace.fits(model)` is required.
 Energies assemble_unchecked(const model::Model& model, Workspace& workspace, const VectorX& u,
-                            VectorX& force, bool with_matrix);
+                            VectorX& force, bool with_matrix, bool definite = false);
 
 }  // namespace kresling::assembly

@@ -225,7 +225,7 @@ Arm build_arm(const geometry::Design& design, const std::vector<int>& states,
     // (a ratio of 0.76 per iteration near a pulled arm's contacts) and hides instability.
     arm.model = arm.model.with_family(std::make_shared<SelfContactFamily>(
         panel_triangles(arm), parameters.contact_distance, parameters.contact_stiffness,
-        /*exact_tangent=*/true));
+        SelfContactFamily::TangentForm::Exact));
   }
   return arm;
 }

@@ -57,11 +57,14 @@ struct ActiveElements {
 /// `values` is not null, the tangent's value array through `slots` (the family's own).
 /// `active` (only for a family that changes_elements()) is the element set `slots` was made
 /// for, at the state being evaluated; when null the family finds its elements itself.
+/// `definite`: the solver asks for a positive semi-definite element tangent where the family
+/// can give one in place of its own (a family that adapts_tangent()); others ignore it.
 struct AssemblyTarget {
   VectorX& force;
   double* values = nullptr;
   const FamilySlots* slots = nullptr;
   const ActiveElements* active = nullptr;
+  bool definite = false;
 };
 
 /// Per-element quantities by name ("bar_strain", "hinge_angle", ...), in the order the
@@ -110,6 +113,11 @@ class ElementFamily {
   /// a state. The workspace asks at every assembly with a tangent and rebuilds its pattern
   /// when the set changes. False by default, and then nothing is asked.
   virtual bool changes_elements() const { return false; }
+  /// True when the family's tangent is its exact Jacobian unless the solver asks for a
+  /// positive semi-definite one (AssemblyTarget::definite): the solvers assemble it exact,
+  /// and again definite where the whole tangent turns out not to be positive definite
+  /// (factorize_tangent, solvers/newton.hpp). False by default, and then nothing is redone.
+  virtual bool adapts_tangent() const { return false; }
   /// The elements acting at X + u (for a family that changes_elements()); `out` is
   /// overwritten. assemble() may be handed a superset of them (target.active): the elements
   /// of an earlier state, which it must evaluate as they are at X + u (zero when inactive).

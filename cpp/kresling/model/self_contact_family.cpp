@@ -105,13 +105,13 @@ void for_each_kept_within(const elements::KeptView& view, double distance,
 }  // namespace
 
 SelfContactFamily::SelfContactFamily(std::vector<Index> triangles, double d_hat,
-                                     double stiffness, bool exact_tangent)
+                                     double stiffness, TangentForm tangent)
     : triangles_(Eigen::Map<const elements::TriangleMatrix>(
           triangles.data(), static_cast<Index>(triangles.size() / 3), 3)),
       edges_(elements::triangle_edges(triangles_)),
       d_hat_(d_hat),
       stiffness_(stiffness),
-      exact_tangent_(exact_tangent),
+      tangent_(tangent),
       // A skin of d_hat: the list holds while no node moves d_hat / 2 (Newton's iterates
       // near contact move far less), at the cost of the pairs within 2 d_hat.
       cache_(std::make_unique<elements::ContactCandidateCache>(d_hat, d_hat)) {}
@@ -178,9 +178,11 @@ double SelfContactFamily::assemble(const NodeMatrix& X, const VectorX& u,
   ActiveElements own;
   if (target.active == nullptr) find_active(x, own);
   const ActiveElements& active = target.active ? *target.active : own;
+  const bool exact = tangent_ == TangentForm::Exact ||
+                     (tangent_ == TangentForm::Adaptive && !target.definite);
   const auto hessian = !target.values ? elements::BarrierHessian::None
-                       : exact_tangent_ ? elements::BarrierHessian::Exact
-                                        : elements::BarrierHessian::Projected;
+                       : exact        ? elements::BarrierHessian::Exact
+                                      : elements::BarrierHessian::Projected;
   double energy = 0.0;
   const double s_hat = d_hat_ * d_hat_;
   for (std::size_t e = 0; e < active.size(); ++e) {
@@ -285,25 +287,28 @@ Table SelfContactFamily::table() const {
   std::vector<Index> t(triangles_.data(), triangles_.data() + triangles_.size());
   Table out{{"triangles", index_column(t, 3)}, {"distance", real_column({d_hat_})},
             {"stiffness", real_column({stiffness_})}};
-  if (exact_tangent_) out.emplace("exact_tangent", real_column({1.0}));
+  if (tangent_ != TangentForm::Adaptive) {
+    out.emplace("tangent", real_column({static_cast<double>(tangent_)}));
+  }
   return out;
 }
 
 FamilyPtr SelfContactFamily::from_table(const Table& t) {
-  require_known_columns(t, "self_contact", {"triangles", "distance", "stiffness", "exact_tangent"});
+  require_known_columns(t, "self_contact", {"triangles", "distance", "stiffness", "tangent"});
   const auto& triangles = require_column(t, "self_contact", "triangles", true, 3);
   const auto& d_hat = require_column(t, "self_contact", "distance", false, 1, 1).reals;
   const auto& kappa = require_column(t, "self_contact", "stiffness", false, 1, 1).reals;
-  bool exact = false;
-  if (t.count("exact_tangent")) {
-    const double flag = require_column(t, "self_contact", "exact_tangent", false, 1, 1).reals[0];
-    if (flag != 0.0 && flag != 1.0) {
-      throw std::invalid_argument("self_contact: exact_tangent = " + format_number(flag) +
-                                  " is invalid: must be 0 (projected) or 1 (exact)");
+  auto tangent = TangentForm::Adaptive;
+  if (t.count("tangent")) {
+    const double code = require_column(t, "self_contact", "tangent", false, 1, 1).reals[0];
+    if (code != 0.0 && code != 1.0 && code != 2.0) {
+      throw std::invalid_argument("self_contact: tangent = " + format_number(code) +
+                                  " is invalid: must be 0 (projected), 1 (exact) or 2 "
+                                  "(adaptive)");
     }
-    exact = flag == 1.0;
+    tangent = static_cast<TangentForm>(static_cast<int>(code));
   }
-  return std::make_shared<SelfContactFamily>(triangles.indices, d_hat[0], kappa[0], exact);
+  return std::make_shared<SelfContactFamily>(triangles.indices, d_hat[0], kappa[0], tangent);
 }
 
 }  // namespace kresling::model

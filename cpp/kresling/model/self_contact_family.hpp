@@ -28,18 +28,23 @@
 namespace kresling::model {
 
 /// Table columns: triangles (3 node indices a row), distance (d_hat [mm], one value),
-/// stiffness (kappa [N/mm^3], one value), optionally exact_tangent (one value, 1: the
-/// pairs' exact Hessians in the tangent; absent or 0: projected).
+/// stiffness (kappa [N/mm^3], one value), optionally tangent (one value, a TangentForm:
+/// 0 projected, 1 exact, 2 adaptive; absent: adaptive).
 class SelfContactFamily final : public ElementFamily {
  public:
   /// Kinds of active elements.
   enum Kind : std::uint8_t { PointTriangle = 0, EdgeEdge = 1 };
 
-  /// `exact_tangent`: the pairs' exact Hessians in the tangent (indefinite in general; the
-  /// Jacobian of the force, so Newton converges quadratically and the tangent's inertia
-  /// tells stability) instead of their projections onto the positive semi-definite cone.
+  /// How the pairs' Hessians enter the tangent. Projected: each onto the positive
+  /// semi-definite cone (a tangent that stays definite, but not the force's Jacobian: Newton
+  /// converges linearly where many pairs act). Exact: as they are (the Jacobian, so Newton
+  /// converges quadratically and the tangent's inertia tells stability; indefinite in
+  /// general). Adaptive: exact where the whole tangent is positive definite, projected at the
+  /// iterates where it is not (adapts_tangent; the solvers ask for it by target.definite).
+  enum class TangentForm : int { Projected = 0, Exact = 1, Adaptive = 2 };
+
   SelfContactFamily(std::vector<Index> triangles, double d_hat, double stiffness,
-                    bool exact_tangent = false);
+                    TangentForm tangent = TangentForm::Adaptive);
   static FamilyPtr from_table(const Table& table);
 
   const char* name() const override { return "self_contact"; }
@@ -55,6 +60,7 @@ class SelfContactFamily final : public ElementFamily {
   bool limits_steps() const override { return true; }
   double step_limit(const NodeMatrix& X, const VectorX& u, const VectorX& du) const override;
   bool changes_elements() const override { return true; }
+  bool adapts_tangent() const override { return tangent_ == TangentForm::Adaptive; }
   void active_elements(const NodeMatrix& X, const VectorX& u, ActiveElements& out) const override;
 
   /// The smallest distance between two primitives that are not excluded at positions x
@@ -78,7 +84,7 @@ class SelfContactFamily final : public ElementFamily {
   elements::TriangleMatrix triangles_;
   elements::EdgeMatrix edges_;
   double d_hat_, stiffness_;
-  bool exact_tangent_ = false;
+  TangentForm tangent_ = TangentForm::Adaptive;
   // The broad phase's candidates kept across evaluations (the family's only state, a cache:
   // every result is that of a broad phase of its own).
   std::unique_ptr<elements::ContactCandidateCache> cache_;

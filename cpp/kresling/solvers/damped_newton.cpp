@@ -15,8 +15,7 @@ NewtonOutcome damped_newton(assembly::Assembler& assembler, TangentSolver& solve
     check_interrupt();
     ++out.iterations;
     assembler.assemble(u, force, /*with_matrix=*/true);
-    follow_pattern(assembler, solver);
-    const FactorizeInfo info = solver.factorize(assembler.matrix());
+    const FactorizeInfo info = factorize_tangent(assembler, solver, u, force);
     const VectorX du = info.ok ? solver.solve(gather_rows(assembler, -force)) : VectorX();
     if (!info.ok || !du.allFinite()) {
       out.failure = "the tangent stiffness is singular or the correction is not finite";

@@ -127,8 +127,7 @@ NewtonOutcome MgdcmControl::correct(Increment& increment, assembly::Assembler& a
     check_interrupt();
     ++outcome_.iterations;
     assembler.assemble(u, force, /*with_matrix=*/true);
-    follow_pattern(assembler, solver);
-    const FactorizeInfo info = solver.factorize(assembler.matrix());
+    const FactorizeInfo info = factorize_tangent(assembler, solver, u, force);
     if (!info.ok) {
       outcome_.failure = "the tangent stiffness is singular";
       break;

@@ -34,6 +34,23 @@ void follow_pattern(assembly::Assembler& assembler, TangentSolver& solver) {
   }
 }
 
+FactorizeInfo factorize_tangent(assembly::Assembler& assembler, TangentSolver& solver,
+                                const VectorX& u, VectorX& force, ExtraTerms* extra) {
+  follow_pattern(assembler, solver);
+  const auto& families = assembler.model().families();
+  const bool adapts = std::any_of(families.begin(), families.end(),
+                                  [](const auto& family) { return family->adapts_tangent(); });
+  if (!adapts) return solver.factorize(assembler.matrix());
+  const FactorizeInfo exact = solver.factorize(assembler.matrix(), /*cholesky_only=*/true);
+  if (exact.ok) return exact;
+  assembler.assemble(u, force, /*with_matrix=*/true, /*definite=*/true);
+  if (extra) {
+    extra->add_force(u, force);
+    extra->add_tangent(u, assembler.workspace());
+  }
+  return solver.factorize(assembler.matrix());
+}
+
 namespace {
 
 // The model's extent [mm] (at least 1): corrections beyond 1e6 times it mean a mechanism.
@@ -156,8 +173,7 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
           "folded flat)";
       return out;
     }
-    follow_pattern(assembler, solver);
-    const FactorizeInfo info = solver.factorize(assembler.matrix());
+    const FactorizeInfo info = factorize_tangent(assembler, solver, u, force, extra);
     if (!info.ok) {
       out.failure = "the tangent stiffness is singular (an unconstrained mechanism)";
       return out;

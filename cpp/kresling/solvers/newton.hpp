@@ -89,6 +89,16 @@ extern const char* const kHeldMoveBlocked;
 /// is analysed anew; nothing otherwise.
 void follow_pattern(assembly::Assembler& assembler, TangentSolver& solver);
 
+/// Factorise the tangent just assembled at `u` (the model's, with `extra`'s terms added, its
+/// force in `force`), its pattern first told to `solver` (follow_pattern). Where a family
+/// adapts its tangent (ElementFamily::adapts_tangent: contact pairs' exact Hessians) and
+/// that tangent is not positive definite, the tangent is assembled again at `u` with those
+/// families' positive semi-definite forms (`force` and `extra`'s terms again too) and that
+/// one is factorised: Newton's exact Jacobian where the structure is stable, a definite
+/// tangent where the exact one would steer toward an unstable equilibrium.
+FactorizeInfo factorize_tangent(assembly::Assembler& assembler, TangentSolver& solver,
+                                const VectorX& u, VectorX& force, ExtraTerms* extra = nullptr);
+
 /// Gather the entries of a full-length vector at the assembler's rows.
 VectorX gather_rows(const assembly::Assembler& assembler, const VectorX& full);
 /// Add a row-indexed vector into the full-length vector at the assembler's rows.

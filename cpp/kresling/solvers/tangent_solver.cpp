@@ -207,7 +207,7 @@ void TangentSolver::set_pattern(std::uint64_t pattern) {
   pattern_ = pattern;
 }
 
-FactorizeInfo TangentSolver::factorize(const SparseMatrix& K) {
+FactorizeInfo TangentSolver::factorize(const SparseMatrix& K, bool cholesky_only) {
   Impl& s = *impl_;
   FactorizeInfo info;
   s.current = Factorization::None;
@@ -245,6 +245,7 @@ FactorizeInfo TangentSolver::factorize(const SparseMatrix& K) {
         return {true, Factorization::Cholesky, 0};
       }
   }
+  if (cholesky_only) return info;
   // Indefinite (or singular): LDL^T for the inertia, if its pivots are usable (none zero
   // or tiny against the largest: an exactly singular or badly conditioned leading block).
   VectorX d;

@@ -77,7 +77,9 @@ class TangentSolver {
 
   /// Factorise the symmetric K, of which only the lower triangle is read (store it whole or
   /// just that triangle). The pattern is analysed on the first call and must stay the same.
-  FactorizeInfo factorize(const SparseMatrix& K);
+  /// `cholesky_only`: when K is not positive definite, return ok = false at once instead of
+  /// going on to LDL^T or LU (a caller that would rather change K than factorise it).
+  FactorizeInfo factorize(const SparseMatrix& K, bool cholesky_only = false);
 
   /// Tell the solver which pattern the next factorize calls see (Workspace::pattern_id): when
   /// it differs from the one the symbolic analysis was made for, the next call analyses the
