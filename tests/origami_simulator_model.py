@@ -89,6 +89,25 @@ class SimulatorModel:
     corner_angle: np.ndarray = field(default=None)   # (T, 3) flat interior angles
 
 
+def bounding_circle(pattern):
+    """The centre (2,) and radius of the circle about the sheet's bounding box's centre
+    through its farthest vertex, in the pattern's units: the simulator scales the sheet to
+    radius 1 about that centre."""
+    xy = np.asarray(pattern.vertices, dtype=float)[:, :2]
+    centre = 0.5 * (xy.min(axis=0) + xy.max(axis=0))
+    return centre, float(np.max(np.linalg.norm(xy - centre, axis=1)))
+
+
+def material_in_model_units(pattern, base):
+    """This package's ``[material]`` keys for the simulator's three ingredients: ``base``
+    (creases of 1 N mm/rad per mm) with bars of EA = 20 / 0.7 N and corner springs of
+    0.2 R / 0.7 N mm/rad^2 (R the bounding radius in mm). The simulator's energy times
+    R / 0.7 is this model's energy with these keys."""
+    _, radius = bounding_circle(pattern)
+    return dict(base, bar_modulus=AXIAL_STIFFNESS / CREASE_STIFFNESS,
+                face_stiffness=FACE_STIFFNESS * radius / CREASE_STIFFNESS)
+
+
 def build(pattern, targets_deg=None, triangles=None, rotate=0):
     """The simulator's model of ``pattern``; ``targets_deg`` one per pattern edge (default
     the pattern's ``edges_fold_angle``, unknown as 0). ``triangles`` (in the pattern's
@@ -96,8 +115,7 @@ def build(pattern, targets_deg=None, triangles=None, rotate=0):
     triangulation; ``rotate`` starts the ear clipping that many corners on (another choice
     of diagonals)."""
     xy = np.asarray(pattern.vertices, dtype=float)[:, :2]
-    centre = 0.5 * (xy.min(axis=0) + xy.max(axis=0))
-    radius = np.max(np.linalg.norm(xy - centre, axis=1))
+    centre, radius = bounding_circle(pattern)
     x0 = np.zeros((len(xy), 3))
     x0[:, :2] = (xy - centre) / radius
     if triangles is None:

@@ -226,13 +226,7 @@ def test_the_flapping_bird_folds_as_origami_simulators_model_on_its_triangles(tm
     assert np.all(np.sign(theirs[driven]) == np.sign(reference.hinge_target[driven]))
     fold_file, on_triangles = _on_simulators_triangles(pattern, triangles, 0.6 * targets,
                                                        tmp_path)
-    # The simulator's energy times R / 0.7 (R its bounding radius in mm) is this model's
-    # with creases of 1 N mm/rad per mm: bars of EA = 20 / 0.7 N, corner springs of
-    # 0.2 R / 0.7 N mm/rad^2.
-    xy = pattern.vertices[:, :2]
-    radius = np.max(np.linalg.norm(xy - 0.5 * (xy.min(axis=0) + xy.max(axis=0)), axis=1))
-    material = dict(STIFF, bar_modulus=osm.AXIAL_STIFFNESS / osm.CREASE_STIFFNESS,
-                    face_stiffness=osm.FACE_STIFFNESS * radius / osm.CREASE_STIFFNESS)
+    material = osm.material_in_model_units(pattern, STIFF)
     _, x, report = _fold(fold_file, {}, on_triangles, steps=20, material=material)
     assert report["left_branch"] == 0 and not report["snaps"]
     ours = osm.hinge_angles(reference, x[:pattern.num_vertices])

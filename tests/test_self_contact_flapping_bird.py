@@ -17,7 +17,7 @@ import pytest
 import origami_simulator_model as osm
 from kresling.io import fold_angles, read_pattern
 from kresling.simulate import simulate
-from public_files import ORIGAMI_SIMULATOR
+from public_files import ORIGAMI_SIMULATOR, STIFF
 from triangle_intersection_helpers import intersecting_pairs
 
 BIRD = ORIGAMI_SIMULATOR / "flappingBird.svg"
@@ -25,20 +25,11 @@ D_HAT = 2.0  # [mm], on a sheet 533 mm across
 
 
 def _bird_problem(pattern, contact):
-    xy = pattern.vertices[:, :2]
-    radius = np.max(np.linalg.norm(xy - 0.5 * (xy.min(axis=0) + xy.max(axis=0)), axis=1))
-    material = {"calibration": "manual", "bar_area": 1.0,
-                "bar_modulus": osm.AXIAL_STIFFNESS / osm.CREASE_STIFFNESS,
-                "fold_stiffness": 1.0, "bend_stiffness": 1.0,
-                "face_stiffness": osm.FACE_STIFFNESS * radius / osm.CREASE_STIFFNESS}
-    targets = np.nan_to_num(pattern.edges_fold_angle)
-    actuation = [{"edges": [edge], "fold_angle_deg": float(target)}
-                 for edge, letter, target in zip(pattern.edges.tolist(),
-                                                 pattern.edges_assignment, targets)
-                 if letter in "MV"]
-    data = {"pattern": {"file": str(BIRD), "split": "N4B5"}, "material": material,
+    data = {"pattern": {"file": str(BIRD), "split": "N4B5"},
+            "material": osm.material_in_model_units(pattern, STIFF),
             "support": [{"nodes": list(pattern.faces[0][:3]), "fix": "xyz"}],
-            "actuation": actuation,
+            # Every mountain and valley crease to its edges_foldAngle.
+            "actuation": [{"family": "fold", "fold_angle_deg": "file"}],
             "analysis": {"method": "fold", "steps": 40, "snap": True}}
     if contact:
         data["contact"] = {"distance": D_HAT, "self": True}

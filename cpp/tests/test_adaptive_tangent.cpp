@@ -27,9 +27,8 @@ using Form = model::SelfContactFamily::TangentForm;
 namespace {
 
 using contact_test::lowered;
+using contact_test::two_triangles;
 constexpr double kDHat = contact_test::kTwoTrianglesDHat;
-
-model::Model two_triangles(Form form) { return contact_test::two_triangles(form); }
 
 Eigen::MatrixXd tangent(const model::Model& m, const VectorX& u, bool definite = false) {
   assembly::Workspace w(m, assembly::all_dofs(18), 0.0);

@@ -16,7 +16,7 @@ from kresling.simulate.actuation import FoldPlan, fold_plan
 from kresling.simulate.element_histories import ElementHistories, element_histories
 from kresling.simulate.modes_output import run_modes
 from kresling.simulate.problem import _AXES, PREDICTORS, Problem, load_problem, node_count
-from kresling.simulate.problem_contact import TANGENTS
+from kresling.simulate.problem_contact import TANGENTS, auto_barrier_stiffness
 from kresling.solvers import (PathResult, solve_displacement_control, solve_force_control,
                               solve_fold, solve_mgdcm)
 
@@ -244,7 +244,6 @@ def _barrier_stiffness(problem, model) -> float:
     """kappa [N/mm^3] of ``[contact]``: its number, or "auto" from the model's mean diagonal
     stiffness at rest (docs/simulate.md, '[contact]')."""
     from kresling.assembly import assemble
-    from kresling.simulate.problem_contact import auto_barrier_stiffness
 
     contact = problem.contact
     if contact.stiffness is not None:
