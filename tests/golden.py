@@ -42,7 +42,9 @@ def model():
         np.column_stack([folds["axis1"], folds["axis2"], folds["wing3"], folds["wing4"]]).astype(int) - 1,
         bar_modulus=bars["EA"] / bars["A"], bar_area=bars["A"], bar_rest_length=bars["L0"],
         hinge_stiffness=folds["kf_per_length"], hinge_rest_angle=folds["theta0"],
-        hinge_length=folds["L0"], fixed=fixed_mask(len(X)))
+        hinge_length=folds["L0"], fixed=fixed_mask(len(X)),
+        # MERLIN2's arccosine angle: its flat polygon spokes' forces then agree to rounding.
+        hinge_angle="merlin2")
 
 
 def state(step):

@@ -126,3 +126,22 @@ def test_invalid_panels():
         panel_topology(SQUARE, [[0, 1, 4]])
     with pytest.raises(ValueError, match=r"split = 'N9' is invalid"):
         panel_topology(SQUARE, [[0, 1, 2]], split="N9")
+
+
+def test_hinge_angle_exact_by_default_and_merlin2s_on_request():
+    # Wing 3 lifted by ~1e-9 out of the flat square: the exact (atan2) angle reads the lift
+    # about the diagonal 0-2 to a few ulps of pi; MERLIN2's arccosine is ~1e-8 rad coarse
+    # there (acos(-1 + d) = pi - sqrt(2 d): one ulp of the cosine is 2.1e-8 rad).
+    nodes = SQUARE.copy()
+    nodes[3] = [0.0, np.cos(1e-9), np.sin(1e-9)]
+    lift = math.atan2(nodes[3, 2], nodes[3, 1] / math.sqrt(2))  # its distance to the axis
+    flat = two_triangles()
+    for form, tolerance in (("exact", 1e-15), ("merlin2", 3e-8)):
+        m = two_triangles(hinge_angle=form)
+        assert m.hinge_angle.tolist() == [{"exact": 0, "merlin2": 1}[form]]
+        assert m.replace(fixed=m.fixed).hinge_angle.tolist() == m.hinge_angle.tolist()
+        angle = m.element_state((nodes - SQUARE).ravel())["hinge_angle"][0]
+        assert abs(abs(angle - flat.hinge_rest_angle[0]) - lift) <= tolerance, form
+    assert flat.hinge_rest_angle[0] == pytest.approx(math.pi, abs=1e-15)
+    with pytest.raises(ValueError, match="hinge_angle = 'acos' is invalid"):
+        two_triangles(hinge_angle="acos")

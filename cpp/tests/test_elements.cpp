@@ -89,26 +89,59 @@ Eigen::Matrix3d random_rotation(std::mt19937& rng) {
 
 TEST(Dihedral, AngleSweepsTheWholeTurn) {
   // Axis along z, wing c on +x: the angle equals the azimuth of wing d, from 0 to 2 pi.
-  // Away from 0 and pi the arccosine is well conditioned (1e-12); within 1e-4 of them its
-  // error is bounded by eps / sin(theta) ~ 1e-16 / 1e-7 plus the rounding of the cosine
-  // itself, sqrt(2 eps) ~ 2e-8: the tolerance there is 3e-8.
+  // The exact form (atan2) is accurate to rounding everywhere, at 1e-7 rad from flat (pi)
+  // and from folded flat (0, 2 pi) as well: 1e-15 rad there (a few ulps of pi), 1e-12
+  // relative elsewhere. MERLIN2's arccosine is as accurate away from 0 and pi; within 1e-4
+  // of them its error is bounded by eps / sin(theta) ~ 1e-16 / 1e-7 plus the rounding of
+  // the cosine itself, sqrt(2 eps) ~ 2e-8: the tolerance there is 3e-8.
   const Vector3 a(0, 0, 0), b(0, 0, 1), c(1, 0, 0.3);
   for (double phi : {1e-7, 1e-3, 0.1, 1.0, kPi / 2, kPi - 1e-3, kPi - 1e-7, kPi, kPi + 1e-7,
                      kPi + 1e-3, 4.0, 6.0, 2 * kPi - 1e-3, 2 * kPi - 1e-7}) {
     const Vector3 d(std::cos(phi), std::sin(phi), 0.7);
     const double distance = std::min({phi, std::abs(phi - kPi), 2 * kPi - phi});
-    EXPECT_NEAR(dihedral_angle(a, b, c, d), phi, distance < 1e-4 ? 3e-8 : 1e-12)
+    EXPECT_NEAR(dihedral_angle(a, b, c, d), phi, distance < 1e-4 ? 1e-15 : 1e-12 * phi)
+        << "phi = " << phi;
+    EXPECT_NEAR(dihedral_angle(a, b, c, d, DihedralForm::Merlin2), phi,
+                distance < 1e-4 ? 3e-8 : 1e-12)
         << "phi = " << phi;
   }
 }
 
+TEST(Dihedral, ExactNearFlatAtEveryScale) {
+  // A flat hinge lifted by 1e-9 of its size at a wing: the angle is pi - 1e-9 to rounding
+  // at 1 um, 1 mm and 1 m (the arccosine would give pi, or pi - ~1.5e-8, by rounding).
+  for (double scale : {1e-3, 1.0, 1e3}) {
+    const Vector3 a(0, 0, 0), b(0, scale, 0), c(scale, 0.3 * scale, 0);
+    const double lift = 1e-9;
+    const Vector3 d(-scale * std::cos(lift), 0.6 * scale, scale * std::sin(lift));
+    // pi -+ 1e-9 (the side depends on the axis's direction): |theta - pi| to a few ulps of pi.
+    EXPECT_NEAR(std::abs(dihedral_angle(a, b, c, d) - kPi), lift, 1e-15) << "scale " << scale;
+  }
+}
+
 TEST(Dihedral, SideRuleFollowsMerlin) {
-  // Within |n . r_ac| <= 1e-8 the angle is taken on the near side of pi (docs/model.md,
-  // 'Hinges').
+  // MERLIN2's form: within |n . r_ac| <= 1e-8 the angle is taken on the near side of pi
+  // (docs/model.md, 'Hinges'). The exact form has no threshold: the side is the sine's sign.
   const Vector3 a(0, 0, 0), b(0, 0, 1), c(1, 0, 0.3);
   const double tiny = 1e-10;  // |n . r_ac| = sin(tiny) * |r_db_perp| * |r_ac_perp| ~ 1e-10
   const Vector3 d(std::cos(kPi + tiny), std::sin(kPi + tiny), 0.7);
-  EXPECT_LE(dihedral_angle(a, b, c, d), kPi);
+  EXPECT_LE(dihedral_angle(a, b, c, d, DihedralForm::Merlin2), kPi);
+  EXPECT_NEAR(dihedral_angle(a, b, c, d), kPi + tiny, 1e-15);
+}
+
+TEST(Dihedral, FormsAgreeAwayFromZeroAndPi) {
+  std::mt19937 rng(5);
+  for (int trial = 0; trial < 500; ++trial) {
+    const auto x = random_hinge(rng, 1.0);
+    const double exact = dihedral_angle(x[0], x[1], x[2], x[3]);
+    const double merlin = dihedral_angle(x[0], x[1], x[2], x[3], DihedralForm::Merlin2);
+    const double distance = std::min({exact, std::abs(exact - kPi), 2 * kPi - exact});
+    // The arccosine's error is ~ eps / sin(theta) (relative to the angle's size, 1e-12).
+    EXPECT_NEAR(exact, merlin, 1e-12 + 1e-15 / std::max(distance, 1e-12)) << "trial " << trial;
+    EXPECT_GE(exact, 0.0);
+    EXPECT_LT(exact, 2 * kPi);
+  }
+  EXPECT_THROW(dihedral_form(2, "form"), std::invalid_argument);
 }
 
 TEST(Dihedral, GradientAndHessianMatchFiniteDifferences) {

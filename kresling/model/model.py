@@ -9,7 +9,7 @@ from kresling._validation import (as_float_array, as_integer, as_integer_array, 
                                   show)
 # The law tables live in kresling.laws (the element kernels name laws too); these names
 # stay importable from here and from kresling.model.
-from kresling.laws import BAR_LAWS, FOLD_LIMITS, SPRING_LAWS  # noqa: F401
+from kresling.laws import BAR_LAWS, FOLD_LIMITS, HINGE_ANGLES, SPRING_LAWS  # noqa: F401
 
 
 def _per_element(name, value, count, dtype=float):
@@ -76,6 +76,10 @@ class Model:
         One of :data:`SPRING_LAWS`.
     hinge_limits : (float, float) or array_like, shape (H, 2), default (5 deg, 355 deg)
         Limits of the enhanced linear law's linear range [rad].
+    hinge_angle : str or sequence of str, default "exact"
+        How each hinge's dihedral angle is computed, one of :data:`HINGE_ANGLES`: "exact"
+        (atan2, accurate to rounding flat or folded) or "merlin2" (MERLIN2's arccosine, to
+        reproduce its runs to rounding). The default rest angles use the same form.
     fixed : array_like of bool, shape (N, 3), optional
         Supported DOFs (u = 0). Default: none.
     cables : sequence of (nodes, stiffness, rest_length), optional
@@ -105,7 +109,7 @@ class Model:
     def __init__(self, nodes, bars, hinges, *, bar_modulus, hinge_stiffness, bar_area=1.0,
                  bar_rest_length=None, bar_law="ogden", hinge_rest_angle=None, hinge_length=None,
                  hinge_law="enhanced_linear", hinge_limits=FOLD_LIMITS, fixed=None, cables=None,
-                 families=None):
+                 families=None, hinge_angle="exact"):
         nodes = np.ascontiguousarray(as_float_array("nodes", nodes))
         if nodes.ndim != 2 or nodes.shape[1] != 3:
             raise ValueError(f"nodes has shape {nodes.shape}: must be (N, 3)")
@@ -119,8 +123,9 @@ class Model:
                                  f"[0, {len(nodes)})")
         if bar_rest_length is None:
             bar_rest_length = np.linalg.norm(nodes[bars[:, 1]] - nodes[bars[:, 0]], axis=1)
+        angle_forms = _law_codes("hinge_angle", hinge_angle, HINGE_ANGLES, nh)
         if hinge_rest_angle is None:
-            hinge_rest_angle = _core.elements.dihedral_angles(nodes, hinges)
+            hinge_rest_angle = _default_rest_angles(nodes, hinges, angle_forms)
         if hinge_length is None:
             hinge_length = np.linalg.norm(nodes[hinges[:, 1]] - nodes[hinges[:, 0]], axis=1)
         limits = as_float_array("hinge_limits", hinge_limits)
@@ -147,6 +152,7 @@ class Model:
             "hinge_length": _per_element("hinge_length", hinge_length, nh),
             "hinge_law": _law_codes("hinge_law", hinge_law, SPRING_LAWS, nh),
             "hinge_limits": np.ascontiguousarray(limits),
+            "hinge_angle": angle_forms,
             "fixed": fixed,
             "cable_stiffness": cable_stiffness,
             "cable_rest_length": cable_rest,
@@ -172,6 +178,7 @@ class Model:
             "hinge_rest_angle": hinges["rest_angle"], "hinge_length": hinges["length"],
             "hinge_law": hinges["law"],
             "hinge_limits": np.column_stack([hinges["theta1"], hinges["theta2"]]),
+            "hinge_angle": hinges["angle_form"],
             "fixed": np.asarray(core.fixed).astype(bool).reshape(-1, 3),
             "cable_stiffness": cables["stiffness"], "cable_rest_length": cables["rest_length"],
         }
@@ -227,6 +234,7 @@ class Model:
             "hinge_rest_angle": a["hinge_rest_angle"], "hinge_length": a["hinge_length"],
             "hinge_law": [_name(SPRING_LAWS, c) for c in a["hinge_law"]],
             "hinge_limits": a["hinge_limits"], "fixed": a["fixed"],
+            "hinge_angle": [_name(HINGE_ANGLES, c) for c in a["hinge_angle"]],
             "cables": list(zip(a["cable_nodes"], a["cable_stiffness"], a["cable_rest_length"])),
             "families": self._further_families(),
         }
@@ -342,12 +350,24 @@ def _builtin_tables(a) -> dict:
         "hinges": {"nodes": a["hinges"], "stiffness": a["hinge_stiffness"],
                    "rest_angle": a["hinge_rest_angle"], "length": a["hinge_length"],
                    "law": a["hinge_law"], "theta1": np.ascontiguousarray(a["hinge_limits"][:, 0]),
-                   "theta2": np.ascontiguousarray(a["hinge_limits"][:, 1])},
+                   "theta2": np.ascontiguousarray(a["hinge_limits"][:, 1]),
+                   "angle_form": a["hinge_angle"]},
         "cables": {"nodes": (np.concatenate(cable_nodes) if cable_nodes
                              else np.zeros(0, dtype=np.int64)),
                    "node_count": np.array([len(c) for c in cable_nodes], dtype=np.int64),
                    "stiffness": a["cable_stiffness"], "rest_length": a["cable_rest_length"]},
     }
+
+
+def _default_rest_angles(nodes, hinges, forms):
+    """The hinges' angles in ``nodes``, each computed in its own form."""
+    angles = np.empty(len(hinges))
+    for name, code in HINGE_ANGLES.items():
+        chosen = forms == code
+        if chosen.any():
+            angles[chosen] = _core.elements.dihedral_angles(
+                nodes, hinges[chosen], getattr(_core.elements.DihedralForm, name))
+    return angles
 
 
 def _tables(families) -> dict:

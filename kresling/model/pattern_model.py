@@ -235,7 +235,8 @@ def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", la
         Build the model exactly as MERLIN2 v1.1 does: its pairing of calibrated values
         with elements (see :func:`calibrate_sheet`) and its rest angles (computed with
         Octave's scaled 2-norm; they can differ from the exact ones by ~1e-8 rad, which
-        the super-linear bend law's tangent feels).
+        the super-linear bend law's tangent feels) and hinge angles (its arccosine, see
+        :class:`Model`'s ``hinge_angle``).
     assignments : {"fold", "origami_simulator"}
         The convention of the letters (:mod:`kresling.model.crease_kinds`).
 
@@ -281,9 +282,11 @@ def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", la
     hinges = np.asarray(hinges, dtype=np.int64).reshape(-1, 4)
     # MERLIN2 computes rest angles with Octave's scaled 2-norm: a flat panel's can be
     # ~1e-8 rad off pi, which changes the super-linear bend tangent at rest (and so its
-    # Newton iterations). Compatibility reproduces it; otherwise the kernel's own angle.
+    # Newton iterations). Compatibility reproduces it, and MERLIN2's arccosine angle in the
+    # elements; otherwise the exact angle, at rest and in every state.
     rest = (_core.model.merlin2_rest_angles(elements.nodes, hinges) if merlin2_compat else None)
     model = Model(elements.nodes, elements.bars, hinges, hinge_rest_angle=rest,
+                  hinge_angle="merlin2" if merlin2_compat else "exact",
                   bar_modulus=bar_modulus, bar_area=bar_area, bar_law=laws.bar,
                   hinge_stiffness=np.asarray(k, dtype=float), hinge_law=law,
                   hinge_limits=np.asarray(limits, dtype=float).reshape(-1, 2), fixed=fixed,

@@ -19,6 +19,7 @@ from kresling.simulate.problem import _AXES, PREDICTORS, Problem, load_problem, 
 from kresling.simulate.problem_contact import TANGENTS, auto_barrier_stiffness
 from kresling.solvers import (PathResult, solve_displacement_control, solve_force_control,
                               solve_fold, solve_mgdcm)
+from kresling.solvers.tangent_shift import MERLIN2_SHIFT, scale_free_shift
 
 __all__ = ["Simulation", "PathState", "simulate", "build_problem_model"]
 
@@ -406,8 +407,10 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
 
     needed = stop is not None or bar is not None or monitor is not None or np.isfinite(bound)
     callback = rule if needed else None
+    # Scale-free like the tolerance: MERLIN2's absolute shift only to reproduce its runs.
+    shift = MERLIN2_SHIFT if problem.merlin2_compat else scale_free_shift(model)
     common = {"tolerance": analysis.tolerance, "max_iterations": analysis.max_iterations,
-              "stop": callback}
+              "stop": callback, "shift": shift}
     try:
         if analysis.method == "displacement_control":
             adaptive = analysis.increments == "adaptive"

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include <Eigen/Geometry>
 
@@ -11,30 +13,53 @@ namespace {
 
 constexpr double kTwoPi = 6.28318530717958647692;
 
-// MERLIN2's formula (docs/model.md, 'Hinges'), kept exactly so that forces match the
-// reference runs to rounding: theta = sgn acos(m.n / |m||n|), sgn = sign(n . r_ac), taken
-// as +1 when |n . r_ac| <= 1e-8, then mapped to [0, 2 pi). (m x n is parallel to the axis
-// with the same sign as n . r_ac.) Near 0 and pi the arccosine is ill-conditioned: the
-// angle carries an absolute rounding error up to ~1e-8 rad there; atan2 would be exact, but
-// would differ from MERLIN2's internal forces by that much at nearly flat hinges (the
-// polygon spokes).
+// Keep an angle in [0, 2 pi): 2 pi - theta rounds to 2 pi itself for theta below ~4e-16 (a
+// hinge folded flat, e.g. a polygon edge of a cell with Lc ~ 1e-8 R).
+double below_two_pi(double angle) {
+  return angle < kTwoPi ? angle : std::nextafter(kTwoPi, 0.0);
+}
+
+// MERLIN2's formula (docs/model.md, 'Hinges'), kept exactly so that forces match its runs to
+// rounding: theta = sgn acos(m.n / |m||n|), sgn = sign(n . r_ac), taken as +1 when
+// |n . r_ac| <= 1e-8, then mapped to [0, 2 pi). (m x n is parallel to the axis with the same
+// sign as n . r_ac.) Near 0 and pi the arccosine is ill-conditioned: acos(-1 + d) =
+// pi - sqrt(2 d), so an ulp of the cosine is ~1e-8 rad of angle there.
 double merlin_angle(const Vector3& m, const Vector3& n, const Vector3& r_ac) {
   const double cosine = std::clamp(m.dot(n) / (m.norm() * n.norm()), -1.0, 1.0);
   const double theta = std::acos(cosine);
   const double side = n.dot(r_ac);
   if (!(side < -1e-8)) return theta;
-  // 2 pi - theta rounds to 2 pi itself for theta below ~4e-16 (a hinge folded flat, e.g. a
-  // polygon edge of a cell with Lc ~ 1e-8 R): keep the angle in [0, 2 pi) as documented.
-  const double angle = kTwoPi - theta;
-  return angle < kTwoPi ? angle : std::nextafter(kTwoPi, 0.0);
+  return below_two_pi(kTwoPi - theta);
+}
+
+// The same angle from atan2(|m||n| sin, |m||n| cos): (m x n) . e / |e| and m . n are both
+// accurate to rounding relative to |m||n|, so the angle is too, at 0 and pi as elsewhere.
+// The sign of the sine is that of n . r_ac (the side), without MERLIN2's threshold.
+double exact_angle(const Vector3& m, const Vector3& n, const Vector3& e) {
+  const double sine = m.cross(n).dot(e) / e.norm();
+  const double theta = std::atan2(sine, m.dot(n));
+  return theta < 0.0 ? below_two_pi(theta + kTwoPi) : theta + 0.0;  // + 0.0: not -0.0
+}
+
+double angle_of(const Vector3& m, const Vector3& n, const Vector3& e, const Vector3& r_ac,
+                DihedralForm form) {
+  return form == DihedralForm::Merlin2 ? merlin_angle(m, n, r_ac) : exact_angle(m, n, e);
 }
 
 }  // namespace
 
-double dihedral_angle(const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d) {
+DihedralForm dihedral_form(long long code, const char* what) {
+  if (code == 0 || code == 1) return static_cast<DihedralForm>(code);
+  throw std::invalid_argument(std::string(what) + " = " + std::to_string(code) +
+                              " is invalid: must be 0 (the exact angle, atan2) or 1 "
+                              "(MERLIN2's arccosine)");
+}
+
+double dihedral_angle(const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d,
+                      DihedralForm form) {
   const Vector3 e = b - a;
   const Vector3 r_ac = c - a;
-  return merlin_angle(r_ac.cross(e), e.cross(b - d), r_ac);
+  return angle_of(r_ac.cross(e), e.cross(b - d), e, r_ac, form);
 }
 
 Vector12 dihedral_angle_gradient(const Vector3& a, const Vector3& b, const Vector3& c,
@@ -49,7 +74,7 @@ Matrix12 dihedral_angle_hessian(const Vector3& a, const Vector3& b, const Vector
 
 DihedralDerivatives dihedral_angle_derivatives(const Vector3& a, const Vector3& b,
                                                const Vector3& c, const Vector3& d,
-                                               bool with_hessian) {
+                                               bool with_hessian, DihedralForm form) {
   DihedralDerivatives out;
   const Vector3 e = b - a;       // axis
   const Vector3 r_ac = c - a;    // to wing 1
@@ -60,7 +85,7 @@ DihedralDerivatives dihedral_angle_derivatives(const Vector3& a, const Vector3& 
   const double L = std::sqrt(L2);
   const double m2 = m.squaredNorm();
   const double n2 = n.squaredNorm();
-  out.angle = merlin_angle(m, n, r_ac);
+  out.angle = angle_of(m, n, e, r_ac, form);
 
   // Wing derivatives: each wing moves the angle along its triangle's normal, inversely
   // to its distance from the axis (|m| / L); the axis nodes take the rest so that the

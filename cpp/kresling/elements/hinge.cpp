@@ -6,8 +6,8 @@ namespace kresling::elements {
 
 HingeResponse hinge_response(const Vector3& a, const Vector3& b, const Vector3& c,
                              const Vector3& d, double kp, double rest_angle, double length,
-                             const SpringLaw& law, bool with_stiffness) {
-  const DihedralDerivatives theta = dihedral_angle_derivatives(a, b, c, d, with_stiffness);
+                             const SpringLaw& law, bool with_stiffness, DihedralForm form) {
+  const DihedralDerivatives theta = dihedral_angle_derivatives(a, b, c, d, with_stiffness, form);
   const SpringResponse s = law.evaluate(theta.angle, rest_angle, kp);
   HingeResponse r;
   r.angle = theta.angle;

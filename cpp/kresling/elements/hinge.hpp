@@ -4,6 +4,7 @@
 /// (see dihedral.hpp for the node order a, b (axis), c, d (wings)).
 
 #include "kresling/core/types.hpp"
+#include "kresling/elements/dihedral.hpp"
 #include "kresling/elements/spring_laws.hpp"
 
 namespace kresling::elements {
@@ -18,9 +19,11 @@ struct HingeResponse {
 };
 
 /// Evaluate a hinge of length L0 with stiffness kp per unit length and rest angle theta0.
-/// `with_stiffness = false` skips the 12 x 12 tangent (left unset).
+/// `with_stiffness = false` skips the 12 x 12 tangent (left unset); `form` computes the
+/// angle (dihedral.hpp).
 HingeResponse hinge_response(const Vector3& a, const Vector3& b, const Vector3& c,
                              const Vector3& d, double kp, double rest_angle, double length,
-                             const SpringLaw& law, bool with_stiffness = true);
+                             const SpringLaw& law, bool with_stiffness = true,
+                             DihedralForm form = DihedralForm::Exact);
 
 }  // namespace kresling::elements

@@ -24,6 +24,11 @@ std::string hinge_name(std::size_t index, const std::array<Index, 4>& nodes) {
 
 }  // namespace
 
+double Hinge::angle(const NodeMatrix& x) const {
+  return elements::dihedral_angle(x.row(nodes[0]), x.row(nodes[1]), x.row(nodes[2]),
+                                  x.row(nodes[3]), form);
+}
+
 void check_hinge_geometry(const NodeMatrix& X, const std::array<Index, 4>& nodes,
                           std::size_t index, double scale) {
   for (int k = 0; k < 4; ++k) {
@@ -87,7 +92,7 @@ double HingeFamily::assemble(const NodeMatrix& X, const VectorX& u, AssemblyTarg
     const auto r = elements::hinge_response(position(X, u, h.nodes[0]), position(X, u, h.nodes[1]),
                                             position(X, u, h.nodes[2]), position(X, u, h.nodes[3]),
                                             h.stiffness, h.rest_angle, h.length, h.law,
-                                            with_matrix);
+                                            with_matrix, h.form);
     energy += r.energy;
     add_local_force(r.force, node_dofs(h.nodes), target.force);
     if (with_matrix) scatter_local_tangent(r.stiffness, *target.slots, e, target.values);
@@ -100,8 +105,7 @@ void HingeFamily::add_state(const NodeMatrix& x, ElementState& state) const {
   VectorX angle(n), moment(n), energy(n);
   for (Index e = 0; e < n; ++e) {
     const Hinge& h = hinges_[e];
-    angle[e] = elements::dihedral_angle(x.row(h.nodes[0]), x.row(h.nodes[1]), x.row(h.nodes[2]),
-                                        x.row(h.nodes[3]));
+    angle[e] = h.angle(x);
     const elements::SpringResponse r = h.law.evaluate(angle[e], h.rest_angle, h.stiffness);
     moment[e] = h.length * r.moment;
     energy[e] = h.length * r.energy;
@@ -112,9 +116,10 @@ void HingeFamily::add_state(const NodeMatrix& x, ElementState& state) const {
 }
 
 Table HingeFamily::table() const {
-  std::vector<Index> nodes, law;
+  std::vector<Index> nodes, law, form;
   std::vector<double> k, angle, length, t1, t2;
   for (const Hinge& h : hinges_) {
+    form.push_back(static_cast<Index>(h.form));
     nodes.insert(nodes.end(), h.nodes.begin(), h.nodes.end());
     k.push_back(h.stiffness);
     angle.push_back(h.rest_angle);
@@ -125,12 +130,14 @@ Table HingeFamily::table() const {
   }
   return {{"nodes", index_column(nodes, 4)}, {"stiffness", real_column(k)},
           {"rest_angle", real_column(angle)}, {"length", real_column(length)},
-          {"law", index_column(law)}, {"theta1", real_column(t1)}, {"theta2", real_column(t2)}};
+          {"law", index_column(law)}, {"theta1", real_column(t1)}, {"theta2", real_column(t2)},
+          {"angle_form", index_column(form)}};
 }
 
 FamilyPtr HingeFamily::from_table(const Table& t) {
   require_known_columns(t, "hinges",
-                        {"nodes", "stiffness", "rest_angle", "length", "law", "theta1", "theta2"});
+                        {"nodes", "stiffness", "rest_angle", "length", "law", "theta1", "theta2",
+                         "angle_form"});
   const Index n = column_rows(t, "hinges", "nodes", true, 4);
   const auto& nodes = require_column(t, "hinges", "nodes", true, 4).indices;
   const auto& k = require_column(t, "hinges", "stiffness", false, 1, n).reals;
@@ -139,6 +146,10 @@ FamilyPtr HingeFamily::from_table(const Table& t) {
   const auto& law = require_column(t, "hinges", "law", true, 1, n).indices;
   const auto& t1 = require_column(t, "hinges", "theta1", false, 1, n).reals;
   const auto& t2 = require_column(t, "hinges", "theta2", false, 1, n).reals;
+  const bool has_form = t.count("angle_form") > 0;
+  const std::vector<Index> no_form;
+  const auto& form =
+      has_form ? require_column(t, "hinges", "angle_form", true, 1, n).indices : no_form;
   std::vector<Hinge> hinges(static_cast<std::size_t>(n));
   for (Index i = 0; i < n; ++i) {
     Hinge& h = hinges[i];
@@ -147,6 +158,7 @@ FamilyPtr HingeFamily::from_table(const Table& t) {
     h.rest_angle = angle[i];
     h.length = length[i];
     h.law = {elements::spring_law_kind(law[i], "hinges.law"), t1[i], t2[i]};
+    if (has_form) h.form = elements::dihedral_form(form[i], "hinges.angle_form");
   }
   return std::make_shared<HingeFamily>(std::move(hinges));
 }

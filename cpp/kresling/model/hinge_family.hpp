@@ -5,6 +5,7 @@
 #include <array>
 #include <vector>
 
+#include "kresling/elements/dihedral.hpp"
 #include "kresling/elements/spring_laws.hpp"
 #include "kresling/model/element_family.hpp"
 
@@ -17,6 +18,11 @@ struct Hinge {
   double rest_angle = 0.0;  ///< theta0 in [0, 2 pi)
   double length = 0.0;      ///< L0, multiplies the law (the rest length of the axis)
   elements::SpringLaw law;
+  /// How the angle is computed: exactly (atan2), or as MERLIN2 does to reproduce its runs.
+  elements::DihedralForm form = elements::DihedralForm::Exact;
+
+  /// The hinge's dihedral angle with the nodes at `x` (rows of node positions).
+  double angle(const NodeMatrix& x) const;
 };
 
 /// Throw std::invalid_argument (naming hinge `index`) when its nodes are out of range or
@@ -26,7 +32,8 @@ void check_hinge_geometry(const NodeMatrix& X, const std::array<Index, 4>& nodes
                           std::size_t index, double scale);
 
 /// Table columns: nodes (4 per hinge), stiffness, rest_angle, length, law (the
-/// SpringLawKind's code), theta1, theta2 (the enhanced linear law's limits).
+/// SpringLawKind's code), theta1, theta2 (the enhanced linear law's limits), and optionally
+/// angle_form (the DihedralForm's code; absent: every angle exact).
 class HingeFamily final : public ElementFamily {
  public:
   explicit HingeFamily(std::vector<Hinge> hinges) : hinges_(std::move(hinges)) {}

@@ -22,7 +22,8 @@ std::vector<signed char> law_pieces(const model::Model& model, const VectorX& u)
       continue;
     }
     const auto& n = hinge.nodes;
-    const double theta = elements::dihedral_angle(at(n[0]), at(n[1]), at(n[2]), at(n[3]));
+    const double theta =
+        elements::dihedral_angle(at(n[0]), at(n[1]), at(n[2]), at(n[3]), hinge.form);
     pieces[h] = theta < hinge.law.theta1 ? -1 : theta > hinge.law.theta2 ? 1 : 0;
   }
   // Cables are tension-only: taut or slack, their kink at the rest length.
@@ -50,7 +51,7 @@ double predicted_kink(const model::Model& model, const PathPoint& a, const PathP
     };
     const auto& n = hinge.nodes;
     const elements::DihedralDerivatives d = elements::dihedral_angle_derivatives(
-        at(n[0]), at(n[1]), at(n[2]), at(n[3]), /*with_hessian=*/false);
+        at(n[0]), at(n[1]), at(n[2]), at(n[3]), /*with_hessian=*/false, hinge.form);
     double rate = 0.0;
     for (int j = 0; j < 4; ++j) {
       rate += d.gradient.segment<3>(3 * j).dot(p.velocity.segment<3>(3 * n[j]));
