@@ -624,5 +624,5 @@ def test_a_degenerate_panel_is_named():
     # "bar 0 (nodes 6, 0): rest length = 0"
     from kresling.model import SheetMaterial, build_pattern_model
     vertices = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [2, 0, 0]], float)
-    with pytest.raises(ValueError, match=r"^panel 0: its centre node lies on its side"):
+    with pytest.raises(ValueError, match=r"^panel 0: two of its sides cross or touch"):
         build_pattern_model((vertices, [[0, 1, 2, 3, 4]]), material=SheetMaterial(1e3, 0.3, 0.25))

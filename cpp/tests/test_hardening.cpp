@@ -280,14 +280,14 @@ TEST(Hardening, CalibrationWithZeroAreaNamesThePoissonRatio) {
   EXPECT_NO_THROW(model::calibrate_sheet(elements, panels, material, false));
 }
 
-// A self-intersecting pentagon whose optimal centre lands on a corner: the model refused
-// "bar 0 (nodes 6, 0): rest length = 0"; the panel is now named.
+// A degenerate pentagon (its corner 1 on its side 4-0) whose optimal centre lands on a
+// corner: the model refused "bar 0 (nodes 6, 0): rest length = 0"; the panel is now named.
 TEST(Hardening, DegeneratePanelFanNamesThePanel) {
   NodeMatrix X(5, 3);
   X << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 2, 0, 0;
   EXPECT_EQ(invalid_message([&] {
               model::build_panel_elements(X, {{0, 1, 2, 3, 4}}, model::PanelSplit::N5B8);
-            }).rfind("panel 0: its centre node lies on its side", 0),
+            }).rfind("panel 0: two of its sides cross or touch", 0),
             0u);
   EXPECT_NO_THROW(model::build_panel_elements(X.topRows(4), {{0, 1, 2, 3}},
                                               model::PanelSplit::N5B8));

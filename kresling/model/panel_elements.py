@@ -87,6 +87,10 @@ def build_panel_elements(vertices, panels, *, split="N5B8", centre="merlin2") ->
         one if it is warped), a larger panel's where the sum of its corners' triangle areas
         over the squared diagonals is least. N4B5: quads cut along the shorter diagonal,
         larger panels along their shortest diagonals recursively. Triangles stay whole.
+        Any simple polygon is a panel: only diagonals inside the panel are cut along, and
+        an N5B8 centre is used only where the panel is star-shaped from it (MERLIN2's,
+        else the corners' mean); a panel star-shaped from neither is cut as N4B5 does,
+        with no centre node (``panel_centre`` -1).
     centre : {"merlin2", "mean"}
         N5B8 centre nodes by MERLIN2's rules (above), or at the mean of the corners.
 
@@ -98,7 +102,8 @@ def build_panel_elements(vertices, panels, *, split="N5B8", centre="merlin2") ->
     ------
     ValueError
         For an unknown split, or a panel with fewer than 3 vertices, an out-of-range or
-        repeated vertex, or degenerate diagonals; the message names the panel.
+        repeated vertex, sides that cross or touch (not a simple polygon), or no area; the
+        message names the panel.
     """
     as_choice("split", split, SPLITS)
     as_choice("centre", centre, CENTRES)

@@ -31,7 +31,7 @@ from kresling.io import UNITS, mm_per_unit, pattern_from_arrays, read_pattern, s
 from kresling.io.cuts import check_duplicate_vertices
 from kresling.model import CreaseLaws, HingeLaw, ManualProperties, SheetMaterial
 from kresling.model.pattern_model import CONVENTIONS, FOLD_FAMILIES
-from kresling.model.panel_elements import CENTRES, SPLITS
+from kresling.model.panel_elements import CENTRES, SPLITS, build_panel_elements
 from kresling.laws import BAR_LAWS, SPRING_LAWS
 from kresling.simulate.output_table import Output, read_output
 from kresling.simulate.problem_actuation import read_actuations, read_springs
@@ -558,10 +558,16 @@ def _read_loads(entries, source, text, num_nodes):
     return tuple(loads)
 
 
-def node_count(pattern, split):
-    """Pattern vertices plus the centre nodes N5B8 adds (one per panel of 4+ vertices)."""
-    centres = sum(1 for face in pattern.faces if len(face) > 3) if split == "N5B8" else 0
-    return pattern.num_vertices + centres
+def node_count(pattern, split, centre="merlin2"):
+    """Pattern vertices plus the centre nodes N5B8 adds (one per panel of 4+ vertices that
+    is star-shaped from a centre; the others are cut along diagonals)."""
+    if split != "N5B8" or all(len(face) == 3 for face in pattern.faces):
+        return pattern.num_vertices
+    try:
+        return len(build_panel_elements(pattern.vertices, pattern.faces, split=split,
+                                        centre=centre).nodes)
+    except ValueError:  # a bad panel: building the model says which, naming the file
+        return pattern.num_vertices + sum(1 for face in pattern.faces if len(face) > 3)
 
 
 def _check_consistency(problem, t_analysis):
@@ -683,7 +689,7 @@ def load_problem(problem) -> Problem:
     pattern, split, centre, convention = _read_pattern(t_pattern, base, compat)
     laws = _read_laws(_Table(root.get("laws", lambda t, k, v, a: v, {}), "laws", source, text),
                       isinstance(material, SheetMaterial))
-    count = node_count(pattern, split)
+    count = node_count(pattern, split, centre)
     supports = _read_supports(root.get("support", _array_of_tables, []), source, text, count)
     loads = _read_loads(root.get("load", _array_of_tables, []), source, text, count)
     t_analysis = _Table(root.get("analysis", lambda t, k, v, a: v, required=True,

@@ -207,7 +207,7 @@ def build_problem_model(problem) -> PatternModel:
     # The supports go in with the model (not added to a copy afterwards: the copy was 28 %
     # of the model's cost); the node count is the one the problem was checked against
     # (pattern vertices and the split's centres).
-    fixed = np.zeros((node_count(problem.pattern, problem.split), 3), dtype=bool)
+    fixed = np.zeros((node_count(problem.pattern, problem.split, problem.centre), 3), dtype=bool)
     for support in problem.supports:
         for axis in support.axes:
             fixed[support.node, _AXES[axis]] = True

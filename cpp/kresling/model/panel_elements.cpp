@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <map>
+#include <numeric>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -10,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "kresling/model/panel_centre.hpp"
+#include "kresling/model/polygon_diagonals.hpp"
 
 namespace kresling::model {
 
@@ -42,8 +45,17 @@ void check_panel(const std::vector<Index>& panel, std::size_t p, Index num_verti
 // N4B5 bend hinges of one panel, in local corner indices.
 std::vector<std::array<Index, 4>> local_n4b5_bends(const std::vector<Vector3>& p) {
   if (p.size() == 4) {
-    // The shorter diagonal (p0-p2 on a tie) is the bend axis.
-    if ((p[0] - p[2]).norm() > (p[3] - p[1]).norm()) return {{1, 3, 0, 2}};
+    // The shorter diagonal (p0-p2 on a tie) is the bend axis, unless it lies outside the
+    // panel (a non-convex quad) or along its sides (a straight corner).
+    const bool shorter_13 = (p[0] - p[2]).norm() > (p[3] - p[1]).norm();
+    const PlanarPolygon polygon(p);
+    const bool use_13 = shorter_13 ? polygon.is_interior_diagonal(1, 3)
+                                   : !polygon.is_interior_diagonal(0, 2);
+    if (use_13 && !polygon.is_interior_diagonal(1, 3)) {
+      throw std::invalid_argument("neither diagonal lies inside the quad: it is "
+                                  "self-intersecting or degenerate; must be a simple polygon");
+    }
+    if (use_13) return {{1, 3, 0, 2}};
     return {{0, 2, 1, 3}};
   }
   const Index m = static_cast<Index>(p.size());
@@ -74,15 +86,33 @@ std::vector<std::array<Index, 4>> local_n4b5_bends(const std::vector<Vector3>& p
 std::vector<std::array<Index, 2>> polygon_diagonal_cuts(const std::vector<Vector3>& corners) {
   const std::size_t m = corners.size();
   if (m <= 3) return {};
-  // The shortest diagonal; pairs are visited column by column (j, then i), as MERLIN2 does.
-  std::size_t bi = 0, bj = 2;
-  double best = -1.0;
+  const PlanarPolygon polygon(corners);
+  // Diagonals column by column (j, then i), as MERLIN2 visits them, the shortest interior
+  // one first; a stable sort by length keeps that order on ties.
+  std::vector<std::array<std::size_t, 2>> candidates;
   for (std::size_t j = 2; j < m; ++j) {
     for (std::size_t i = 0; i + 2 <= j; ++i) {
-      if (i == 0 && j == m - 1) continue;
-      const double d2 = (corners[j] - corners[i]).squaredNorm();
-      if (best < 0.0 || d2 < best) best = d2, bi = i, bj = j;
+      if (!(i == 0 && j == m - 1)) candidates.push_back({i, j});
     }
+  }
+  std::vector<double> length(candidates.size());
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    length[k] = (corners[candidates[k][1]] - corners[candidates[k][0]]).squaredNorm();
+  }
+  std::vector<std::size_t> order(candidates.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t x, std::size_t y) { return length[x] < length[y]; });
+  std::size_t bi = m, bj = m;
+  for (std::size_t k : order) {
+    if (polygon.is_interior_diagonal(candidates[k][0], candidates[k][1])) {
+      bi = candidates[k][0], bj = candidates[k][1];
+      break;
+    }
+  }
+  if (bi == m) {
+    throw std::invalid_argument("no diagonal of the panel lies inside it: the panel is "
+                                "self-intersecting or degenerate; must be a simple polygon");
   }
   std::vector<std::array<Index, 2>> cuts = {{static_cast<Index>(bi), static_cast<Index>(bj)}};
   // Recurse on the two sides, mapping their local corners back.
@@ -111,25 +141,27 @@ std::vector<std::array<Index, 2>> PanelElements::bars() const {
 
 namespace {
 
-// The fan of an N5B8 panel around its centre: every triangle (centre, corner k, corner k + 1)
-// must have an area, or a spoke has no length or a fan triangle no width (the centre on a
-// corner or on a side: a self-intersecting or degenerate panel). Said here, naming the panel,
-// rather than by the model as a bar of zero length it cannot explain.
-void check_fan(const Vector3& centre, const std::vector<Vector3>& corners,
-               const std::vector<Index>& panel, std::size_t p) {
-  double size = 0.0;
-  for (const Vector3& x : corners) size = std::max(size, (x - centre).norm());
-  const std::size_t m = corners.size();
-  for (std::size_t k = 0; k < m; ++k) {
-    const Vector3 a = corners[k] - centre, b = corners[(k + 1) % m] - centre;
-    if (!(a.cross(b).norm() > 1e-12 * size * size)) {
-      throw std::invalid_argument(
-          "panel " + std::to_string(p) + ": its centre node lies on its side (vertices " +
-          std::to_string(panel[k]) + ", " + std::to_string(panel[(k + 1) % m]) +
-          "), so the fan of triangles N5B8 builds has one of no area: the panel is "
-          "self-intersecting or degenerate; must be a simple polygon (or use split N4B5)");
+// The N5B8 centre of a panel: by the rule asked for (MERLIN2's, or the corners' mean), else
+// the corners' mean, whichever the panel is star-shaped from (every fan triangle (centre,
+// corner k, corner k + 1) turning its way with an area, so no spoke runs outside it: a
+// non-convex panel, or a straight corner on MERLIN2's quad centre); none when neither is.
+std::optional<Vector3> fan_centre(const std::vector<Vector3>& corners,
+                                  const PlanarPolygon& polygon, CentreRule rule) {
+  Vector3 mean = Vector3::Zero();
+  for (const Vector3& corner : corners) mean += corner;
+  mean /= static_cast<double>(corners.size());
+  if (rule == CentreRule::Merlin2) {
+    try {
+      const Vector3 centre = corners.size() == 4
+                                 ? quad_centre(corners[0], corners[1], corners[2], corners[3])
+                                 : polygon_optimal_centre(corners);
+      if (polygon.is_star_centre(centre)) return centre;
+    } catch (const std::invalid_argument&) {
+      // Parallel or degenerate diagonals (a straight corner): the mean is tried instead.
     }
   }
+  if (polygon.is_star_centre(mean)) return mean;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -153,29 +185,33 @@ PanelElements build_panel_elements(const NodeMatrix& vertices,
     }
     std::vector<Vector3> corners;
     for (Index v : panel) corners.push_back(points[v]);
-    if (split == PanelSplit::N4B5) {
-      for (const auto& b : local_n4b5_bends(corners)) {
-        out.bends.push_back({panel[b[0]], panel[b[1]], panel[b[2]], panel[b[3]]});
-        out.bend_panel.push_back(static_cast<Index>(p));
+    const std::string name = "panel " + std::to_string(p);
+    std::optional<PlanarPolygon> polygon;
+    try {
+      polygon.emplace(corners);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(name + ": " + e.what());
+    }
+    if (!polygon->is_simple()) {
+      throw std::invalid_argument(name + ": two of its sides cross or touch: the panel is "
+                                  "self-intersecting or degenerate; must be a simple polygon");
+    }
+    std::optional<Vector3> centre;
+    if (split == PanelSplit::N5B8) centre = fan_centre(corners, *polygon, centre_rule);
+    if (!centre) {
+      // N4B5, or an N5B8 panel not star-shaped from any centre tried: cut along diagonals.
+      try {
+        for (const auto& b : local_n4b5_bends(corners)) {
+          out.bends.push_back({panel[b[0]], panel[b[1]], panel[b[2]], panel[b[3]]});
+          out.bend_panel.push_back(static_cast<Index>(p));
+        }
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(name + ": " + e.what());
       }
       continue;
     }
-    Vector3 centre;
-    try {
-      if (centre_rule == CentreRule::Mean) {
-        centre = Vector3::Zero();
-        for (const Vector3& corner : corners) centre += corner;
-        centre /= static_cast<double>(m);
-      } else {
-        centre = m == 4 ? quad_centre(corners[0], corners[1], corners[2], corners[3])
-                        : polygon_optimal_centre(corners);
-      }
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("panel " + std::to_string(p) + ": " + e.what());
-    }
-    check_fan(centre, corners, panel, p);
     const Index c = static_cast<Index>(points.size());
-    points.push_back(centre);
+    points.push_back(*centre);
     out.panel_centre.back() = c;
     for (std::size_t k = 0; k < m; ++k) {
       out.bends.push_back({c, panel[k], panel[(k + m - 1) % m], panel[(k + 1) % m]});
