@@ -89,7 +89,7 @@ def _flat_grid(cells, size, compat=False):
 def test_a_flat_sheet_lifted_at_a_corner_converges_alike_at_1_um_1_mm_and_1_m():
     # A flat start is where rounding bites: the hinges sit at pi, where MERLIN2's arccosine
     # loses ~1e-8 rad, and the sheet's long-wave bending modes are soft beside a fixed
-    # 1e-8 N/mm shift at micro scale. Measured: 8 Newton iterations at every size.
+    # 1e-8 N/mm shift at micro scale. Measured: 8 Newton iterations at 1 um, 1 mm and 1 m.
     runs = {size: simulate(_flat_grid(30, size), progress=False).path
             for size in (1e-3, 1.0, 1e3)}
     for size, path in runs.items():

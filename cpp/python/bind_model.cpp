@@ -134,7 +134,8 @@ void bind_specimen(py::module_& m) {
       .def_property(
           "bar_law", [](const SpecimenParameters& p) { return static_cast<int>(p.bar_law); },
           [](SpecimenParameters& p, int law) { p.bar_law = elements::bar_law_kind(law, "bar_law"); })
-      .def_readwrite("duplicate_shared_edges", &SpecimenParameters::duplicate_shared_edges);
+      .def_readwrite("duplicate_shared_edges", &SpecimenParameters::duplicate_shared_edges)
+      .def_readwrite("hinge_angle", &SpecimenParameters::hinge_angle);
 
   py::class_<model::KreslingSpecimen>(
       m, "KreslingSpecimen", "A Kresling stack's model with its element families and levels")

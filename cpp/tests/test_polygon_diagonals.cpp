@@ -86,6 +86,12 @@ TEST(PolygonDiagonals, AStraightCornerIsNoPlaceForADiagonalOrACentre) {
   EXPECT_TRUE(quad.is_interior_diagonal(1, 3));
   EXPECT_FALSE(quad.is_star_centre(Vector3(1, 0, 0)));
   EXPECT_TRUE(quad.is_star_centre(Vector3(1, 0.25, 0)));
+  // Nearly straight (1e-7 rad off): cutting it off would leave a triangle with a 1e-7 rad
+  // corner, and a centre 1e-7 off a side's line a fan triangle as sharp; neither is used.
+  const PlanarPolygon nearly(corners_of({{0, 0}, {1, -1e-7}, {2, 0}, {1, 1}}));
+  EXPECT_FALSE(nearly.is_interior_diagonal(0, 2));
+  EXPECT_TRUE(nearly.is_interior_diagonal(1, 3));
+  EXPECT_FALSE(nearly.is_star_centre(Vector3(1, -0.9e-7, 0)));
 }
 
 TEST(PolygonDiagonals, SelfIntersectingAndPinchedPanelsAreNotSimple) {

@@ -14,7 +14,7 @@ from kresling import _core
 from kresling._validation import (as_bool, as_choice, as_float_array, as_integer, as_list,
                                   as_mask, as_real, show)
 from kresling.geometry import Design, as_design, state_index
-from kresling.model.model import BAR_LAWS, Model
+from kresling.model.model import BAR_LAWS, HINGE_ANGLES, Model
 
 __all__ = ["SpecimenParameters", "KreslingSpecimen", "kresling_specimen", "EDGE_FAMILIES",
            "alternating_chirality", "MOUNTAIN_CREASES"]
@@ -62,6 +62,10 @@ class SpecimenParameters:
         lambda = 0.9, whose single-element run loses stability before the end of its
         travel; 9.5 % linearised), K_ext by under 1 %; a single cell not at all
         (``kresling.analyses.table3.topology_effect`` measures it).
+    hinge_angle : {"merlin2", "exact"}
+        How the hinges' angles are computed (:data:`kresling.laws.HINGE_ANGLES`): MERLIN2's
+        arccosine (the default: the thesis's runs computed it, and the cells' flat polygon
+        spokes are where the two forms differ, by ~1e-8 rad) or the exact atan2.
 
     Examples
     --------
@@ -83,15 +87,18 @@ class SpecimenParameters:
     fold_limits: tuple = field(default=(np.radians(5.0), np.radians(355.0)))
     bar_law: str = "ogden"
     duplicate_shared_edges: bool = True
+    hinge_angle: str = "merlin2"
 
     def __post_init__(self):
         as_choice("bar_law", self.bar_law, BAR_LAWS)
+        as_choice("hinge_angle", self.hinge_angle, HINGE_ANGLES)
         limits = as_float_array("fold_limits", self.fold_limits)
         if limits.shape != (2,):
             raise ValueError(f"fold_limits = {show(self.fold_limits)} is invalid: must be two "
                              "angles [rad]")
         for f in fields(self):  # types here; ranges in the core
-            if f.name not in ("fold_limits", "bar_law", "duplicate_shared_edges"):
+            if f.name not in ("fold_limits", "bar_law", "duplicate_shared_edges",
+                              "hinge_angle"):
                 as_real(f.name, getattr(self, f.name))
         as_bool("duplicate_shared_edges", self.duplicate_shared_edges)
 
@@ -119,7 +126,7 @@ class SpecimenParameters:
                 value = [float(v) for v in value]
             elif f.name == "duplicate_shared_edges":
                 value = bool(value)
-            elif f.name != "bar_law":
+            elif f.name not in ("bar_law", "hinge_angle"):
                 value = float(value)
             out[f.name] = value
         return out
@@ -150,6 +157,8 @@ class SpecimenParameters:
                 p.bar_law = BAR_LAWS[value]
             elif f.name == "duplicate_shared_edges":
                 p.duplicate_shared_edges = bool(value)
+            elif f.name == "hinge_angle":
+                p.hinge_angle = getattr(_core.elements.DihedralForm, value)
             else:
                 setattr(p, f.name, float(value))
         return p

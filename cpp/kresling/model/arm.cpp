@@ -188,8 +188,10 @@ Arm build_arm(const geometry::Design& design, const std::vector<int>& states,
       const Index other = far_is_j1 ? arm.node(level, (j + 2) % n) : arm.node(level, (j + n - 1) % n);
       const std::array<Index, 4> hn{centre, vk, h, other};
       const double angle = elements::dihedral_angle(position(hn[0]), position(hn[1]),
-                                                    position(hn[2]), position(hn[3]));
-      hinges.push_back({hn, guide_kp, angle, (position(vk) - position(centre)).norm(), law});
+                                                    position(hn[2]), position(hn[3]),
+                                                    sp.hinge_angle);
+      hinges.push_back({hn, guide_kp, angle, (position(vk) - position(centre)).norm(), law,
+                        sp.hinge_angle});
     }
     arm.holes.push_back(holes);
   }

@@ -191,10 +191,10 @@ KreslingSpecimen KreslingSpecimenBuilder::build(const geometry::Design& design,
   std::vector<Hinge> hinges(hinge_nodes.size());
   for (std::size_t i = 0; i < hinges.size(); ++i) {
     const auto& h = hinge_nodes[i];
-    const double angle =
-        elements::dihedral_angle(X.row(h[0]), X.row(h[1]), X.row(h[2]), X.row(h[3]));
+    const double angle = elements::dihedral_angle(X.row(h[0]), X.row(h[1]), X.row(h[2]),
+                                                  X.row(h[3]), p.hinge_angle);
     hinges[i] = {h, family_factor(s.hinge_family[i], p) * p.kf, angle,
-                 (X.row(h[1]) - X.row(h[0])).norm(), law};
+                 (X.row(h[1]) - X.row(h[0])).norm(), law, p.hinge_angle};
   }
   if (fixed.empty()) fixed.assign(static_cast<std::size_t>(3 * X.rows()), 0);
   s.model = Model(std::move(X), std::move(bars), std::move(hinges), std::move(fixed));

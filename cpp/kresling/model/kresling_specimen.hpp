@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "kresling/elements/dihedral.hpp"
 #include "kresling/geometry/design.hpp"
 #include "kresling/model/model.hpp"
 
@@ -53,6 +54,10 @@ struct SpecimenParameters {
   double theta2 = 355.0 * 3.14159265358979323846 / 180.0;
   elements::BarLawKind bar_law = elements::BarLawKind::Ogden;
   bool duplicate_shared_edges = true;  ///< MERLIN2's topology (see topology.hpp)
+  /// The hinges' angle: MERLIN2's arccosine, as the thesis's runs computed it, so that the
+  /// cells reproduce them to rounding (their polygon spokes rest flat, where the two forms
+  /// differ by ~1e-8 rad); Exact for atan2's.
+  elements::DihedralForm hinge_angle = elements::DihedralForm::Merlin2;
 };
 
 struct KreslingSpecimen {

@@ -12,6 +12,10 @@ namespace {
 
 // Segments within this fraction of the panel's size of a corner or a side touch it.
 constexpr double kTouching = 1e-9;
+// A cut or a spoke closer than this angle [rad] to a side would make a triangle with a
+// corner that sharp (a nearly straight corner cut off, a centre nearly on a side's line):
+// its angles' derivatives grow as 1 / sin of it.
+constexpr double kMarginAngle = 1e-4;
 
 }  // namespace
 
@@ -70,19 +74,20 @@ bool PlanarPolygon::on_segment(const Eigen::Vector2d& a, const Eigen::Vector2d& 
 }
 
 // Whether the direction from corner i towards `towards` points into the panel's interior
-// angle at i (strictly: not along either side).
+// angle at i, at least kMarginAngle from either side: angles measured counter-clockwise
+// from the side to the next corner, where the interior angle ends at the previous corner
+// (any angle in (0, 2 pi): convex, straight or reflex alike).
 bool PlanarPolygon::in_cone(std::size_t i, const Eigen::Vector2d& towards) const {
   const std::size_t m = points_.size();
-  const Eigen::Vector2d& prev = points_[(i + m - 1) % m];
   const Eigen::Vector2d& here = points_[i];
-  const Eigen::Vector2d& next = points_[(i + 1) % m];
-  const double eps = area_tolerance_;
-  if (turn(prev, here, next) >= -eps) {
-    // Convex or straight corner: strictly left of here -> next and right of here -> prev.
-    return turn(here, next, towards) > eps && turn(here, prev, towards) < -eps;
-  }
-  // Reflex corner: anywhere but the (closed) outside cone between next and prev.
-  return !(turn(here, next, towards) <= eps && turn(here, prev, towards) >= -eps);
+  const Eigen::Vector2d next = points_[(i + 1) % m] - here;
+  auto angle_from_next = [&](const Eigen::Vector2d& d) {
+    const double a = std::atan2(next.x() * d.y() - next.y() * d.x(), next.dot(d));
+    return a < 0.0 ? a + 2.0 * M_PI : a;
+  };
+  const double interior = angle_from_next(points_[(i + m - 1) % m] - here);
+  const double direction = angle_from_next(towards - here);
+  return direction > kMarginAngle && direction < interior - kMarginAngle;
 }
 
 bool PlanarPolygon::is_interior_diagonal(std::size_t i, std::size_t j) const {
@@ -134,8 +139,11 @@ bool PlanarPolygon::is_star_centre(const Vector3& centre) const {
   double swept = 0.0;  // the angle the corners turn through about the centre
   for (std::size_t k = 0; k < m; ++k) {
     const Eigen::Vector2d a = points_[k] - c, b = points_[(k + 1) % m] - c;
-    if (!(turn(c, points_[k], points_[(k + 1) % m]) > area_tolerance_)) return false;
-    swept += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    const double subtended = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    // Each fan triangle has all three angles above the margin: at the centre, and at its
+    // corners (the spoke inside each corner's angle).
+    if (!(subtended > kMarginAngle) || !in_cone(k, c)) return false;
+    swept += subtended;
   }
   return swept < 3.0 * M_PI;  // once around (2 pi), not a star polygon's 4 pi or more
 }

@@ -14,7 +14,9 @@
 ///
 /// The tests work in the panel's plane (Newell's normal through the corners' mean); corners
 /// off it are projected onto it. Lengths are compared relative to the panel's size, so that
-/// a segment within 1e-9 of it of a corner or a side counts as touching it.
+/// a segment within 1e-9 of it of a corner or a side counts as touching it; a cut or a
+/// spoke must also leave every triangle it makes with angles above 1e-4 rad (a nearly
+/// straight corner is not cut off, a centre nearly on a side's line is not used).
 
 #include <cstddef>
 #include <vector>
