@@ -53,13 +53,24 @@ def register(subparsers) -> None:
                              "pt, um, nm, or unit with --scale), replacing the file's own")
     parser.add_argument("--scale", type=float,
                         help="with --from and --unit unit: [mm] per unit")
+    parser.add_argument("--check", metavar="FILE",
+                        help="build this crease pattern's model as 'kresling simulate' would "
+                             "fold it (the pattern, its creases driven to the file's fold "
+                             "angles) and print what it repaired, or why it would refuse it "
+                             "(exit 1); nothing is written")
+    parser.add_argument("--split", default="N5B8", choices=("N5B8", "N4B5"),
+                        help="with --check: how panels become triangles (default N5B8)")
+    parser.add_argument("--snap-tolerance", type=float, dest="snap_tolerance", metavar="PX",
+                        help="with --check or --from an SVG drawing: merge points closer than "
+                             "PX [its units, CSS px] (default 3, or 1/200 of its size if "
+                             "less)")
     parser.add_argument("--frame", type=int, default=0,
                         help="with --from a FOLD file: the index of the frame to convert "
                              "(default 0, the key frame)")
     parser.add_argument("--process", default="laminate", metavar="{laminate,paper}",
                         help="fabrication process (default laminate); any other name is "
                              "rejected with the list of processes")
-    parser.add_argument("-o", "--output", required=True, metavar="FILE",
+    parser.add_argument("-o", "--output", metavar="FILE",
                         help="output file: .svg, .dxf, .fold or .png")
     parser.add_argument("--module", action="store_true",
                         help="cut a module: the cell and its mirror image on one sheet")
@@ -87,7 +98,8 @@ def convert(args) -> int:
         raise ValueError(f"--output = {args.output!r} is invalid with --from: a pattern file "
                          "is converted to FOLD (.fold)")
     check_output_file("--output", args.output)
-    pattern = read_pattern(args.source, unit=args.unit, scale=args.scale, frame=args.frame)
+    pattern = read_pattern(args.source, unit=args.unit, scale=args.scale, frame=args.frame,
+                           snap_tolerance=args.snap_tolerance)
     if Path(args.source).suffix.lower() == ".svg":
         pattern = as_fold_assignments(pattern)
     write_fold(args.output, pattern, frame_title=Path(args.source).name,
@@ -104,6 +116,15 @@ def convert(args) -> int:
 
 
 def run(args) -> int:
+    if args.check is not None:
+        if args.source is not None or args.output is not None:
+            raise ValueError("--check reads a pattern and writes nothing: give it without "
+                             "--from and --output")
+        from kresling.cli.pattern_check import check
+
+        return check(args)
+    if args.output is None:
+        raise ValueError("--output is missing: the file to write (.svg, .dxf, .fold or .png)")
     if args.source is not None:
         return convert(args)
     missing = [f"--{name}" for name in ("n", "lam", "Lc") if getattr(args, name) is None]

@@ -63,7 +63,7 @@ def scaled(pattern: Pattern, factor: float) -> Pattern:
 
 
 def read_pattern(path, *, planarity_tolerance=1e-3, unit=None, scale=None,
-                 frame=0) -> Pattern:
+                 frame=0, snap_tolerance=None) -> Pattern:
     """Read a crease pattern; the format comes from the file's extension (any case).
 
     Parameters
@@ -82,6 +82,9 @@ def read_pattern(path, *, planarity_tolerance=1e-3, unit=None, scale=None,
         With ``unit="unit"`` (given, or a FOLD file's): mm per unit (default 1).
     frame : int, default 0
         FOLD only: the frame to read (0 is the key frame; see :func:`read_fold`).
+    snap_tolerance : float, optional
+        SVG only: points closer than this many of the drawing's user units are one vertex
+        (see :func:`read_svg`).
 
     Returns
     -------
@@ -101,6 +104,9 @@ def read_pattern(path, *, planarity_tolerance=1e-3, unit=None, scale=None,
         raise ValueError(f"file extension {Path(path).suffix!r} of {str(path)!r} is invalid: "
                          f"must be one of {sorted(READERS)} (STL is written only: it has "
                          "triangles, not panels)")
+    if suffix == ".fold" and snap_tolerance is not None:
+        raise ValueError(f"snap_tolerance = {snap_tolerance!r} is invalid for {str(path)!r}: "
+                         "only SVG drawings are snapped (their strokes merged into vertices)")
     if suffix == ".fold":
         return read_fold(path, planarity_tolerance=planarity_tolerance, frame=frame,
                          unit=unit, scale=scale)
@@ -108,7 +114,11 @@ def read_pattern(path, *, planarity_tolerance=1e-3, unit=None, scale=None,
         raise ValueError(f"frame = {frame!r} is invalid for {str(path)!r}: only FOLD files "
                          "have frames")
     if suffix == ".svg":
-        return read_svg(path, planarity_tolerance=planarity_tolerance, unit=unit, scale=scale)
+        return read_svg(path, planarity_tolerance=planarity_tolerance, unit=unit, scale=scale,
+                        snap_tolerance=snap_tolerance)
+    if snap_tolerance is not None:
+        raise ValueError(f"snap_tolerance = {snap_tolerance!r} is invalid for {str(path)!r}: "
+                         "only SVG drawings are snapped (their strokes merged into vertices)")
     pattern = read_obj(path, planarity_tolerance=planarity_tolerance)
     factor = 1.0 if unit is None and scale is None else mm_per_unit(unit or "mm", scale)
     return pattern if factor == 1.0 else scaled(pattern, factor)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["faces_from_edges", "plane_coordinates", "planarize", "merge_points"]
+__all__ = ["faces_from_edges", "simple_faces", "plane_coordinates", "planarize", "merge_points"]
 
 
 def plane_coordinates(vertices: np.ndarray, tolerance: float = 1e-6):
@@ -89,6 +89,44 @@ def faces_from_edges(points: np.ndarray, edges: np.ndarray) -> list:
             if _signed_area(points[face]) > 0.0:
                 faces.append(face)
     return faces
+
+
+def simple_faces(points: np.ndarray, edges: np.ndarray):
+    """The bounded faces of a planar graph, with the edges that bound none dropped.
+
+    A drawing's face walk can meet a vertex twice: along an edge with the same face on both
+    sides (a crease that links an island of strokes to the rest, or ends inside a panel
+    past a vertex), or where the face's outline touches itself at a corner. The first kind
+    of edge bounds nothing: it is dropped and the faces found again. The second kind of
+    face is no simple polygon (it wraps round what it touches); it is returned as it is, for
+    the caller to refuse.
+
+    Parameters
+    ----------
+    points : ndarray, shape (N, 2)
+    edges : ndarray of int, shape (E, 2)
+
+    Returns
+    -------
+    faces : list of list of int
+        Counter-clockwise.
+    dropped : list of int
+        The indices (into ``edges``) of the edges dropped, each inside one face.
+    """
+    edges = np.asarray(edges, dtype=np.int64).reshape(-1, 2)
+    keep = np.ones(len(edges), dtype=bool)
+    index = {(min(u, v), max(u, v)): k for k, (u, v) in enumerate(edges.tolist())}
+    while True:
+        faces = faces_from_edges(points, edges[keep])
+        inside = set()
+        for face in faces:
+            if len(set(face)) == len(face):
+                continue
+            sides = set(zip(face, face[1:] + face[:1]))
+            inside.update(index[(min(u, v), max(u, v))] for u, v in sides if (v, u) in sides)
+        if not inside:
+            return faces, np.flatnonzero(~keep).tolist()
+        keep[sorted(inside)] = False
 
 
 def _signed_area(corners: np.ndarray) -> float:

@@ -31,10 +31,10 @@ import numpy as np
 
 from kresling.io.errors import PatternFileError, file_error
 from kresling.io.pattern import Pattern, check_panels, complete_edges
-from kresling.io.planar_graph import faces_from_edges, planarize
+from kresling.io.planar_graph import planarize, simple_faces
 from kresling.io.units import mm_per_unit
 
-__all__ = ["STROKES", "SNAP_TOLERANCE", "read_svg", "as_fold_assignments"]
+__all__ = ["STROKES", "SNAP_PIXELS", "SNAP_FRACTION", "read_svg", "as_fold_assignments"]
 
 logger = logging.getLogger(__name__)
 
@@ -44,9 +44,13 @@ STROKES = {(0, 0, 0): "B", (255, 0, 0): "M", (0, 0, 255): "V", (0, 255, 0): "C",
 #: A stroke colour within this distance (per RGB channel, of 255) of one of :data:`STROKES`
 #: is that colour (editors write near-primaries such as #fe0000).
 COLOUR_TOLERANCE = 32
-#: Points closer than this fraction of the drawing's size (its bounding-box diagonal) are
-#: one vertex.
-SNAP_TOLERANCE = 1e-4
+#: Points of a drawing closer than this many of its user units (CSS pixels unless a viewBox
+#: says otherwise) are one vertex, as Origami Simulator merges them: hand-drawn strokes
+#: that should meet miss by a fraction of a pixel.
+SNAP_PIXELS = 3.0
+#: ... but never more than this fraction of the drawing's size (its bounding-box diagonal),
+#: so that a drawing a few user units across is not merged into one point.
+SNAP_FRACTION = 5e-3
 #: Millimetres per CSS pixel (96 per inch): SVG user units after the root's viewBox.
 MM_PER_PX = 25.4 / 96.0
 
@@ -61,7 +65,7 @@ def as_fold_assignments(pattern: Pattern) -> Pattern:
 
 
 def read_svg(path, *, planarity_tolerance=1e-3, unit=None, scale=None,
-             snap_tolerance=SNAP_TOLERANCE) -> Pattern:
+             snap_tolerance=None) -> Pattern:
     """Read an SVG crease pattern (Origami Simulator's conventions, see the module).
 
     Parameters
@@ -74,8 +78,10 @@ def read_svg(path, *, planarity_tolerance=1e-3, unit=None, scale=None,
         :data:`~kresling.io.units.UNITS`; default: a CSS pixel, 1/96 in.
     scale : float, optional
         With ``unit="unit"``: mm per user unit.
-    snap_tolerance : float, default :data:`SNAP_TOLERANCE`
-        Points closer than this fraction of the drawing's size are merged.
+    snap_tolerance : float, optional
+        Points closer than this many user units of the drawing (before ``unit``) are one
+        vertex; strokes are split where another's end lies within it. Default:
+        :data:`SNAP_PIXELS`, or :data:`SNAP_FRACTION` of the drawing's size if less.
 
     Returns
     -------
@@ -85,11 +91,21 @@ def read_svg(path, *, planarity_tolerance=1e-3, unit=None, scale=None,
         assignments (Origami Simulator's letters) and fold angles (degrees; NaN but for
         M, V (from the opacity) and F (0)).
 
+    Notes
+    -----
+    A drawing is read as Origami Simulator reads it, and repaired where it would be
+    ambiguous, with a warning that says what changed: a region inside the sheet (no side
+    on its outline) bounded only by black (boundary) strokes is a hole, not a panel; a black
+    stroke
+    left between two panels becomes a facet crease ``F`` (the panels stay flat together); a
+    stroke that has the same panel on both sides (it ends inside it) is dropped; a region
+    whose outline touches itself at a corner is refused.
+
     Raises
     ------
     ValueError
         Naming the file: not SVG, a curved path segment (naming the element), no stroke of
-        a crease colour, or strokes that enclose no face.
+        a crease colour, strokes that enclose no face, or a negative ``snap_tolerance``.
     """
     source = str(path)
     segments, letters, angles = _strokes(path, source)
@@ -103,14 +119,22 @@ def read_svg(path, *, planarity_tolerance=1e-3, unit=None, scale=None,
                                  "its transforms)")
     if size == 0.0:
         raise file_error(source, "the strokes have no extent: every point coincides")
-    points, edges, origin = planarize(segments, snap_tolerance * size)
-    faces = tuple(tuple(face) for face in faces_from_edges(points, edges))
+    if snap_tolerance is None:
+        snap_tolerance = min(SNAP_PIXELS, SNAP_FRACTION * size / factor)
+    elif not (isinstance(snap_tolerance, (int, float)) and np.isfinite(snap_tolerance)
+              and snap_tolerance > 0):
+        raise ValueError(f"snap_tolerance = {snap_tolerance!r} is invalid: must be a number "
+                         "> 0 (the drawing's user units)")
+    points, edges, origin = planarize(segments, snap_tolerance * factor)
+    faces, edges, origin = _panels(source, points, edges, origin, letters)
     if not faces:
         raise file_error(source, f"the {len(segments)} strokes enclose no face: a crease "
                                  "pattern needs a closed boundary (black strokes)")
     vertices = np.column_stack([points, np.zeros(len(points))])
+    letters = _boundary_between_panels(
+        source, faces, edges, [letters[k] for k in origin])
     edges, assignment, fold = complete_edges(
-        faces, edges, tuple(letters[k] for k in origin), np.asarray(angles)[origin])
+        faces, edges, tuple(letters), np.asarray(angles)[origin])
     check_panels(vertices, faces, planarity_tolerance,
                  lambda index, message: file_error(source, message))
     used = sorted({v for face in faces for v in face})
@@ -120,6 +144,71 @@ def read_svg(path, *, planarity_tolerance=1e-3, unit=None, scale=None,
                    np.array([[renumber[u], renumber[v]] for u, v in edges[keep]],
                             dtype=np.int64).reshape(-1, 2),
                    tuple(assignment[k] for k in keep), fold[keep], (), source)
+
+
+def _panels(source, points, edges, origin, letters):
+    """The drawing's faces as panels (simple polygons, holes left out), and its edges and
+    their strokes with the edges that bound nothing dropped; each repair logged."""
+    faces, dropped = simple_faces(points, edges)
+    if dropped:
+        shown = ", ".join(str(tuple(edges[k])) for k in dropped[:5])
+        logger.warning("%s: %d stroke piece(s) with the same panel on both sides dropped (they "
+                       "end inside a panel): edges %s%s", source, len(dropped), shown,
+                       " ..." if len(dropped) > 5 else "")
+        keep = np.setdiff1d(np.arange(len(edges)), dropped)
+        edges, origin = edges[keep], origin[keep]
+    for face in faces:
+        repeated = sorted({v for v in face if face.count(v) > 1})
+        if repeated:
+            raise file_error(source, f"a region's outline touches itself at vertex "
+                                     f"{repeated[0]} ({points[repeated[0]].round(3).tolist()} "
+                                     "mm): it is no simple polygon; draw a crease that "
+                                     "splits it there, or move the strokes apart")
+    if len(faces) > 1:
+        # A hole: a region inside the sheet (every side shared with another region, none on
+        # the drawing's outline) bounded only by black strokes.
+        stroke = {(min(u, v), max(u, v)): letters[origin[k]]
+                  for k, (u, v) in enumerate(edges.tolist())}
+        shared = _regions_per_side(faces)
+        holes = [f for f in faces
+                 if all(stroke.get(key) == "B" and shared[key] == 2
+                        for key in (tuple(sorted(side)) for side in _sides(f)))]
+        if holes and len(holes) < len(faces):
+            logger.warning("%s: %d region(s) bounded only by boundary (black) strokes taken as "
+                           "holes, not panels", source, len(holes))
+            faces = [f for f in faces if f not in holes]
+    return tuple(tuple(face) for face in faces), edges, origin
+
+
+def _sides(face):
+    return zip(face, tuple(face[1:]) + tuple(face[:1]))
+
+
+def _regions_per_side(faces) -> dict:
+    """(u, v), u < v -> how many of the faces have that side."""
+    count = {}
+    for face in faces:
+        for u, v in _sides(face):
+            key = (min(u, v), max(u, v))
+            count[key] = count.get(key, 0) + 1
+    return count
+
+
+def _boundary_between_panels(source, faces, edges, letters) -> list:
+    """The edges' letters with every boundary (black) stroke between two panels made a
+    facet crease F (a black stroke that misses the outline, or divides the sheet)."""
+    count = _regions_per_side(faces)
+    inner = [k for k, (u, v) in enumerate(edges.tolist())
+             if letters[k] == "B" and count.get((min(u, v), max(u, v)), 0) == 2]
+    if inner:
+        logger.warning("%s: %d boundary (black) stroke piece(s) lie between two panels, made "
+                       "facet creases F (the panels stay flat together): edges %s%s", source,
+                       len(inner), ", ".join(str(tuple(edges[k])) for k in inner[:5]),
+                       " ..." if len(inner) > 5 else "")
+        letters = list(letters)
+        for k in inner:
+            letters[k] = "F"
+    return letters
 
 
 def _edges_of_faces(faces, edges) -> list:

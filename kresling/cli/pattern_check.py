@@ -1,0 +1,73 @@
+"""``kresling pattern --check FILE``: build a crease pattern's model as ``kresling simulate``
+would fold it, and say what it repaired or would refuse, before anything runs."""
+
+from __future__ import annotations
+
+import logging
+import sys
+
+from kresling.cli._output import print_json, print_table
+
+
+class _Repairs(logging.Handler):
+    """Collects the readers' and builders' warnings: what they changed in the pattern."""
+
+    def __init__(self):
+        super().__init__(logging.WARNING)
+        self.messages = []
+
+    def emit(self, record):
+        self.messages.append(record.getMessage())
+
+
+def check(args) -> int:
+    """Read ``args.check`` and build its model for a fold (the problem a new user writes:
+    the pattern, its creases driven to the file's fold angles); exit 0 if ``simulate``
+    would take it, 1 (with the reason) if it would refuse it."""
+    from kresling.simulate import build_problem_model, load_problem
+    from kresling.simulate.actuation import fold_plan
+
+    pattern_keys = {"file": str(args.check), "split": args.split}
+    if args.snap_tolerance is not None:
+        pattern_keys["snap_tolerance"] = args.snap_tolerance
+    problem = {"pattern": pattern_keys,
+               "actuation": [{"family": "fold", "fold_angle_deg": "file"}],
+               "analysis": {"method": "fold"}}
+    repairs = _Repairs()
+    logger = logging.getLogger("kresling")
+    logger.addHandler(repairs)
+    refusal, summary = None, {"file": str(args.check), "split": args.split}
+    try:
+        loaded = load_problem(problem)
+        pattern = loaded.pattern
+        summary.update(vertices=pattern.num_vertices, faces=pattern.num_faces,
+                       edges=pattern.num_edges)
+        pm = build_problem_model(loaded)
+        summary.update(nodes=pm.model.num_nodes, bars=len(pm.model.bars),
+                       hinges=len(pm.model.hinges))
+        try:
+            summary["creases_with_targets"] = int(fold_plan(loaded, pm).hinges.size)
+        except ValueError as error:   # no fold angles: it builds, but folds nothing as is
+            summary["creases_with_targets"] = 0
+            summary["note"] = str(error)
+    except ValueError as error:
+        refusal = str(error)
+    finally:
+        logger.removeHandler(repairs)
+    summary["repairs"] = repairs.messages
+    summary["refused"] = refusal
+    if args.json:
+        print_json(summary)
+    else:
+        rows = [(key, summary[key]) for key in ("file", "split", "vertices", "faces", "edges",
+                                                "nodes", "bars", "hinges",
+                                                "creases_with_targets") if key in summary]
+        print_table(rows, ("quantity", "value"))
+        for message in repairs.messages:
+            print(f"repaired: {message}")
+        if "note" in summary:
+            print(f"note: {summary['note']}")
+    if refusal is not None:
+        print(f"kresling pattern: simulate would refuse it: {refusal}", file=sys.stderr)
+        return 1
+    return 0
