@@ -55,6 +55,9 @@ VARIANTS = [
     {**FORCE, "actuation": [{"edges": [[0, 2]], "fold_angle_deg": 10.0}],
      "analysis": {"method": "fold", "steps": 2, "snap": True,
                   "stop": {"node": 3, "axis": "z", "beyond": 1.0}}},
+    {**FORCE, "material": {"preset": "origami_simulator"},
+     "actuation": [{"edges": [[0, 2]], "fold_angle_deg": 10.0}],
+     "analysis": {"method": "fold", "stop": {"node": 3, "axis": "z", "beyond": 1.0}}},
 ]
 # The page's heading of each table, and where in the problem the unknown key goes.
 TABLES = {

@@ -131,7 +131,7 @@ def test_the_cranes_fold_from_flat_is_one_stable_path_whatever_its_increments():
                         "support": [{"nodes": held_and_far(pattern)[0], "fix": "xyz"}],
                         "actuation": actuation, "analysis": {"method": "fold", "steps": steps}},
                        progress=False)
-        assert sim.completed, sim.path.message
+        assert sim.path.completed, sim.path.message
         assert np.all(np.asarray(sim.path.negative_eigenvalues) == 0)
         assert sim.summary()["fold"]["left_branch"] > 0  # the case the path decides
         ends.append(sim.path.displacement[-1])

@@ -146,7 +146,7 @@ def _used(opened) -> int:
 @pytest.mark.parametrize("problem", [_folded_base, _pushed_crane], ids=["fold", "cuts"])
 def test_origami_simulator_opens_path_fold_with_every_crease_and_its_angle(tmp_path, problem):
     sim = simulate(problem(tmp_path), progress=False)
-    assert sim.completed, sim.path.message
+    assert sim.path.completed, sim.path.message
     sim.write(tmp_path / "out", view=False)
     path = tmp_path / "out" / "path.fold"
     document = json.loads(path.read_text())

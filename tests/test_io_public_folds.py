@@ -50,7 +50,7 @@ def _fold(path, keys, targets, steps, material=STIFF):
     """Fold the pattern's creases (M and V) to ``targets`` [deg], one per edge; the model's
     vertices at the end and the fold's summary."""
     pattern, sim = _fold_run(path, keys, targets, steps, material)
-    assert sim.completed, sim.path.message
+    assert sim.path.completed, sim.path.message
     x = (sim.model.nodes + sim.path.displacement[-1].reshape(-1, 3))[:pattern.num_vertices]
     return pattern, x, sim.summary()["fold"]
 

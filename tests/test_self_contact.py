@@ -58,7 +58,7 @@ def _edge_gap(sim, k):
 def test_a_strip_folded_past_its_panels_meeting_stops_with_them_apart(tmp_path, angle):
     # 100 deg: the panels meet in the last increment; 150 deg: in the last eight.
     sim = simulate(_strip(contact=True, angle=angle), progress=False)
-    assert sim.completed, sim.path.message
+    assert sim.path.completed, sim.path.message
     columns = sim.history_columns()
     gaps = [_edge_gap(sim, k) for k in range(sim.path.num_steps)]
     assert min(gaps) > 0.0
@@ -98,7 +98,7 @@ def test_self_contact_and_planes_together():
     problem = _strip(contact=True)
     problem["contact"]["planes"] = [{"point": [0, 0, -0.5], "normal": [0, 0, 1]}]
     sim = simulate(problem, progress=False)
-    assert sim.completed, sim.path.message
+    assert sim.path.completed, sim.path.message
     columns = sim.history_columns()
     assert "energy_contact" in columns and "energy_self_contact" in columns
     assert columns["min_gap"][0] == pytest.approx(0.5, abs=1e-3)  # the floor, at first
@@ -169,7 +169,7 @@ def test_a_square_twist_flat_folded_never_passes_through_itself(tmp_path):
     free = simulate(_twist_problem(path, contact=False, target=180.0), progress=False)
     assert len(_intersecting_increments(free)) > 10
     sim = simulate(_twist_problem(path, contact=True, target=180.0), progress=False)
-    assert sim.completed, sim.path.message
+    assert sim.path.completed, sim.path.message
     assert _intersecting_increments(sim) == []
     gaps = sim.history_columns()["min_gap"]
     assert (gaps > 0).all() and gaps[-1] < 0.05  # the layers end within d_hat, apart

@@ -55,7 +55,7 @@ def test_without_contact_the_flat_folded_bird_passes_through_itself(pattern):
 
 def test_the_bird_flat_folds_to_its_targets_with_no_two_triangles_intersecting(pattern):
     sim = simulate(_bird_problem(pattern, contact=True), progress=False)
-    assert sim.completed, sim.path.message
+    assert sim.path.completed, sim.path.message
     assert sim.path.load_factor[-1] == pytest.approx(1.0)
     assert _intersecting_increments(sim) == []
     gaps = sim.history_columns()["min_gap"]

@@ -58,12 +58,12 @@ def test_adaptive_increments_of_a_fold_keep_the_panels_apart_at_every_sample():
     problem = _strip(contact=False, angle=150.0)
     problem["analysis"]["increments"] = "adaptive"
     free = simulate(problem, progress=False)
-    assert free.completed, free.path.message
+    assert free.path.completed, free.path.message
     assert len(_intersecting_increments(free)) >= 8
     problem = _strip(contact=True, angle=150.0)
     problem["analysis"]["increments"] = "adaptive"
     sim = simulate(problem, progress=False)
-    assert sim.completed, sim.path.message
+    assert sim.path.completed, sim.path.message
     # Followed by the adaptive increments themselves: a stage they could not finish would
     # be followed again in fixed increments, the fixed run's path and iterations.
     problem["analysis"]["increments"] = "fixed"

@@ -26,7 +26,7 @@ def test_every_tangent_reaches_the_same_fold_and_the_exact_ones_in_fewer_iterati
     runs = {tangent: simulate(_with_tangent(_strip(contact=True, angle=150.0), tangent),
                               progress=False)
             for tangent in ("projected", "exact", "adaptive")}
-    assert all(sim.completed for sim in runs.values())
+    assert all(sim.path.completed for sim in runs.values())
     # The family's column: the form's code, none for the default (adaptive).
     assert runs["projected"].model.family("self_contact")["tangent"].tolist() == [0.0]
     assert runs["exact"].model.family("self_contact")["tangent"].tolist() == [1.0]
@@ -68,7 +68,7 @@ def test_the_adaptive_tangent_keeps_a_square_twist_on_stable_equilibria(tmp_path
     path = _square_twist(tmp_path, twist_deg=20.0)
     exact = simulate(_with_tangent(_twist_problem(path, contact=True), "exact"), progress=False)
     adaptive = simulate(_twist_problem(path, contact=True), progress=False)
-    assert exact.completed and adaptive.completed
+    assert exact.path.completed and adaptive.path.completed
     # With the exact tangent, Newton lands on unstable equilibria on the way (measured: 1 or
     # 2 negative eigenvalues at increments 22, 24, 25 and 26)...
     assert len(_unstable_increments(exact)) >= 2

@@ -22,7 +22,8 @@ STIFF = {"calibration": "manual", "bar_modulus": 1e5, "bar_area": 1.0,
 
 def test_the_fold_example_behaves_as_its_file_says():
     sim = simulate(EXAMPLES / "fold_vertex" / "problem.toml", progress=False)
-    assert sim.completed and sim.path.num_steps == 40
+    # The path runs to its end, but the crease ends near 47 deg of its 90: not completed.
+    assert sim.path.completed and not sim.completed and sim.path.num_steps == 40
     report = sim.summary()["fold"]
     assert report["creases_driven"] == 1 and report["short_of_target"] == 1
     assert 44.0 < report["worst"]["fold_angle_deg"] < 50.0
@@ -159,7 +160,7 @@ def test_a_fold_in_adaptive_increments_reads_its_samples_off_the_path():
     # energy to 1e-8 of its largest value (measured 1.8e-10).
     fixed = simulate(_vertex_problem(200), progress=False)
     adaptive = simulate(_vertex_problem(200, increments="adaptive"), progress=False)
-    assert adaptive.completed, adaptive.path.message
+    assert adaptive.path.completed, adaptive.path.message
     f, a = fixed.path, adaptive.path
     np.testing.assert_array_equal(a.load_factor, f.load_factor)
     assert a.attempted_increments < f.attempted_increments / 2

@@ -24,8 +24,11 @@ def register(subparsers) -> None:
                     "with time and the energies, velocities.csv, a view played in scaled real "
                     "time). Node indices are 0-based in the pattern's "
                     "vertex order; N5B8 centre nodes follow the vertices. Exits 0 when the "
-                    "path ran to its end, 1 when it stopped early (the files still hold "
-                    "every converged increment), 2 for a bad problem.",
+                    "path ran to its end (a fold: with every driven crease within 1 deg of "
+                    "its target), 1 when it stopped early or a fold fell short (the files "
+                    "still hold every converged increment), 2 for a bad problem, 130 when "
+                    "Ctrl-C or a kill (SIGTERM) ended the path at its next increment (the "
+                    "files hold the path so far; a second Ctrl-C stops at once).",
     )
     parser.add_argument("problem", metavar="PROBLEM.toml", help="the problem file")
     parser.add_argument("--out", metavar="DIR",
@@ -38,13 +41,20 @@ def register(subparsers) -> None:
                         help="keep every K-th increment in the output files (the last "
                              "always; default: the problem's [output] every, else 1)")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    parser.add_argument("--fold-percent", type=float, metavar="P", dest="fold_percent",
+                        help="method = \"fold\": fold every crease to P [%%] of its target "
+                             "(in (0, 100]; replaces [analysis] fold_percent)")
+    parser.add_argument("--snap-tolerance", type=float, metavar="PX", dest="snap_tolerance",
+                        help="an SVG pattern: merge points closer than PX [the drawing's "
+                             "units, CSS px] (replaces [pattern] snap_tolerance; default 3, or "
+                             "1/200 of the drawing's size if less)")
     parser.set_defaults(func=run)
 
 
 def run(args) -> int:
     from pathlib import Path
 
-    from kresling.simulate import simulate
+    from kresling.simulate import load_problem, simulate
 
     problem = Path(args.problem)
     out = Path(args.out) if args.out else problem.with_suffix("")
@@ -52,8 +62,14 @@ def run(args) -> int:
     if args.every is not None and args.every < 1:
         raise ValueError(f"--every = {args.every} is invalid: must be an integer >= 1 (keep "
                          "every K-th increment, the last always)")
+    overrides = {}
+    if args.fold_percent is not None:
+        overrides["analysis"] = {"fold_percent": args.fold_percent}
+    if args.snap_tolerance is not None:
+        overrides["pattern"] = {"snap_tolerance": args.snap_tolerance}
     with log_to_stderr("kresling.simulate", "simulate"):
-        simulation = simulate(problem, progress=False if args.quiet else None)
+        simulation = simulate(load_problem(problem, overrides=overrides),
+                              progress=False if args.quiet else None)
         written = simulation.write(out, view=not args.no_view, every=args.every)
     summary = simulation.summary()
     summary["outputs"] = {name: str(path) for name, path in written.items()}
@@ -73,8 +89,14 @@ def run(args) -> int:
                 rows.append((f"fold: {key.replace('_', ' ')}", value))
         print_table(rows, ("quantity", "value"))
         print(f"\noutputs in {out}: " + ", ".join(Path(p).name for p in written.values()))
+    if getattr(simulation, "interrupted", ""):
+        print(f"kresling simulate: {simulation.message} in {out}", file=sys.stderr)
+        return 130
     if not simulation.completed:
-        print(f"kresling simulate: the path stopped early: {simulation.path.message}",
-              file=sys.stderr)
+        if simulation.path.completed:   # a fold that ran to its end short of its targets
+            print(f"kresling simulate: {simulation.message}", file=sys.stderr)
+        else:
+            print(f"kresling simulate: the path stopped early: {simulation.path.message}",
+                  file=sys.stderr)
         return 1
     return 0

@@ -27,7 +27,8 @@ class FoldPlan:
     hinges : ndarray of int, shape (K,)
         Every driven hinge, in the order first driven.
     target_deg : ndarray, shape (K,)
-        The last target fold angle of each [deg], FOLD's convention.
+        The last target fold angle of each [deg], FOLD's convention (scaled by the
+        analysis's ``fold_percent``).
     signs : ndarray, shape (H,)
         Every hinge's sign between fold angle and dihedral angle
         (:func:`kresling.model.fold_angles.hinge_fold_signs`).
@@ -59,6 +60,7 @@ def fold_plan(problem, pattern_model) -> FoldPlan:
     file_angle = {(int(min(u, v)), int(max(u, v))): float(a)
                   for (u, v), a in zip(pattern.edges, pattern.edges_fold_angle)}
     signs = hinge_fold_signs(pattern_model)
+    fraction = problem.analysis.fold_percent / 100.0
     stages, order, last = [], [], {}
     for stage in range(1, max(a.stage for a in problem.actuations) + 1):
         targets = {}
@@ -86,7 +88,7 @@ def fold_plan(problem, pattern_model) -> FoldPlan:
                         raise ValueError(f"{where} key 'fold_angle_deg': = \"file\" but the "
                                          f"pattern gives crease {list(edge)} no "
                                          "edges_foldAngle")
-                targets[by_edge[edge]] = angle  # a later entry of the stage overrides
+                targets[by_edge[edge]] = fraction * angle  # a later entry overrides
         if not targets:
             continue
         hinges = np.array(sorted(targets), dtype=np.int64)

@@ -123,4 +123,4 @@ def run_dynamics(problem, pattern_model, *, stop=None) -> DynamicRun:
         raise ValueError(f"{problem.source}: [dynamics]: {error}") from None
     driven = np.flatnonzero(sum((v for v, _ in loads), np.zeros(model.num_dofs)))
     return DynamicRun(problem, pattern_model, history.path, driven.astype(np.int64), None,
-                      history, masses)
+                      history=history, masses=masses)

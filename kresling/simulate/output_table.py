@@ -3,7 +3,8 @@ the curve the view plots.
 
 ``every = k`` keeps every k-th increment (and the last) in history.csv, displacements.csv,
 path.fold and view.html; ``curve = { x = "...", y = "..." }`` names the view's curve (see
-:mod:`kresling.simulate.curve`).
+:mod:`kresling.simulate.curve`); ``formats = ["stl", "obj"]`` writes the end state's
+triangles as folded.stl and folded.obj too.
 """
 
 from __future__ import annotations
@@ -11,7 +12,10 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-__all__ = ["Output", "read_output"]
+__all__ = ["Output", "read_output", "FORMATS"]
+
+#: The formats the end state may be written in: ``folded.stl``, ``folded.obj``.
+FORMATS = ("stl", "obj")
 
 #: The quantities a curve may name: history.csv's columns and any node's displacement.
 _NAMED = re.compile(r"step|load_factor|iterations|energy_(?:bars|folds|bends|total)|"
@@ -28,6 +32,8 @@ class Output:
 
     every: int = 1
     curve: tuple | None = None
+    #: The end state's files besides the path's: any of FORMATS.
+    formats: tuple = ()
 
 
 def read_output(table, num_nodes, method, driven) -> Output:
@@ -43,6 +49,7 @@ def read_output(table, num_nodes, method, driven) -> Output:
         The driven (node, axis) pairs.
     """
     every = table.get("every", _every, 1)
+    formats = table.get("formats", _formats, ())
     curve = table.get("curve", lambda t, k, v, a: v)
     if curve is not None:
         if not isinstance(curve, dict) or set(curve) != {"x", "y"}:
@@ -52,7 +59,7 @@ def read_output(table, num_nodes, method, driven) -> Output:
             _check_quantity(table, axis, curve[axis], num_nodes, method, driven)
         curve = (curve["x"], curve["y"])
     table.finish()
-    return Output(every=every, curve=curve)
+    return Output(every=every, curve=curve, formats=formats)
 
 
 def _check_quantity(table, axis, name, num_nodes, method, driven):
@@ -77,6 +84,14 @@ def _check_quantity(table, axis, name, num_nodes, method, driven):
         table.fail("curve", f"{axis} = {name!r} is invalid: a reaction is a column of a "
                             "driven DOF under displacement control (driven: "
                             f"{[f'reaction_{n}_{a}' for n, a in sorted(driven)]})")
+
+
+def _formats(table, key, value, allowed=None):
+    if not isinstance(value, list) or any(v not in FORMATS for v in value) or \
+            len(set(value)) != len(value):
+        table.fail(key, f"= {value!r} is invalid: must be a list of distinct formats among "
+                        f"{list(FORMATS)} (the end state's files besides the path's)")
+    return tuple(value)
 
 
 def _every(table, key, value, allowed=None):

@@ -123,6 +123,8 @@ def write_outputs(simulation, directory, *, view=True, every=None) -> dict:
       key frame and one frame per kept increment, ``edges_assignment`` in FOLD's letters and
       ``edges_foldAngle`` [degrees, valley positive] in every frame, in mm;
     - ``summary.json``: sizes, outcome and message (of the whole run);
+    - ``folded.stl``, ``folded.obj``: the last increment's triangles [mm], as the
+      problem's ``[output] formats`` ask;
     - ``view.html``: an interactive view of the path, the curve of
       :func:`kresling.simulate.curve.path_curve` (when ``view`` and plotly is installed).
 
@@ -174,11 +176,29 @@ def write_outputs(simulation, directory, *, view=True, every=None) -> dict:
 
     written["summary"] = directory / "summary.json"
     written["summary"].write_text(json.dumps(simulation.summary(), indent=2) + "\n")
+    if path.num_steps:
+        written.update(_write_end_state(simulation, directory, triangles, frames[-1]))
 
     if view and not path.num_steps:  # no increment converged: no path to show
         logger.warning("view.html not written: the path has no converged increment")
     elif view:
         written.update(_write_view(simulation, directory, rows, columns))
+    return written
+
+
+def _write_end_state(simulation, directory, triangles, positions) -> dict:
+    """The end state's triangles as the ``[output] formats`` ask: folded.stl, folded.obj
+    (for a slicer, a CAD tool or a renderer) [mm]."""
+    from kresling.io import write_obj, write_stl
+
+    written = {}
+    for name in simulation.problem.output.formats:
+        target = directory / f"folded.{name}"
+        if name == "stl":
+            write_stl(target, positions, triangles, name="folded")
+        else:
+            write_obj(target, positions, triangles)
+        written[name] = target
     return written
 
 

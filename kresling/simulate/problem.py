@@ -30,6 +30,7 @@ from kresling._validation import show
 from kresling.io import UNITS, mm_per_unit, pattern_from_arrays, read_pattern, separate_cuts
 from kresling.io.cuts import check_duplicate_vertices
 from kresling.model import CreaseLaws, HingeLaw, ManualProperties, SheetMaterial
+from kresling.model.material_presets import MATERIAL_PRESETS, PRESET_LIMITS_DEG, preset_material
 from kresling.model.pattern_model import CONVENTIONS, FOLD_FAMILIES
 from kresling.model.panel_elements import CENTRES, SPLITS, build_panel_elements
 from kresling.laws import BAR_LAWS, SPRING_LAWS
@@ -40,6 +41,7 @@ from kresling.simulate.problem_dynamics import read_dynamics, read_load_time
 from kresling.simulate.problem_modes import read_about
 from kresling.simulate.problem_file import read_toml
 from kresling.simulate.problem_mass import SheetMass, read_masses, read_sheet_mass
+from kresling.simulate.rigid_hold import rigid_body_hold
 
 __all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_problem", "METHODS"]
 
@@ -62,6 +64,10 @@ _AXES = {"x": 0, "y": 1, "z": 2}
 RELATIVE_TOLERANCE = 1e-8
 #: MERLIN2's own Newton tolerance [mm], the default under merlin2_compat.
 MERLIN2_TOLERANCE = 1e-6
+#: ``method = "fold"``: increments per stage when the problem gives no ``steps``.
+FOLD_STEPS = 40
+#: ``method = "fold"``: the material when the problem gives no ``[material]``.
+DEFAULT_FOLD_PRESET = "origami_simulator"
 
 
 @dataclass(frozen=True)
@@ -121,6 +127,8 @@ class Analysis:
     #: ``method = "fold"``: where the fold's equilibrium path ends, snap to a stable state
     #: and fold on (:func:`kresling.solvers.solve_fold`'s ``snap``).
     snap: bool = False
+    #: ``method = "fold"``: every target fold angle is scaled by fold_percent / 100.
+    fold_percent: float = 100.0
     #: ``method = "modes"``: how many of the lowest modes, about which state: "rest" or a
     #: :class:`~kresling.simulate.problem_modes.LoadedState`.
     modes: int = 10
@@ -176,6 +184,11 @@ class Problem:
     contact: object = None
     #: ``[dynamics]`` (``method = "dynamic"``): a Dynamics, or None.
     dynamics: object = None
+    #: The named material (``[material] preset``, or a fold's default), or None.
+    preset: str | None = None
+    #: The supports chosen to hold a fold's free sheet (no ``[[support]]`` given): the
+    #: rigid-body motions only (:func:`~kresling.simulate.rigid_hold.rigid_body_hold`).
+    held: tuple = ()
 
 
 class _Table:
@@ -383,7 +396,11 @@ def _read_pattern(t, base, compat):
         t.fail("scale", f"= {scale!r} applies only with unit = \"unit\" (mm per unit of a "
                         "pattern without a physical unit)")
     frame = t.get("frame", _integer, 0)
+    snap = t.get("snap_tolerance", _positive, None)
     convention = "fold"
+    if snap is not None and not (t.has("file") and str(t.data["file"]).lower().endswith(".svg")):
+        t.fail("snap_tolerance", f"= {snap!r} applies only to an SVG drawing's file (its "
+                                 "strokes are merged into vertices within it)")
     if t.has("file"):
         name = t.get("file", _string)
         path = Path(name) if Path(name).is_absolute() else base / name
@@ -395,7 +412,7 @@ def _read_pattern(t, base, compat):
             t.fail("frame", f"= {frame} applies only to FOLD files: {name!r} has no frames")
         convention = "origami_simulator" if path.suffix.lower() == ".svg" else "fold"
         pattern = read_pattern(path, planarity_tolerance=tolerance, unit=unit, scale=scale,
-                               frame=frame)
+                               frame=frame, snap_tolerance=snap)
     elif t.has("vertices"):
         if t.has("frame"):
             t.fail("frame", "applies only to a pattern file (FOLD frames)")
@@ -435,6 +452,16 @@ def default_tolerance(pattern, compat: bool) -> float:
 
 
 def _read_material(t):
+    if t.has("preset"):
+        # Named: resolved once the pattern is read (the corner springs scale with its size).
+        name = t.get("preset", _string, choices=tuple(MATERIAL_PRESETS))
+        for key in ("calibration", "merlin2_compat"):
+            if t.has(key):
+                t.fail(key, f"does not go with preset = {name!r} (the preset is a manual "
+                            "calibration of its own)")
+        sheet_mass = read_sheet_mass(t, None, _quantity)
+        t.finish()
+        return name, False, sheet_mass
     calibration = t.get("calibration", _string, required=True, choices=("auto", "manual"))
     compat = t.get("merlin2_compat", _boolean, False)
     if calibration == "auto":
@@ -459,15 +486,15 @@ def _read_material(t):
     return material, compat, sheet_mass
 
 
-def _read_laws(t, calibration_auto):
+def _read_laws(t, calibration_auto, limits=(45.0, 315.0)):
     laws = sorted(SPRING_LAWS)
     bar = t.get("bar", _string, "ogden", choices=tuple(sorted(BAR_LAWS)))
     fold = HingeLaw(t.get("fold", _string, "enhanced_linear", choices=laws),
-                    t.get("fold_limits_deg", _limits, (45.0, 315.0)),
+                    t.get("fold_limits_deg", _limits, limits),
                     t.get("fold_stiffness", _quantity, None))
     bend_default = "super_linear_bend" if calibration_auto else "enhanced_linear"
     bend = HingeLaw(t.get("bend", _string, bend_default, choices=laws),
-                    t.get("bend_limits_deg", _limits, (45.0, 315.0)),
+                    t.get("bend_limits_deg", _limits, limits),
                     t.get("bend_stiffness", _quantity, None))
     families = {}
     for family in FOLD_FAMILIES:
@@ -487,10 +514,16 @@ def _read_analysis(t, num_nodes):
     settings = {"method": method,
                 "tolerance": t.get("tolerance", _positive, None),
                 "max_iterations": t.get("max_iterations", _count, 50)}
-    if method in ("displacement_control", "force_control", "fold"):
+    if method in ("displacement_control", "force_control"):
         settings["steps"] = t.get("steps", _count, required=True,
-                                  allowed="the number of increments (an integer >= 1)"
-                                  + (" per stage" if method == "fold" else ""))
+                                  allowed="the number of increments (an integer >= 1)")
+    elif method == "fold":
+        settings["steps"] = t.get("steps", _count, FOLD_STEPS)
+        percent = t.get("fold_percent", _number, 100.0)
+        if not 0 < percent <= 100:
+            t.fail("fold_percent", f"= {percent!r} is invalid: must be in (0, 100] (the "
+                                   "percentage of every target fold angle folded to)")
+        settings["fold_percent"] = percent
     if method in ("displacement_control", "fold"):
         settings["increments"] = t.get("increments", _string, "fixed",
                                        choices=INCREMENTS)
@@ -649,7 +682,27 @@ def _check_dynamic(problem, t_analysis, kinds):
                          "or 'hht'")
 
 
-def load_problem(problem) -> Problem:
+def _peek_method(data):
+    """The problem's ``[analysis] method`` if it names one (read properly later)."""
+    analysis = data.get("analysis") if isinstance(data, dict) else None
+    return analysis.get("method") if isinstance(analysis, dict) else None
+
+
+def _with_overrides(data, overrides, source):
+    """A copy of the problem's tables with ``overrides``' keys set (tables created)."""
+    if not isinstance(data, dict):
+        return data  # the reader says what is wrong with it
+    merged = dict(data)
+    for table, keys in overrides.items():
+        current = merged.get(table, {})
+        if not isinstance(current, dict):
+            raise ValueError(f"{source}: [{table}] must be a table, got "
+                             f"{type(current).__name__}")
+        merged[table] = {**current, **keys}
+    return merged
+
+
+def load_problem(problem, *, overrides=None) -> Problem:
     """Read and check a problem.
 
     Parameters
@@ -657,6 +710,9 @@ def load_problem(problem) -> Problem:
     problem : str, os.PathLike or dict
         A TOML file, or a dict with the same tables (``pattern.file`` relative to the
         current directory; or ``pattern.vertices`` and ``pattern.panels`` inline).
+    overrides : dict, optional
+        Keys that replace the problem's own, by table: ``{"pattern": {"snap_tolerance":
+        2.0}, "analysis": {"fold_percent": 50}}`` (what the command line's options set).
 
     Returns
     -------
@@ -677,20 +733,37 @@ def load_problem(problem) -> Problem:
         path = Path(problem)
         source, base = str(path), path.parent
         data, text = read_toml(path)
+    if overrides:
+        data = _with_overrides(data, overrides, source)
     root = _Table(data, "", source, text)
     root.where = lambda key: f"{source}: key {key!r}" if key else source
 
     t_pattern = _Table(root.get("pattern", lambda t, k, v, a: v, required=True,
                                 allowed="a table naming the crease pattern"),
                        "pattern", source, text)
-    t_material = _Table(root.get("material", lambda t, k, v, a: v, required=True,
-                                 allowed="a table with the calibration"), "material", source, text)
+    folding = _peek_method(data) == "fold"
+    # A fold needs no [material]: Origami Simulator's, which folds what it folds.
+    t_material = _Table(root.get("material", lambda t, k, v, a: v,
+                                 {"preset": DEFAULT_FOLD_PRESET} if folding else None,
+                                 required=not folding,
+                                 allowed="a table with the calibration (or a preset)"),
+                        "material", source, text)
     material, compat, sheet_mass = _read_material(t_material)
     pattern, split, centre, convention = _read_pattern(t_pattern, base, compat)
+    preset = material if isinstance(material, str) else None
+    if preset is not None:
+        material = preset_material(preset, pattern.vertices)
     laws = _read_laws(_Table(root.get("laws", lambda t, k, v, a: v, {}), "laws", source, text),
-                      isinstance(material, SheetMaterial))
+                      isinstance(material, SheetMaterial),
+                      PRESET_LIMITS_DEG if preset else (45.0, 315.0))
     count = node_count(pattern, split, centre)
     supports = _read_supports(root.get("support", _array_of_tables, []), source, text, count)
+    held = ()
+    if folding and not supports:
+        # A fold is driven from inside: hold the free sheet's rigid-body motions only.
+        held = tuple(Support(node, axes) for node, axes in
+                     rigid_body_hold(pattern.vertices, pattern.faces))
+        supports = held
     loads = _read_loads(root.get("load", _array_of_tables, []), source, text, count)
     t_analysis = _Table(root.get("analysis", lambda t, k, v, a: v, required=True,
                                  allowed="a table with the method"), "analysis", source, text)
@@ -722,6 +795,6 @@ def load_problem(problem) -> Problem:
     root.finish()
     result = Problem(pattern, split, material, compat, laws, supports, loads, analysis, source,
                      centre, output, actuations, springs, convention, sheet_mass, masses,
-                     contact, dynamics)
+                     contact, dynamics, preset, held)
     _check_consistency(result, t_analysis)
     return result

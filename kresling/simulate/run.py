@@ -14,6 +14,8 @@ from kresling.model import PatternModel, build_pattern_model
 from kresling.model.fold_angles import fold_angles_deg
 from kresling.simulate.actuation import FoldPlan, fold_plan
 from kresling.simulate.element_histories import ElementHistories, element_histories
+from kresling.simulate.graceful_stop import GracefulStop
+from kresling.simulate.progress_log import ProgressLog
 from kresling.simulate.modes_output import run_modes
 from kresling.simulate.problem import _AXES, PREDICTORS, Problem, load_problem, node_count
 from kresling.simulate.problem_contact import TANGENTS, auto_barrier_stiffness
@@ -31,6 +33,9 @@ logger = logging.getLogger(__name__)
 #: one sample's reaction err by 1.65e-8 of the largest; 3e-10 keeps every sample within
 #: 3.8e-10 (and costs 2 % more time).
 ADAPTIVE_TOLERANCE = 3e-10
+#: A fold reaches its end when every driven crease is within this many degrees of its
+#: target fold angle there (``short_of_target`` counts the others).
+FOLD_TOLERANCE_DEG = 1.0
 
 
 @dataclass(frozen=True)
@@ -67,6 +72,9 @@ class Simulation:
         DOFs that carry a force.
     fold : FoldPlan or None
         ``method = "fold"``: the stages, the driven hinges and their targets.
+    interrupted : str
+        The signal ("SIGINT", "SIGTERM") that ended the path early, keeping the increments
+        before it; "" if none did.
     """
 
     problem: Problem
@@ -74,6 +82,7 @@ class Simulation:
     path: PathResult
     driven_dofs: np.ndarray
     fold: FoldPlan | None = None
+    interrupted: str = ""
 
     @property
     def model(self):
@@ -81,7 +90,30 @@ class Simulation:
 
     @property
     def completed(self) -> bool:
-        return self.path.completed
+        """Whether the run reached its end: the path ran to it and, for a fold, every
+        driven crease is within :data:`FOLD_TOLERANCE_DEG` of its target there."""
+        return self.path.completed and not self.interrupted and not self._fold_shortfall()
+
+    @property
+    def message(self) -> str:
+        """Why the run did not reach its end ("" when it did)."""
+        if self.interrupted:
+            return (f"interrupted ({self.interrupted}) after {self.path.num_steps} increments: "
+                    "the path so far is kept")
+        return self.path.message or self._fold_shortfall()
+
+    def _fold_shortfall(self) -> str:
+        """For a fold whose path ran to its end: which creases fell short, in words."""
+        report = self.fold_report() if self.fold is not None else {}
+        short = report.get("short_of_target", 0)
+        if not short:
+            return ""
+        worst = report["worst"]
+        return (f"the fold ran to its end but {short} of {report['creases_driven']} driven "
+                f"creases are more than {FOLD_TOLERANCE_DEG:g} deg from their targets (held "
+                f"back by the structure or by their laws' limits); the farthest, hinge "
+                f"{worst['hinge']}, reached {worst['fold_angle_deg']:.4g} deg of "
+                f"{worst['target_deg']:.4g} deg")
 
     def element_histories(self) -> ElementHistories:
         """Per-element and per-family histories along the path (see
@@ -99,7 +131,9 @@ class Simulation:
             # load_factor runs over (k - 1, k] in stage k.
             stage = np.maximum(np.ceil(path.load_factor - 1e-12), 1).astype(int)
             columns["stage"] = stage
-            columns["fold_fraction"] = path.load_factor - (stage - 1)
+            # Of the full targets: a fold to fold_percent ends at fold_percent / 100.
+            columns["fold_fraction"] = ((path.load_factor - (stage - 1))
+                                        * self.problem.analysis.fold_percent / 100.0)
         elif self.problem.analysis.method == "displacement_control":
             for k, dof in enumerate(path.constraint_dofs):
                 columns[f"reaction_{dof // 3}_{'xyz'[dof % 3]}"] = path.constraint_force[:, k]
@@ -142,9 +176,12 @@ class Simulation:
         reached = final[plan.hinges]
         miss = np.abs(reached - plan.target_deg)
         worst = int(np.argmax(miss))
-        other_way = (np.sign(reached) * np.sign(plan.target_deg) < 0) & (np.abs(reached) > 1.0)
+        other_way = ((np.sign(reached) * np.sign(plan.target_deg) < 0)
+                     & (np.abs(reached) > FOLD_TOLERANCE_DEG))
         return {"creases_driven": int(plan.hinges.size),
-                "short_of_target": int(np.count_nonzero(miss > 1.0)),
+                "short_of_target": int(np.count_nonzero(miss > FOLD_TOLERANCE_DEG)),
+                "tolerance_deg": FOLD_TOLERANCE_DEG,
+                "largest_shortfall_deg": float(miss[worst]),
                 "worst": {"hinge": int(plan.hinges[worst]),
                           "target_deg": float(plan.target_deg[worst]),
                           "fold_angle_deg": float(reached[worst])},
@@ -168,10 +205,41 @@ class Simulation:
             "attempted_increments": int(path.attempted_increments),
             "attempted_newton_iterations": int(path.newton_iterations),
             "final_load_factor": float(path.load_factor[-1]) if path.num_steps else None,
-            "completed": bool(path.completed),
-            "message": path.message,
+            "completed": bool(self.completed),
+            "interrupted": bool(self.interrupted),
+            "message": self.message,
+            **self._material_summary(),
             **extra,
         }
+
+    def _material_summary(self) -> dict:
+        """The preset used and the supports chosen (when the problem named neither), and
+        the largest bar strain along the path (how far the bars gave to let it fold)."""
+        out = {}
+        if self.problem.preset is not None:
+            out["material_preset"] = self.problem.preset
+        if self.problem.held:
+            out["held"] = [{"node": s.node, "axes": s.axes} for s in self.problem.held]
+        if self.path.num_steps and len(self.model.bars):
+            out["largest_bar_strain"] = largest_bar_strain(self.model, self.path.displacement)
+        return out
+
+
+def largest_bar_strain(model, displacements) -> float:
+    """The largest |strain| of any bar at any of the states ``displacements`` (S, 3N)."""
+    bars = np.asarray(model.bars)
+    rest = np.asarray(model.bar_rest_length)
+    largest = 0.0
+    for u in np.asarray(displacements):
+        x = model.nodes + u.reshape(-1, 3)
+        length = np.linalg.norm(x[bars[:, 1]] - x[bars[:, 0]], axis=1)
+        largest = max(largest, float(np.max(np.abs(length / rest - 1.0))))
+    return largest
+
+
+def held_in_words(held) -> str:
+    """``node 12 (x, y, z), node 40 (y, z), node 41 (z)``."""
+    return ", ".join(f"node {s.node} ({', '.join(s.axes)})" for s in held)
 
 
 def stepping(problem) -> str:
@@ -379,6 +447,11 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
         move as a rigid body.
     """
     problem = load_problem(problem)
+    if problem.preset is not None:
+        logger.info("%s: material: preset %r", problem.source, problem.preset)
+    if problem.held:
+        logger.info("%s: no [[support]]: holding the free sheet's rigid-body motions only, "
+                    "at %s", problem.source, held_in_words(problem.held))
     pm = build_problem_model(problem)
     if problem.analysis.method == "modes":   # no path: the modes about the rest state
         return run_modes(problem, pm)
@@ -389,6 +462,8 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
     vector = _load_vector(problem, model.num_dofs)
     bar = _progress_bar(problem, progress)
     count = [0]
+    graceful = GracefulStop()
+    lines = None  # progress lines where there is no bar (a log, a batch job)
     # The problem's own rules where the C++ solver has none (MGDCM checks them itself).
     monitor = analysis.stop if analysis.method != "mgdcm" else None
     bound = analysis.max_load_factor if analysis.method == "force_control" else np.inf
@@ -397,6 +472,10 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
         count[0] += 1
         if bar is not None:
             bar.update(count[0], load_factor, u)
+        if lines is not None:
+            lines.update(count[0], load_factor)
+        if graceful.requested:
+            return True
         if monitor is not None and abs(u[monitor.dof]) > monitor.beyond:
             return True
         if abs(load_factor) > bound:
@@ -405,13 +484,18 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
             return False
         return bool(stop(PathState(count[0], float(load_factor), np.asarray(u).reshape(-1, 3))))
 
-    needed = stop is not None or bar is not None or monitor is not None or np.isfinite(bound)
-    callback = rule if needed else None
+    # The rule is always asked: it ends the path where a Ctrl-C or a kill asks it to.
+    callback = rule
     # Scale-free like the tolerance: MERLIN2's absolute shift only to reproduce its runs.
     shift = MERLIN2_SHIFT if problem.merlin2_compat else scale_free_shift(model)
     common = {"tolerance": analysis.tolerance, "max_iterations": analysis.max_iterations,
               "stop": callback, "shift": shift}
+    if bar is None and progress is not False:
+        lines = ProgressLog(problem.source, f"{model.num_nodes} nodes, {len(model.bars)} "
+                                            f"bars, {len(model.hinges)} hinges; "
+                                            f"{stepping(problem)}")
     try:
+        graceful.__enter__()
         if analysis.method == "displacement_control":
             adaptive = analysis.increments == "adaptive"
             order = PREDICTORS.index(analysis.predictor)  # its extrapolation's order
@@ -439,15 +523,21 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
     except ValueError as error:
         raise ValueError(f"{problem.source}: {_solver_where(str(error))}") from None
     finally:
+        graceful.__exit__()
         if bar is not None:
             bar.close()
-    if not path.completed:
+        if lines is not None:
+            lines.close()
+    if graceful.requested:
+        logger.warning("%s: %s: the path stopped after %d increments; they are kept",
+                       problem.source, graceful.requested, path.num_steps)
+    elif not path.completed:
         logger.warning("%s: the path stopped after %d increments: %s", problem.source,
                        path.num_steps, path.message)
     driven = (path.constraint_dofs if analysis.method == "displacement_control"
               else np.flatnonzero(vector))
     return Simulation(problem, pm, path, np.asarray(driven, dtype=np.int64),
-                      plan if analysis.method == "fold" else None)
+                      plan if analysis.method == "fold" else None, graceful.requested)
 
 
 def _run_dynamic(problem, pm, stop):

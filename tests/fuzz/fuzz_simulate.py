@@ -84,6 +84,12 @@ BASES = [
      "contact": {"distance": 0.2, "stiffness": "auto",
                  "planes": [{"point": [0, 0, 0], "normal": [0, 0, 1]}]},
      "analysis": {"method": "displacement_control", "steps": 3}},
+    # A new user's fold: no material, no supports, no steps (a preset, a 3-2-1 hold, 40);
+    # half of every target, and the end state written as STL and OBJ.
+    {"pattern": dict(SHEET),
+     "actuation": [{"edges": [[1, 4]], "fold_angle_deg": 60.0}],
+     "analysis": {"method": "fold", "fold_percent": 50.0},
+     "output": {"formats": ["stl", "obj"]}},
     # Two panels folded shut onto each other, kept apart by panel-panel contact.
     {"pattern": dict(SHEET, split="N4B5"),
      "material": {"calibration": "manual", "bar_modulus": 1e3, "bar_area": 1.0,
@@ -104,7 +110,8 @@ KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices"
         "predictor", "density", "mass", "modes", "about", "contact", "distance", "planes",
         "point", "normal", "self", "unit", "scale", "frame", "assignments", "dynamics",
         "scheme", "time_step", "duration", "damping", "gravity", "hht_alpha", "record_every",
-        "time", "ramp_time", "alpha", "beta", "load_factor", "tangent", "unknown_key"]
+        "time", "ramp_time", "alpha", "beta", "load_factor", "tangent", "preset", "fold_percent",
+        "snap_tolerance", "formats", "unknown_key"]
 values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_001, 10**6]),
                    st.sampled_from(
     ["xyz", "z", "w", "N5B8", "N4B5", "auto", "manual", "linear", "mgdcm", "force_control",
@@ -115,7 +122,7 @@ values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_0
      [{"family": "fold", "fold_angle_deg": 180.0}], [{"node": 2, "stiffness": -1.0}],
      "modes", "rest", [{"point": [0, 0, 0], "normal": [0, 0, 0]}], [{"point": [0, 0, 5]}],
      [{"nodes": [2], "mass": -1.0}], {"distance": 0.2, "planes": []}, "cm", "unit", "in",
-     "origami_simulator", "dynamic", "newmark", "hht", "explicit", "step", "ramp",
+     "origami_simulator", ["stl"], ["obj", "obj"], ["ply"], 0.0, 100.0, 150.0, "dynamic", "newmark", "hht", "explicit", "step", "ramp",
      [[0.0, 0.0], [1e-3, 1.0]], [[1e-3, 0.0], [0.0, 1.0]], [[0.0]], {"harmonic": [1.0, 50.0]},
      {"harmonic": [1.0, 0.0]}, {"harmonic": [1e300, 1e300]}, {"alpha": 5.0}, {"beta": -1.0},
      {"gamma": 1.0}, [0.0, 0.0, -9810.0], 1e-9, 1e-4, -0.05, -0.5,
