@@ -15,6 +15,7 @@ from kresling.model.fold_angles import fold_angles_deg
 from kresling.simulate.actuation import FoldPlan, fold_plan
 from kresling.simulate.element_histories import ElementHistories, element_histories
 from kresling.simulate.graceful_stop import GracefulStop
+from kresling.simulate.preset_check import preset_goes_past
 from kresling.simulate.progress_log import ProgressLog
 from kresling.simulate.modes_output import run_modes
 from kresling.simulate.problem import _AXES, PREDICTORS, Problem, load_problem, node_count
@@ -75,6 +76,9 @@ class Simulation:
     interrupted : str
         The signal ("SIGINT", "SIGTERM") that ended the path early, keeping the increments
         before it; "" if none did.
+    advice : str
+        A fold with a material of its own whose path stopped early: that Origami
+        Simulator's material goes on past that point, when a second fold with it shows so.
     """
 
     problem: Problem
@@ -83,6 +87,8 @@ class Simulation:
     driven_dofs: np.ndarray
     fold: FoldPlan | None = None
     interrupted: str = ""
+    #: A fold that stalled with a material of its own: where Origami Simulator's goes on.
+    advice: str = ""
 
     @property
     def model(self):
@@ -100,7 +106,8 @@ class Simulation:
         if self.interrupted:
             return (f"interrupted ({self.interrupted}) after {self.path.num_steps} increments: "
                     "the path so far is kept")
-        return self.path.message or self._fold_shortfall()
+        message = self.path.message or self._fold_shortfall()
+        return f"{message}; {self.advice}" if self.advice else message
 
     def _fold_shortfall(self) -> str:
         """For a fold whose path ran to its end: which creases fell short, in words."""
@@ -537,7 +544,23 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
     driven = (path.constraint_dofs if analysis.method == "displacement_control"
               else np.flatnonzero(vector))
     return Simulation(problem, pm, path, np.asarray(driven, dtype=np.int64),
-                      plan if analysis.method == "fold" else None, graceful.requested)
+                      plan if analysis.method == "fold" else None, graceful.requested,
+                      _preset_advice(problem, path, graceful.requested))
+
+
+def _preset_advice(problem, path, interrupted) -> str:
+    """For a fold with a material of its own that stalled: whether Origami Simulator's
+    material goes on past that point (checked by folding it so), in words; "" otherwise."""
+    if (problem.analysis.method != "fold" or path.completed or interrupted
+            or problem.preset is not None or problem.merlin2_compat):
+        return ""
+    stopped = float(path.load_factor[-1]) if path.num_steps else 0.0
+    reached = preset_goes_past(problem, stopped)
+    if reached is None:
+        return ""
+    return (f"with Origami Simulator's softer material ([material] preset = "
+            f"\"origami_simulator\") the same fold goes on past {stopped:.3g} (checked: to "
+            f"{reached:.3g})")
 
 
 def _run_dynamic(problem, pm, stop):
