@@ -252,8 +252,10 @@ def patterns(args) -> list[tuple[str, str]]:
         return [(f, f) for f in args.files]
     found = sorted(p for p in VENDORED.iterdir() if p.suffix.lower() in (".svg", ".fold"))
     listed = [(p.name, str(p)) for p in found]
-    if args.assets:
-        listed += [(name, str(Path(args.assets) / name)) for name in ASSETS]
+    if args.assets:  # the ones not vendored already
+        vendored = {p.name for p in found}
+        listed += [(name, str(Path(args.assets) / name)) for name in ASSETS
+                   if Path(name).name not in vendored]
     return listed
 
 
