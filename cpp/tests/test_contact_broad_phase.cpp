@@ -197,6 +197,30 @@ TEST(ContactBroadPhase, ACreaseIsNoContactButAFoldedCornerMeetsItsNeighbour) {
   EXPECT_EQ(found.edge_edge, expected_ee);
 }
 
+TEST(ContactBroadPhase, TheTwoSidesOfACutJoinedAreNoContact) {
+  // The same two panels cut apart along 0-1: panel (4, 5, 3) holds copies 4, 5 of nodes 1,
+  // 0 at their places. Unjoined, the copies touch the other panel (distance 0): candidates.
+  // Joined (4 ~ 1, 5 ~ 0), they are excluded as the crease's were; corner 2 still meets
+  // the other panel.
+  NodeMatrix x(6, 3);
+  x << 0, 0, 0, 1, 0, 0, 0.3, 0.5, 0.01, 0.4, 0.4, 0, 1, 0, 0, 0, 0, 0;
+  TriangleMatrix triangles(2, 3);
+  triangles << 0, 1, 2, 4, 5, 3;
+  const EdgeMatrix edges = triangle_edges(triangles);
+  const auto apart = contact_candidates(x, triangles, edges, 0.15);
+  EXPECT_GT(apart.point_triangle.size(), 2u);
+  const JoinedNodes joined = {0, 1, 2, 3, 1, 0};
+  const auto cut = contact_candidates(x, triangles, edges, 0.15, joined);
+  const std::vector<Pair> expected_pt = {{2, 1}, {3, 0}};
+  EXPECT_EQ(cut.point_triangle, expected_pt);
+  for (const auto& [a, b] : cut.edge_edge) {  // no two edges with a joined end
+    std::set<Index> ends = {joined[edges(a, 0)], joined[edges(a, 1)]};
+    EXPECT_FALSE(ends.count(joined[edges(b, 0)]) || ends.count(joined[edges(b, 1)]));
+  }
+  EXPECT_THROW(contact_candidates(x, triangles, edges, 0.15, JoinedNodes{0, 1}),
+               std::invalid_argument);
+}
+
 TEST(ContactBroadPhase, BadMeshesAreRejected) {
   NodeMatrix x = NodeMatrix::Zero(3, 3);
   TriangleMatrix t(1, 3);

@@ -34,6 +34,9 @@ logger = logging.getLogger(__name__)
 #: one sample's reaction err by 1.65e-8 of the largest; 3e-10 keeps every sample within
 #: 3.8e-10 (and costs 2 % more time).
 ADAPTIVE_TOLERANCE = 3e-10
+#: Nodes closer than this fraction of the model's size at rest are one node to the panel
+#: contact barrier (the sides of a cut).
+JOINED_TOLERANCE = 1e-9
 #: A fold reaches its end when every driven crease is within this many degrees of its
 #: target fold angle there (``short_of_target`` counts the others).
 FOLD_TOLERANCE_DEG = 1.0
@@ -346,7 +349,21 @@ def _self_contact_table(problem, pm) -> dict:
              "stiffness": np.array([_barrier_stiffness(problem, pm.model)])}
     if problem.contact.tangent != "adaptive":
         table["tangent"] = np.array([float(TANGENTS.index(problem.contact.tangent))])
+    joined = _joined_at_rest(pm.model.nodes)
+    if joined is not None:
+        table["joined"] = joined
     return table
+
+
+def _joined_at_rest(nodes):
+    """Each node's representative among the nodes at its place at rest (the two sides of
+    a cut, separated into copies of its vertices), or None where no two coincide: the
+    contact barrier counts them as one node, so that a cut is not a contact."""
+    from kresling.io.planar_graph import merge_points
+
+    size = float(np.linalg.norm(np.ptp(nodes, axis=0)))
+    joined = merge_points(nodes, JOINED_TOLERANCE * size).astype(np.int64)
+    return joined if np.any(joined != np.arange(len(nodes))) else None
 
 
 def _holds_elements(columns: dict) -> bool:

@@ -36,7 +36,14 @@ AxisBox box_of(const Eigen::Ref<const NodeMatrix>& x, const Eigen::Ref<const Nod
 ContactCandidates find_candidates(const Eigen::Ref<const NodeMatrix>& x,
                                   const Eigen::Ref<const TriangleMatrix>& triangles,
                                   const Eigen::Ref<const EdgeMatrix>& edges, double distance,
-                                  const Eigen::Ref<const NodeMatrix>* dx) {
+                                  const Eigen::Ref<const NodeMatrix>* dx,
+                                  const JoinedNodes& joined) {
+  if (!joined.empty() && static_cast<Index>(joined.size()) != x.rows()) {
+    throw std::invalid_argument("joined nodes: " + std::to_string(joined.size()) +
+                                " entries, must have one per node (" +
+                                std::to_string(x.rows()) + ")");
+  }
+  auto id = [&joined](Index i) { return joined.empty() ? i : joined[static_cast<std::size_t>(i)]; };
   ContactCandidates out;
   // Points: the nodes on some triangle; their boxes carry the whole growth d.
   std::vector<char> on_triangle(static_cast<std::size_t>(x.rows()), 0);
@@ -49,8 +56,9 @@ ContactCandidates find_candidates(const Eigen::Ref<const NodeMatrix>& x,
   const BoxTree triangle_tree(std::move(triangle_boxes));
   for (Index v = 0; v < x.rows(); ++v) {
     if (!on_triangle[static_cast<std::size_t>(v)]) continue;
+    const Index p = id(v);
     triangle_tree.for_each_overlap(box_of<1>(x, dx, {v}, distance), [&](Index t) {
-      if (triangles(t, 0) != v && triangles(t, 1) != v && triangles(t, 2) != v) {
+      if (id(triangles(t, 0)) != p && id(triangles(t, 1)) != p && id(triangles(t, 2)) != p) {
         out.point_triangle.push_back({v, t});
       }
     });
@@ -66,10 +74,10 @@ ContactCandidates find_candidates(const Eigen::Ref<const NodeMatrix>& x,
     AxisBox query = edge_boxes[static_cast<std::size_t>(a)];
     query.lo.array() -= distance;
     query.hi.array() += distance;
-    const Index a0 = edges(a, 0), a1 = edges(a, 1);
+    const Index a0 = id(edges(a, 0)), a1 = id(edges(a, 1));
     edge_tree.for_each_overlap(query, [&](Index b) {
       if (b <= a) return;
-      const Index b0 = edges(b, 0), b1 = edges(b, 1);
+      const Index b0 = id(edges(b, 0)), b1 = id(edges(b, 1));
       if (a0 != b0 && a0 != b1 && a1 != b0 && a1 != b1) out.edge_edge.push_back({a, b});
     });
   }
@@ -116,20 +124,22 @@ EdgeMatrix triangle_edges(const Eigen::Ref<const TriangleMatrix>& triangles) {
 
 ContactCandidates contact_candidates(const Eigen::Ref<const NodeMatrix>& nodes,
                                      const Eigen::Ref<const TriangleMatrix>& triangles,
-                                     const Eigen::Ref<const EdgeMatrix>& edges, double distance) {
-  return find_candidates(nodes, triangles, edges, distance, nullptr);
+                                     const Eigen::Ref<const EdgeMatrix>& edges, double distance,
+                                     const JoinedNodes& joined) {
+  return find_candidates(nodes, triangles, edges, distance, nullptr, joined);
 }
 
 ContactCandidates contact_candidates(const Eigen::Ref<const NodeMatrix>& nodes,
                                      const Eigen::Ref<const TriangleMatrix>& triangles,
                                      const Eigen::Ref<const EdgeMatrix>& edges, double distance,
-                                     const Eigen::Ref<const NodeMatrix>& displacement) {
+                                     const Eigen::Ref<const NodeMatrix>& displacement,
+                                     const JoinedNodes& joined) {
   if (displacement.rows() != nodes.rows()) {
     throw std::invalid_argument("displacement has " + std::to_string(displacement.rows()) +
                                 " rows: must have one per node (" +
                                 std::to_string(nodes.rows()) + ")");
   }
-  return find_candidates(nodes, triangles, edges, distance, &displacement);
+  return find_candidates(nodes, triangles, edges, distance, &displacement, joined);
 }
 
 void check_contact_mesh(const Eigen::Ref<const NodeMatrix>& nodes,

@@ -39,17 +39,24 @@ struct ContactCandidates {
   std::vector<std::array<Index, 2>> edge_edge;       ///< (edge row a, edge row b), a < b
 };
 
+/// Nodes that count as one for the exclusions above: `joined[i]` is node i's
+/// representative (the two sides of a cut, coincident at rest, are one node there, so that
+/// a cut is not a contact either). Empty: every node is its own.
+using JoinedNodes = std::vector<Index>;
+
 /// The candidates at positions `nodes` (n x 3) for distance d >= 0. `edges` must be
 /// triangle_edges(triangles) (passed in so that a caller builds it once per mesh).
 ContactCandidates contact_candidates(const Eigen::Ref<const NodeMatrix>& nodes,
                                      const Eigen::Ref<const TriangleMatrix>& triangles,
-                                     const Eigen::Ref<const EdgeMatrix>& edges, double distance);
+                                     const Eigen::Ref<const EdgeMatrix>& edges, double distance,
+                                     const JoinedNodes& joined = {});
 
 /// The candidates for a linear step from `nodes` to `nodes + displacement` (swept boxes).
 ContactCandidates contact_candidates(const Eigen::Ref<const NodeMatrix>& nodes,
                                      const Eigen::Ref<const TriangleMatrix>& triangles,
                                      const Eigen::Ref<const EdgeMatrix>& edges, double distance,
-                                     const Eigen::Ref<const NodeMatrix>& displacement);
+                                     const Eigen::Ref<const NodeMatrix>& displacement,
+                                     const JoinedNodes& joined = {});
 
 /// Throw std::invalid_argument naming the argument unless every triangle and edge names
 /// nodes in [0, node_count), no triangle repeats a node, the distance is finite and >= 0

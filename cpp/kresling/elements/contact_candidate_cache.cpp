@@ -21,9 +21,9 @@ double largest_move(const Eigen::Ref<const NodeMatrix>& d) {
 std::shared_ptr<const KeptCandidates> kept_at(const Eigen::Ref<const NodeMatrix>& x,
                                               const Eigen::Ref<const TriangleMatrix>& triangles,
                                               const Eigen::Ref<const EdgeMatrix>& edges,
-                                              double reach) {
+                                              double reach, const JoinedNodes& joined) {
   auto kept = std::make_shared<KeptCandidates>();
-  kept->pairs = contact_candidates(x, triangles, edges, reach);
+  kept->pairs = contact_candidates(x, triangles, edges, reach, joined);
   kept->reach = reach;
   kept->nearest = std::numeric_limits<double>::infinity();
   kept->rounding = 1e-9 * std::max(x.rows() ? x.cwiseAbs().maxCoeff() : 0.0, reach);
@@ -67,7 +67,7 @@ KeptView ContactCandidateCache::candidates(const Eigen::Ref<const NodeMatrix>& x
   if (!same_mesh || 2.0 * moved > skin_ || (step && 2.0 * moved + reach > skin_)) {
     // Found anew here: then only the step's reach must fit in the skin.
     if (step && reach > skin_) return {};
-    list_ = kept_at(x, triangles, edges, distance_ + skin_);
+    list_ = kept_at(x, triangles, edges, distance_ + skin_, joined_);
     found_at_ = x;
     moved = 0.0;
   }

@@ -20,6 +20,7 @@
 
 #include <memory>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 #include "kresling/elements/contact_broad_phase.hpp"
@@ -61,7 +62,8 @@ class ContactCandidateCache {
  public:
   /// Candidates within `distance` of triangles and their edges, found within distance +
   /// skin (skin > 0).
-  ContactCandidateCache(double distance, double skin) : distance_(distance), skin_(skin) {}
+  ContactCandidateCache(double distance, double skin, JoinedNodes joined = {})
+      : distance_(distance), skin_(skin), joined_(std::move(joined)) {}
 
   /// A list holding every pair closer than the distance at positions x (and, when `step`
   /// is given, every pair that may meet along x -> x + step), with the nodes' move since it
@@ -74,6 +76,7 @@ class ContactCandidateCache {
 
  private:
   double distance_, skin_;
+  JoinedNodes joined_;  // nodes that count as one (contact_broad_phase.hpp)
   mutable std::mutex mutex_;
   mutable NodeMatrix found_at_;  // the positions the list was found at
   mutable std::shared_ptr<const KeptCandidates> list_;

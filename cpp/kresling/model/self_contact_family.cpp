@@ -105,16 +105,18 @@ void for_each_kept_within(const elements::KeptView& view, double distance,
 }  // namespace
 
 SelfContactFamily::SelfContactFamily(std::vector<Index> triangles, double d_hat,
-                                     double stiffness, TangentForm tangent)
+                                     double stiffness, TangentForm tangent,
+                                     elements::JoinedNodes joined)
     : triangles_(Eigen::Map<const elements::TriangleMatrix>(
           triangles.data(), static_cast<Index>(triangles.size() / 3), 3)),
       edges_(elements::triangle_edges(triangles_)),
       d_hat_(d_hat),
       stiffness_(stiffness),
       tangent_(tangent),
+      joined_(std::move(joined)),
       // A skin of d_hat: the list holds while no node moves d_hat / 2 (Newton's iterates
       // near contact move far less), at the cost of the pairs within 2 d_hat.
-      cache_(std::make_unique<elements::ContactCandidateCache>(d_hat, d_hat)) {}
+      cache_(std::make_unique<elements::ContactCandidateCache>(d_hat, d_hat, joined_)) {}
 
 void SelfContactFamily::check(const NodeMatrix& X, double) const {
   require_positive("self_contact: distance", d_hat_);
@@ -123,6 +125,18 @@ void SelfContactFamily::check(const NodeMatrix& X, double) const {
     elements::check_contact_mesh(X, triangles_, edges_, d_hat_);
   } catch (const std::invalid_argument& error) {
     throw std::invalid_argument(std::string("self_contact: ") + error.what());
+  }
+  if (!joined_.empty() && static_cast<Index>(joined_.size()) != X.rows()) {
+    throw std::invalid_argument("self_contact: joined has " + std::to_string(joined_.size()) +
+                                " entries: must have one per node (" +
+                                std::to_string(X.rows()) + ")");
+  }
+  for (std::size_t i = 0; i < joined_.size(); ++i) {
+    if (joined_[i] < 0 || joined_[i] >= X.rows()) {
+      throw std::invalid_argument("self_contact: joined[" + std::to_string(i) + "] = " +
+                                  std::to_string(joined_[i]) + " is invalid: must be a node " +
+                                  "index in [0, " + std::to_string(X.rows()) + ")");
+    }
   }
   NearestPair nearest;
   const double gap = nearest_pair(X, &nearest);
@@ -208,7 +222,7 @@ double SelfContactFamily::nearest_pair(const NodeMatrix& x, NearestPair* pair) c
   const double extent = (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
   double best = std::numeric_limits<double>::infinity();
   for (double r = d_hat_;; r *= 4.0) {
-    const ContactCandidates c = elements::contact_candidates(x, triangles_, edges_, r);
+    const ContactCandidates c = elements::contact_candidates(x, triangles_, edges_, r, joined_);
     for_each_pair(c, triangles_, edges_, [&](const std::array<Index, 4>& n, bool edge_edge) {
       const double d = std::sqrt(squared_distance(x, n, edge_edge));
       if (!(d < best)) return;
@@ -277,8 +291,8 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
     // Only the kept pairs that may be within `far` of each other at x0.
     for_each_kept_within(view, far, triangles_, edges_, check);
   } else {
-    for_each_pair(elements::contact_candidates(x0, triangles_, edges_, 0.0, dx), triangles_,
-                  edges_, check);
+    for_each_pair(elements::contact_candidates(x0, triangles_, edges_, 0.0, dx, joined_),
+                  triangles_, edges_, check);
   }
   return fraction;
 }
@@ -290,11 +304,13 @@ Table SelfContactFamily::table() const {
   if (tangent_ != TangentForm::Adaptive) {
     out.emplace("tangent", real_column({static_cast<double>(tangent_)}));
   }
+  if (!joined_.empty()) out.emplace("joined", index_column(joined_));
   return out;
 }
 
 FamilyPtr SelfContactFamily::from_table(const Table& t) {
-  require_known_columns(t, "self_contact", {"triangles", "distance", "stiffness", "tangent"});
+  require_known_columns(t, "self_contact",
+                        {"triangles", "distance", "stiffness", "tangent", "joined"});
   const auto& triangles = require_column(t, "self_contact", "triangles", true, 3);
   const auto& d_hat = require_column(t, "self_contact", "distance", false, 1, 1).reals;
   const auto& kappa = require_column(t, "self_contact", "stiffness", false, 1, 1).reals;
@@ -308,7 +324,10 @@ FamilyPtr SelfContactFamily::from_table(const Table& t) {
     }
     tangent = static_cast<TangentForm>(static_cast<int>(code));
   }
-  return std::make_shared<SelfContactFamily>(triangles.indices, d_hat[0], kappa[0], tangent);
+  elements::JoinedNodes joined;
+  if (t.count("joined")) joined = require_column(t, "self_contact", "joined", true, 1).indices;
+  return std::make_shared<SelfContactFamily>(triangles.indices, d_hat[0], kappa[0], tangent,
+                                             std::move(joined));
 }
 
 }  // namespace kresling::model

@@ -29,7 +29,9 @@ namespace kresling::model {
 
 /// Table columns: triangles (3 node indices a row), distance (d_hat [mm], one value),
 /// stiffness (kappa [N/mm^3], one value), optionally tangent (one value, a TangentForm:
-/// 0 projected, 1 exact, 2 adaptive; absent: adaptive).
+/// 0 projected, 1 exact, 2 adaptive; absent: adaptive) and joined (one representative node
+/// per node: nodes that count as one for the exclusions, the two sides of a cut coincident
+/// at rest; absent: none).
 class SelfContactFamily final : public ElementFamily {
  public:
   /// Kinds of active elements.
@@ -44,7 +46,8 @@ class SelfContactFamily final : public ElementFamily {
   enum class TangentForm : int { Projected = 0, Exact = 1, Adaptive = 2 };
 
   SelfContactFamily(std::vector<Index> triangles, double d_hat, double stiffness,
-                    TangentForm tangent = TangentForm::Adaptive);
+                    TangentForm tangent = TangentForm::Adaptive,
+                    elements::JoinedNodes joined = {});
   static FamilyPtr from_table(const Table& table);
 
   const char* name() const override { return "self_contact"; }
@@ -85,6 +88,7 @@ class SelfContactFamily final : public ElementFamily {
   elements::EdgeMatrix edges_;
   double d_hat_, stiffness_;
   TangentForm tangent_ = TangentForm::Adaptive;
+  elements::JoinedNodes joined_;  // nodes that count as one (contact_broad_phase.hpp)
   // The broad phase's candidates kept across evaluations (the family's only state, a cache:
   // every result is that of a broad phase of its own).
   std::unique_ptr<elements::ContactCandidateCache> cache_;
