@@ -68,23 +68,15 @@ ASSETS = ("Bases/frogBase.svg", "Bases/squareBase.svg", "Bases/pinwheelBase.svg"
 #: Stiff bars, panels as stiff in bending as the creases in folding (N, mm).
 STIFF = {"calibration": "manual", "bar_modulus": 1e5, "bar_area": 1.0,
          "fold_stiffness": 1.0, "bend_stiffness": 1.0}
-#: Origami Simulator's defaults: bar (axial), crease and face-angle stiffness.
-OS_AXIAL, OS_CREASE, OS_FACE = 20.0, 0.7, 0.2
-
-
 def material(name: str, pattern) -> dict:
     """The ``[material]`` keys of ``stiff`` or ``soft`` for ``pattern``."""
     if name == "stiff":
         return dict(STIFF)
-    import numpy as np
+    from kresling.model.material_presets import preset_material
 
-    # The simulator scales the sheet to a bounding radius of 1 about its bounding box's
-    # centre; its energy times R / 0.7 is this model's with these keys (docs/folding.md).
-    xy = np.asarray(pattern.vertices, dtype=float)[:, :2]
-    centre = 0.5 * (xy.min(axis=0) + xy.max(axis=0))
-    radius = float(np.max(np.linalg.norm(xy - centre, axis=1)))
-    return dict(STIFF, bar_modulus=OS_AXIAL / OS_CREASE,
-                face_stiffness=OS_FACE * radius / OS_CREASE)
+    # Origami Simulator's ingredients in this model's units (docs/folding.md).
+    soft = preset_material("origami_simulator", pattern.vertices)
+    return dict(STIFF, bar_modulus=soft.bar_modulus, face_stiffness=soft.face_stiffness)
 
 
 def first_line(text: str) -> str:

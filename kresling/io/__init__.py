@@ -104,7 +104,7 @@ def read_pattern(path, *, planarity_tolerance=1e-3, unit=None, scale=None,
         raise ValueError(f"file extension {Path(path).suffix!r} of {str(path)!r} is invalid: "
                          f"must be one of {sorted(READERS)} (STL is written only: it has "
                          "triangles, not panels)")
-    if suffix == ".fold" and snap_tolerance is not None:
+    if snap_tolerance is not None and suffix != ".svg":
         raise ValueError(f"snap_tolerance = {snap_tolerance!r} is invalid for {str(path)!r}: "
                          "only SVG drawings are snapped (their strokes merged into vertices)")
     if suffix == ".fold":
@@ -116,9 +116,6 @@ def read_pattern(path, *, planarity_tolerance=1e-3, unit=None, scale=None,
     if suffix == ".svg":
         return read_svg(path, planarity_tolerance=planarity_tolerance, unit=unit, scale=scale,
                         snap_tolerance=snap_tolerance)
-    if snap_tolerance is not None:
-        raise ValueError(f"snap_tolerance = {snap_tolerance!r} is invalid for {str(path)!r}: "
-                         "only SVG drawings are snapped (their strokes merged into vertices)")
     pattern = read_obj(path, planarity_tolerance=planarity_tolerance)
     factor = 1.0 if unit is None and scale is None else mm_per_unit(unit or "mm", scale)
     return pattern if factor == 1.0 else scaled(pattern, factor)

@@ -25,6 +25,12 @@ class GracefulStop:
         The signal's name ("SIGINT", "SIGTERM") once one arrived, else "".
     """
 
+    @property
+    def listening(self) -> bool:
+        """Whether a handler is installed (the main thread, signals with their usual
+        action), so that a request can arrive."""
+        return bool(self._previous)
+
     def __init__(self):
         self.requested = ""
         self._previous = {}

@@ -66,6 +66,9 @@ RELATIVE_TOLERANCE = 1e-8
 MERLIN2_TOLERANCE = 1e-6
 #: ``method = "fold"``: increments per stage when the problem gives no ``steps``.
 FOLD_STEPS = 40
+#: The hinges' enhanced linear limits [deg] when ``[laws]`` gives none (with a preset
+#: material, the preset's).
+LAW_LIMITS_DEG = (45.0, 315.0)
 #: ``method = "fold"``: the material when the problem gives no ``[material]``.
 DEFAULT_FOLD_PRESET = "origami_simulator"
 
@@ -189,6 +192,9 @@ class Problem:
     #: The supports chosen to hold a fold's free sheet (no ``[[support]]`` given): the
     #: rigid-body motions only (:func:`~kresling.simulate.rigid_hold.rigid_body_hold`).
     held: tuple = ()
+    #: The model's node count the problem was checked against (:func:`node_count`), so
+    #: that building the model does not split the panels once more to find it.
+    num_nodes: int | None = None
 
 
 class _Table:
@@ -486,7 +492,7 @@ def _read_material(t):
     return material, compat, sheet_mass
 
 
-def _read_laws(t, calibration_auto, limits=(45.0, 315.0)):
+def _read_laws(t, calibration_auto, limits=LAW_LIMITS_DEG):
     laws = sorted(SPRING_LAWS)
     bar = t.get("bar", _string, "ogden", choices=tuple(sorted(BAR_LAWS)))
     fold = HingeLaw(t.get("fold", _string, "enhanced_linear", choices=laws),
@@ -755,7 +761,7 @@ def load_problem(problem, *, overrides=None) -> Problem:
         material = preset_material(preset, pattern.vertices)
     laws = _read_laws(_Table(root.get("laws", lambda t, k, v, a: v, {}), "laws", source, text),
                       isinstance(material, SheetMaterial),
-                      PRESET_LIMITS_DEG if preset else (45.0, 315.0))
+                      PRESET_LIMITS_DEG if preset else LAW_LIMITS_DEG)
     count = node_count(pattern, split, centre)
     supports = _read_supports(root.get("support", _array_of_tables, []), source, text, count)
     held = ()
@@ -795,6 +801,6 @@ def load_problem(problem, *, overrides=None) -> Problem:
     root.finish()
     result = Problem(pattern, split, material, compat, laws, supports, loads, analysis, source,
                      centre, output, actuations, springs, convention, sheet_mass, masses,
-                     contact, dynamics, preset, held)
+                     contact, dynamics, preset, held, count)
     _check_consistency(result, t_analysis)
     return result

@@ -10,7 +10,7 @@ import threading
 
 __all__ = ["ProgressLog"]
 
-logger = logging.getLogger("kresling.simulate.run")
+logger = logging.getLogger(__name__)
 
 
 class ProgressLog:

@@ -34,9 +34,6 @@ logger = logging.getLogger(__name__)
 #: one sample's reaction err by 1.65e-8 of the largest; 3e-10 keeps every sample within
 #: 3.8e-10 (and costs 2 % more time).
 ADAPTIVE_TOLERANCE = 3e-10
-#: Nodes closer than this fraction of the model's size at rest are one node to the panel
-#: contact barrier (the sides of a cut).
-JOINED_TOLERANCE = 1e-9
 #: A fold reaches its end when every driven crease is within this many degrees of its
 #: target fold angle there (``short_of_target`` counts the others).
 FOLD_TOLERANCE_DEG = 1.0
@@ -285,7 +282,8 @@ def build_problem_model(problem) -> PatternModel:
     # The supports go in with the model (not added to a copy afterwards: the copy was 28 %
     # of the model's cost); the node count is the one the problem was checked against
     # (pattern vertices and the split's centres).
-    fixed = np.zeros((node_count(problem.pattern, problem.split, problem.centre), 3), dtype=bool)
+    count = problem.num_nodes or node_count(problem.pattern, problem.split, problem.centre)
+    fixed = np.zeros((count, 3), dtype=bool)
     for support in problem.supports:
         for axis in support.axes:
             fixed[support.node, _AXES[axis]] = True
@@ -359,10 +357,12 @@ def _joined_at_rest(nodes):
     """Each node's representative among the nodes at its place at rest (the two sides of
     a cut, separated into copies of its vertices), or None where no two coincide: the
     contact barrier counts them as one node, so that a cut is not a contact."""
+    from kresling.io.cuts import DUPLICATE_TOLERANCE
     from kresling.io.planar_graph import merge_points
 
+    # "At one place" as a pattern's own vertices are judged (kresling.io.cuts).
     size = float(np.linalg.norm(np.ptp(nodes, axis=0)))
-    joined = merge_points(nodes, JOINED_TOLERANCE * size).astype(np.int64)
+    joined = merge_points(nodes, DUPLICATE_TOLERANCE * size).astype(np.int64)
     return joined if np.any(joined != np.arange(len(nodes))) else None
 
 
@@ -486,7 +486,6 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
     vector = _load_vector(problem, model.num_dofs)
     bar = _progress_bar(problem, progress)
     count = [0]
-    graceful = GracefulStop()
     lines = None  # progress lines where there is no bar (a log, a batch job)
     # The problem's own rules where the C++ solver has none (MGDCM checks them itself).
     monitor = analysis.stop if analysis.method != "mgdcm" else None
@@ -508,50 +507,28 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
             return False
         return bool(stop(PathState(count[0], float(load_factor), np.asarray(u).reshape(-1, 3))))
 
-    # The rule is always asked: it ends the path where a Ctrl-C or a kill asks it to.
-    callback = rule
     # Scale-free like the tolerance: MERLIN2's absolute shift only to reproduce its runs.
     shift = MERLIN2_SHIFT if problem.merlin2_compat else scale_free_shift(model)
-    common = {"tolerance": analysis.tolerance, "max_iterations": analysis.max_iterations,
-              "stop": callback, "shift": shift}
     if bar is None and progress is not False:
         lines = ProgressLog(problem.source, f"{model.num_nodes} nodes, {len(model.bars)} "
                                             f"bars, {len(model.hinges)} hinges; "
                                             f"{stepping(problem)}")
-    try:
-        graceful.__enter__()
-        if analysis.method == "displacement_control":
-            adaptive = analysis.increments == "adaptive"
-            order = PREDICTORS.index(analysis.predictor)  # its extrapolation's order
-            path = solve_displacement_control(
-                model, vector, analysis.steps, adaptive=adaptive,
-                adaptive_tolerance=ADAPTIVE_TOLERANCE, extrapolation=order,
-                merlin2_steps=problem.merlin2_compat and not adaptive and order == 0, **common)
-        elif analysis.method == "force_control":
-            path = solve_force_control(model, vector, analysis.steps, **common)
-        elif analysis.method == "fold":
-            plan = fold_plan(problem, pm)
-            adaptive = analysis.increments == "adaptive"
-            path = solve_fold(model, plan.stages, analysis.steps, forces=vector,
-                              extrapolation=PREDICTORS.index(analysis.predictor),
-                              adaptive=adaptive, adaptive_tolerance=ADAPTIVE_TOLERANCE,
-                              snap=analysis.snap, **common)
-        else:
-            monitor = analysis.stop
-            path = solve_mgdcm(model, vector, initial_load_factor=analysis.initial_load_factor,
-                               max_increments=analysis.max_increments,
-                               max_load_factor=analysis.max_load_factor,
-                               monitor_dof=None if monitor is None else monitor.dof,
-                               max_displacement=np.inf if monitor is None else monitor.beyond,
-                               **common)
-    except ValueError as error:
-        raise ValueError(f"{problem.source}: {_solver_where(str(error))}") from None
-    finally:
-        graceful.__exit__()
-        if bar is not None:
-            bar.close()
-        if lines is not None:
-            lines.close()
+    with GracefulStop() as graceful:
+        # The rule is asked only where it has something to do (Python at every increment
+        # otherwise for nothing); a Ctrl-C or a kill it listens for is one of those.
+        needed = (graceful.listening or lines is not None or bar is not None
+                  or stop is not None or monitor is not None or np.isfinite(bound))
+        common = {"tolerance": analysis.tolerance, "max_iterations": analysis.max_iterations,
+                  "stop": rule if needed else None, "shift": shift}
+        try:
+            path, plan = _solve(problem, pm, vector, common)
+        except ValueError as error:
+            raise ValueError(f"{problem.source}: {_solver_where(str(error))}") from None
+        finally:
+            if bar is not None:
+                bar.close()
+            if lines is not None:
+                lines.close()
     if graceful.requested:
         logger.warning("%s: %s: the path stopped after %d increments; they are kept",
                        problem.source, graceful.requested, path.num_steps)
@@ -560,9 +537,37 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
                        path.num_steps, path.message)
     driven = (path.constraint_dofs if analysis.method == "displacement_control"
               else np.flatnonzero(vector))
-    return Simulation(problem, pm, path, np.asarray(driven, dtype=np.int64),
-                      plan if analysis.method == "fold" else None, graceful.requested,
-                      _preset_advice(problem, path, graceful.requested))
+    return Simulation(problem, pm, path, np.asarray(driven, dtype=np.int64), plan,
+                      graceful.requested, _preset_advice(problem, path, graceful.requested))
+
+
+def _solve(problem, pm, vector, common):
+    """The problem's path by its method's solver: (PathResult, FoldPlan or None)."""
+    model, analysis = pm.model, problem.analysis
+    if analysis.method == "displacement_control":
+        adaptive = analysis.increments == "adaptive"
+        order = PREDICTORS.index(analysis.predictor)  # its extrapolation's order
+        return solve_displacement_control(
+            model, vector, analysis.steps, adaptive=adaptive,
+            adaptive_tolerance=ADAPTIVE_TOLERANCE, extrapolation=order,
+            merlin2_steps=problem.merlin2_compat and not adaptive and order == 0,
+            **common), None
+    if analysis.method == "force_control":
+        return solve_force_control(model, vector, analysis.steps, **common), None
+    if analysis.method == "fold":
+        plan = fold_plan(problem, pm)
+        return solve_fold(model, plan.stages, analysis.steps, forces=vector,
+                          extrapolation=PREDICTORS.index(analysis.predictor),
+                          adaptive=analysis.increments == "adaptive",
+                          adaptive_tolerance=ADAPTIVE_TOLERANCE, snap=analysis.snap,
+                          **common), plan
+    monitor = analysis.stop
+    return solve_mgdcm(model, vector, initial_load_factor=analysis.initial_load_factor,
+                       max_increments=analysis.max_increments,
+                       max_load_factor=analysis.max_load_factor,
+                       monitor_dof=None if monitor is None else monitor.dof,
+                       max_displacement=np.inf if monitor is None else monitor.beyond,
+                       **common), None
 
 
 def _preset_advice(problem, path, interrupted) -> str:

@@ -43,12 +43,12 @@ void check_panel(const std::vector<Index>& panel, std::size_t p, Index num_verti
 }
 
 // N4B5 bend hinges of one panel, in local corner indices.
-std::vector<std::array<Index, 4>> local_n4b5_bends(const std::vector<Vector3>& p) {
+std::vector<std::array<Index, 4>> local_n4b5_bends(const std::vector<Vector3>& p,
+                                                   const PlanarPolygon& polygon) {
   if (p.size() == 4) {
     // The shorter diagonal (p0-p2 on a tie) is the bend axis, unless it lies outside the
     // panel (a non-convex quad) or along its sides (a straight corner).
     const bool shorter_13 = (p[0] - p[2]).norm() > (p[3] - p[1]).norm();
-    const PlanarPolygon polygon(p);
     const bool use_13 = shorter_13 ? polygon.is_interior_diagonal(1, 3)
                                    : !polygon.is_interior_diagonal(0, 2);
     if (use_13 && !polygon.is_interior_diagonal(1, 3)) {
@@ -201,7 +201,7 @@ PanelElements build_panel_elements(const NodeMatrix& vertices,
     if (!centre) {
       // N4B5, or an N5B8 panel not star-shaped from any centre tried: cut along diagonals.
       try {
-        for (const auto& b : local_n4b5_bends(corners)) {
+        for (const auto& b : local_n4b5_bends(corners, *polygon)) {
           out.bends.push_back({panel[b[0]], panel[b[1]], panel[b[2]], panel[b[3]]});
           out.bend_panel.push_back(static_cast<Index>(p));
         }

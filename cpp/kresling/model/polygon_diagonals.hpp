@@ -31,8 +31,6 @@ class PlanarPolygon {
   /// `corners` in order around the panel (at least 3, not all on one line).
   explicit PlanarPolygon(const std::vector<Vector3>& corners);
 
-  std::size_t size() const { return points_.size(); }
-
   /// Whether no two sides cross or touch but neighbours at their shared corner (a simple
   /// polygon; straight corners allowed).
   bool is_simple() const;
