@@ -21,6 +21,23 @@ def test_bend_json_is_table_3(tmp_path):
     assert values["snap_force"] == pytest.approx(4.34, abs=0.005) and values["bistable"] is True
 
 
+def test_bend_gradient_json_has_every_quantity_by_every_variable(capsys):
+    assert main(["bend", "--n", "8", "--lam", "0.8", "--Lc", "15", "--deflection-rad", "0.001",
+                 "--gradient", "--json"]) == 0
+    values = json.loads(capsys.readouterr().out)
+    gradient = values["gradient"]
+    assert list(gradient) == ["kb_ratio", "kb_extended", "kb_contracted", "snap_force",
+                              "energy_barrier"]
+    for row in gradient.values():
+        assert list(row) == ["lam", "Lc", "R", "thickness", "kf"]
+    # K_B is proportional to kf (every stiffness is a ratio to it); the ratio is not.
+    assert gradient["kb_extended"]["kf"] == pytest.approx(values["K_ext"] / 0.047, rel=1e-6)
+    assert abs(gradient["kb_ratio"]["kf"]) < 1e-9 * values["ratio"] / 0.047
+    assert main(["bend", "--n", "8", "--lam", "0.8", "--Lc", "15", "--deflection-rad", "0.001",
+                 "--gradient"]) == 0
+    assert "d/dthickness" in capsys.readouterr().out
+
+
 def test_snap_json(tmp_path):
     result = run_kresling("snap", "--n", "4", "--lam", "0.7", "--Lc", "30", "--json", cwd=tmp_path)
     assert result.returncode == 0, result.stderr

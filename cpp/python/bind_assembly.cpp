@@ -1,19 +1,21 @@
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include <optional>
+#include <string>
 
 #include "bindings.hpp"
 #include "kresling/assembly/assembler.hpp"
+#include "kresling/assembly/parameter_jacobian.hpp"
+#include "kresling/assembly/shape_jacobian.hpp"
 #include "kresling/assembly/workspace.hpp"
 
 namespace py = pybind11;
 using kresling::model::Model;
 
 namespace kresling::python {
-
-namespace {
 
 py::tuple csc(const assembly::SparseMatrix& K) {
   // Copies: the Python side owns its arrays.
@@ -22,8 +24,6 @@ py::tuple csc(const assembly::SparseMatrix& K) {
   py::array_t<double> data(K.nonZeros(), K.valuePtr());
   return py::make_tuple(data, indices, indptr, py::make_tuple(K.rows(), K.cols()));
 }
-
-}  // namespace
 
 void bind_assembly(py::module_& m) {
   py::class_<assembly::Workspace>(
@@ -76,6 +76,49 @@ void bind_assembly(py::module_& m) {
       },
       py::arg("model"), py::arg("u"),
       "Per-element state at one displacement: {column: (E,) array}, family by family");
+
+  m.def(
+      "family_parameters",
+      [](const Model& model) {
+        py::dict out;
+        for (const auto& family : model.families()) out[family->name()] = family->parameters();
+        return out;
+      },
+      py::arg("model"), "{family: [parameter column, ...]} a model's families differentiate by");
+  m.def(
+      "parameter_jacobian",
+      [](const Model& model, const VectorX& u, const std::string& family,
+         const std::string& parameter) {
+        assembly::ParameterJacobian j;
+        {
+          py::gil_scoped_release release;
+          j = assembly::parameter_jacobian(model, u, family, parameter);
+        }
+        return py::make_tuple(csc(j.force), j.energy);
+      },
+      py::arg("model"), py::arg("u"), py::arg("family"), py::arg("parameter"),
+      "(csc parts of d f_int/d theta, 3N x m; dE/d theta, m) at fixed positions");
+  m.def(
+      "reference_geometry_jacobian",
+      [](const Model& model, const std::string& family, const std::string& column) {
+        return csc(assembly::reference_geometry_jacobian(model, family, column));
+      },
+      py::arg("model"), py::arg("family"), py::arg("column"),
+      "csc parts of d theta/dX (m x 3N) of the column's entries that hold the reference "
+      "geometry");
+  m.def(
+      "shape_jacobian",
+      [](const Model& model, const VectorX& u) {
+        assembly::ShapeJacobian j;
+        {
+          py::gil_scoped_release release;
+          j = assembly::shape_jacobian(model, u);
+        }
+        return py::make_tuple(csc(j.force), j.energy);
+      },
+      py::arg("model"), py::arg("u"),
+      "(csc parts of d f_int/dX, 3N x 3N; dE/dX, 3N) at fixed u, the rest values that hold "
+      "the reference geometry following it");
 }
 
 }  // namespace kresling::python

@@ -4,6 +4,7 @@
 
 #include "bindings.hpp"
 #include "kresling/geometry/design.hpp"
+#include "kresling/geometry/design_derivative.hpp"
 #include "kresling/geometry/design_table.hpp"
 
 namespace py = pybind11;
@@ -65,6 +66,21 @@ void bind_geometry(py::module_& m) {
       .def("facet_angle_at", [](const Design& d, py::array_t<double, py::array::forcecast> a) {
         return map_alpha(d, a, &Design::facet_angle_at);
       });
+
+  m.def(
+      "state_derivative",
+      [](const Design& design, int state, const std::string& variable) {
+        if (state != 0 && state != 1) {
+          throw std::invalid_argument("state = " + std::to_string(state) +
+                                      " is invalid: must be 0 (contracted) or 1 (extended)");
+        }
+        const auto d = kresling::geometry::state_derivative(
+            design, static_cast<kresling::geometry::State>(state),
+            kresling::geometry::design_variable(variable));
+        return py::make_tuple(d.height, d.twist);
+      },
+      py::arg("design"), py::arg("state"), py::arg("variable"),
+      "(d height/dv [mm per unit], d twist/dv [rad per unit]) of a stable state by lam, Lc or R");
 
   py::tuple names(kresling::geometry::kDerivedNames.size());
   for (std::size_t k = 0; k < kresling::geometry::kDerivedNames.size(); ++k) {

@@ -7,6 +7,7 @@
 #include "kresling/model/arm.hpp"
 #include "kresling/model/calibration.hpp"
 #include "kresling/model/family_registry.hpp"
+#include "kresling/model/kresling_design_derivative.hpp"
 #include "kresling/model/kresling_specimen.hpp"
 #include "kresling/model/merlin2_rest_angle.hpp"
 #include "kresling/model/model.hpp"
@@ -162,6 +163,20 @@ void bind_specimen(py::module_& m) {
       py::arg("design"), py::arg("states"), py::arg("chirality"), py::arg("parameters"),
       py::arg("fixed"));
   m.attr("MAX_SPECIMEN_NODES") = model::kMaxSpecimenNodes;
+  m.def(
+      "specimen_design_derivative",
+      [](const model::KreslingSpecimen& specimen, const geometry::Design& design,
+         const std::vector<int>& states, const std::vector<int>& chirality,
+         const SpecimenParameters& parameters, const std::string& variable) {
+        const model::SpecimenDesignDerivative d = model::specimen_design_derivative(
+            specimen, design, states, chirality, parameters, variable);
+        return py::make_tuple(d.positions, d.bar_area, d.bar_modulus, d.hinge_stiffness);
+      },
+      py::arg("specimen"), py::arg("design"), py::arg("states"), py::arg("chirality"),
+      py::arg("parameters"), py::arg("variable"),
+      "(dX/dv (3N), d area/dv (bars), d modulus/dv (bars), d stiffness/dv (hinges)) of a "
+      "Kresling specimen by a design variable (lam, Lc, R, thickness, kf)");
+  m.attr("FACET_THICKNESS") = model::kFacetThickness;
 }
 
 // The manipulator as one structure (model/arm.hpp): modules, guide plates, tendons.

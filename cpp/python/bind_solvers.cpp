@@ -14,6 +14,7 @@
 #include "kresling/solvers/fold.hpp"
 #include "kresling/solvers/force_control.hpp"
 #include "kresling/solvers/mgdcm.hpp"
+#include "kresling/solvers/sensitivity.hpp"
 #include "kresling/solvers/limits.hpp"
 #include "kresling/solvers/linear_stiffness.hpp"
 #include "kresling/solvers/stable_time_step.hpp"
@@ -188,7 +189,48 @@ void bind_integrator(py::module_& m, const char* name, Integrate integrate, cons
 
 }  // namespace
 
+namespace {
+
+// An equilibrium's factorised tangent for sensitivities (solvers/sensitivity.hpp).
+void bind_equilibrium_sensitivity(py::module_& m) {
+  py::class_<solvers::EquilibriumSensitivity>(
+      m, "EquilibriumSensitivity",
+      "An equilibrium's tangent factorised for sensitivities (solvers/sensitivity.hpp)")
+      .def(py::init([](const Model& model, const VectorX& u, const std::vector<Index>& held) {
+             py::gil_scoped_release release;
+             return std::make_unique<solvers::EquilibriumSensitivity>(model, u, held);
+           }),
+           py::arg("model"), py::arg("u"), py::arg("held"))
+      .def_property_readonly("ok", &solvers::EquilibriumSensitivity::ok)
+      .def_property_readonly("negative_eigenvalues",
+                             &solvers::EquilibriumSensitivity::negative_eigenvalues)
+      .def_property_readonly("held_dofs", &solvers::EquilibriumSensitivity::held_dofs)
+      .def("update", &solvers::EquilibriumSensitivity::update, py::arg("u"),
+           py::call_guard<py::gil_scoped_release>())
+      .def("tangent", [](const solvers::EquilibriumSensitivity& s) { return csc(s.tangent()); })
+      .def_property_readonly("internal_force", &solvers::EquilibriumSensitivity::internal_force)
+      .def(
+          "tangent_times",
+          [](const solvers::EquilibriumSensitivity& s, const Eigen::MatrixXd& M) {
+            if (M.rows() != s.tangent().cols()) {
+              throw std::invalid_argument("M has " + std::to_string(M.rows()) +
+                                          " rows: must have " + std::to_string(s.tangent().cols()));
+            }
+            return Eigen::MatrixXd(s.tangent() * M);
+          },
+          py::arg("M"), "K M: the tangent times a 3N x P matrix")
+      .def("displacement", &solvers::EquilibriumSensitivity::displacement, py::arg("dresidual"),
+           py::arg("held_motion") = Eigen::MatrixXd(), py::call_guard<py::gil_scoped_release>())
+      .def("held_force", &solvers::EquilibriumSensitivity::held_force, py::arg("dforce"),
+           py::arg("du"), py::call_guard<py::gil_scoped_release>())
+      .def("adjoint", &solvers::EquilibriumSensitivity::adjoint, py::arg("g"),
+           py::call_guard<py::gil_scoped_release>());
+}
+
+}  // namespace
+
 void bind_solvers(py::module_& m) {
+  bind_equilibrium_sensitivity(m);
   bind_path_result(m);
   // The documented bounds of the solvers' controls (kresling/solvers/limits.hpp).
   m.attr("MAX_STEPS") = kMaxSteps;

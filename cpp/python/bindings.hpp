@@ -5,6 +5,8 @@
 
 #include <pybind11/pybind11.h>
 
+#include <Eigen/SparseCore>
+
 #include "kresling/core/types.hpp"
 #include "kresling/elements/bar_laws.hpp"
 #include "kresling/elements/spring_laws.hpp"
@@ -24,6 +26,10 @@ pybind11::class_<Options>& def_newton_controls(pybind11::class_<Options>& option
           "max_iterations", [](const Options& o) { return o.newton.max_iterations; },
           [](Options& o, int v) { o.newton.max_iterations = v; });
 }
+
+/// A sparse matrix as scipy.sparse.csc_matrix's arguments: (data, indices, indptr), shape
+/// (copies: the Python side owns its arrays).
+pybind11::tuple csc(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& K);
 
 void bind_geometry(pybind11::module_& m);
 void bind_elements(pybind11::module_& m);

@@ -1,7 +1,9 @@
 """The thesis's analyses on Kresling specimens (chapter 3): the three-point bending test in
 both stable states and the bending-stiffness ratio (section 3.4), its linearised form and the
 orientation study (Appendix A), the facet angle Psi of the built cells (figure 3.8) and the
-snap-through test of bistability strength (section 3.5).
+snap-through test of bistability strength (section 3.5), and the exact derivatives of the
+bending stiffnesses, their ratio, the snap force and the energy barrier by the design
+(``design_gradient``).
 
 Submodules beyond these: ``table3`` (Table 3 side by side), ``plots`` (figures 3.5-3.7,
 3.14, 3.16), ``specimen_views`` (FOLD export, 3D plot), ``paths`` (the bending and
@@ -11,6 +13,9 @@ snap-through paths with every node at every increment, for views). The report's 
 
 from kresling.analyses.bending import (PROTOCOLS, BendingComparison, BendingResult, BendingTester,
                                        bending_stiffness, bending_test)
+from kresling.analyses.design_sensitivity import (DESIGN_VARIABLES, GRADIENT_QUANTITIES,
+                                               DesignGradient, bending_gradient, design_gradient,
+                                               snap_through_gradient)
 from kresling.analyses.facet_angle import facet_angle, facet_angle_ratio, facet_angles
 from kresling.analyses.linear_bending import LinearBendingTester, linear_bending_stiffness
 from kresling.analyses.orientation import OrientationStudy, orientation_study
@@ -19,4 +24,6 @@ from kresling.analyses.snap_through import SnapThroughResult, SnapThroughTester,
 __all__ = ["PROTOCOLS", "BendingResult", "BendingComparison", "BendingTester", "bending_test",
            "bending_stiffness", "LinearBendingTester", "linear_bending_stiffness",
            "SnapThroughResult", "SnapThroughTester", "snap_through", "facet_angles",
-           "facet_angle", "facet_angle_ratio", "OrientationStudy", "orientation_study"]
+           "facet_angle", "facet_angle_ratio", "OrientationStudy", "orientation_study",
+           "DESIGN_VARIABLES", "GRADIENT_QUANTITIES", "DesignGradient", "design_gradient",
+           "bending_gradient", "snap_through_gradient"]

@@ -26,6 +26,11 @@ def register(subparsers) -> None:
     parser.add_argument("--deflection-rad", type=float, metavar="ANGLE",
                         help="drive to this deflection angle [rad] in 10 steps instead (the "
                              "thesis's parametric study used 0.001 rad = 0.057 deg)")
+    parser.add_argument("--gradient", action="store_true",
+                        help="also the exact derivatives of K_ext, K_con, their ratio, the snap "
+                             "force and the energy barrier with respect to lam, Lc [mm], R "
+                             "[mm], the facet sheet's thickness [mm] and kf [N/rad] (the tests "
+                             "run again with their whole paths differentiated)")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--plot", metavar="FILE.png",
                         help="write the moment-angle figure (like thesis figures 3.5-3.7)")
@@ -84,6 +89,12 @@ def run(args) -> int:
         "partial": partial,
         "notes": notes,
     }
+    if args.gradient:
+        from kresling.analyses import design_gradient
+
+        with cli_names(BEND_OPTIONS):
+            result["gradient"] = design_gradient(design, protocol, parameters=parameters,
+                                                 **options).as_dict()["gradient"]
     if args.json:
         print_json(result)
     else:
@@ -107,6 +118,8 @@ def run(args) -> int:
             print(f"protocol: driven to a deflection of {args.deflection_rad:g} rad "
                   f"({math.degrees(args.deflection_rad):.4g} deg) in 10 increments")
         print_table(rows, ("quantity", "value", "unit", "meaning"))
+        if args.gradient:
+            _print_gradient(result["gradient"])
         print(f"\n{summary_line(parameters)}")
         for note in notes:
             print(f"\nnote: {note}")
@@ -131,6 +144,17 @@ def run(args) -> int:
                   f"{partial[name]:.0%} of its travel, so the values read from it are partial: "
                   f"{run_result.message}", file=sys.stderr)
     return 0 if result["completed"] else 1
+
+
+def _print_gradient(gradient) -> None:
+    """One row per quantity, one column per design variable."""
+    variables = list(next(iter(gradient.values())))
+    units = {"lam": "1", "Lc": "mm", "R": "mm", "thickness": "mm", "kf": "N/rad"}
+    print("\nderivatives (per unit of each variable: " +
+          ", ".join(f"{v} [{units.get(v, '')}]" for v in variables) + ")")
+    rows = [(q, *(math.nan if row[v] is None else row[v] for v in variables))
+            for q, row in gradient.items()]
+    print_table(rows, ("quantity", *(f"d/d{v}" for v in variables)))
 
 
 #: The library's names of the bending test's options and the command's.

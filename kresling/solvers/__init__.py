@@ -1,6 +1,7 @@
 """Nonlinear solvers: displacement control (the thesis's mode), Newton and MGDCM path
 following under force control, folding by crease actuation, time integration (implicit and explicit),
-and the linearised stiffness. Each path solver returns a
+the linearised stiffness, and the exact sensitivities of equilibria and paths to the
+elements' parameters. Each path solver returns a
 :class:`PathResult`; a solver that stops early says so (``completed``, ``message``)."""
 
 from kresling.solvers.displacement_control import solve_displacement_control
@@ -9,7 +10,13 @@ from kresling.solvers.fold import FoldResult, fold, solve_fold
 from kresling.solvers.force_control import solve_force_control, solve_mgdcm
 from kresling.solvers.linear import condensed_stiffness
 from kresling.solvers.path import PathResult
+from kresling.solvers.sensitivity import (EquilibriumSensitivity, Parameter, PathSensitivity,
+                                          equilibrium_gradient, equilibrium_sensitivity,
+                                          parameter_jacobian, parameter_names, path_sensitivity,
+                                          with_parameter)
 
 __all__ = ["PathResult", "solve_displacement_control", "solve_force_control", "solve_mgdcm",
            "condensed_stiffness", "solve_fold", "fold", "FoldResult", "solve_dynamics", "TimeHistory",
-           "stable_time_step", "StableStep"]
+           "stable_time_step", "StableStep", "Parameter", "parameter_names", "parameter_jacobian",
+           "with_parameter", "EquilibriumSensitivity", "equilibrium_sensitivity",
+           "equilibrium_gradient", "PathSensitivity", "path_sensitivity"]

@@ -66,9 +66,23 @@ class DesignOptimum:
     evaluations: int
 
 
+#: The metric columns with exact derivatives (kresling.analyses.design_gradient): column ->
+#: (the test, its protocol, the quantity it reads).
+EXACT_COLUMNS = {
+    "kb_ratio": ("bending", "0.001rad", "kb_ratio"),
+    "kb_ext": ("bending", "0.001rad", "kb_extended"),
+    "kb_con": ("bending", "0.001rad", "kb_contracted"),
+    "kb_ratio_5mm": ("bending", "5mm", "kb_ratio"),
+    "kb_ext_5mm": ("bending", "5mm", "kb_extended"),
+    "kb_con_5mm": ("bending", "5mm", "kb_contracted"),
+    "snap_force": ("snap", None, "snap_force"),
+    "energy_barrier": ("snap", None, "energy_barrier"),
+}
+
+
 def optimize_design(n, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, R=30.0,
                     constraints=None, start_grid=5, workers=None,
-                    parameters=None) -> DesignOptimum:
+                    parameters=None, gradient="exact") -> DesignOptimum:
     """Maximise ``metric`` over Lc x lambda for one n.
 
     Parameters
@@ -91,6 +105,12 @@ def optimize_design(n, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, R=30.0,
     parameters : SpecimenParameters, optional
         The specimens' material and model (the thesis's by default; see
         :func:`~kresling.sweeps.sweep`).
+    gradient : {"exact", "differences"}, default "exact"
+        How SLSQP gets its gradients: "exact" differentiates the tests themselves
+        (:func:`~kresling.analyses.design_gradient`; for the columns of
+        :data:`EXACT_COLUMNS`, the values and gradients of one run each, Newton converged
+        to 1e-10 mm); "differences", or any other column, by forward differences of step
+        1e-4 in the unit box. The optimum's ``values`` are the metrics' own either way.
 
     Returns
     -------
@@ -134,11 +154,25 @@ def optimize_design(n, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, R=30.0,
         v = values(u)
         return -math.log(v[metric]) if v and v[metric] > 0 else 1e3
 
+    if gradient not in ("exact", "differences"):
+        raise ValueError(f"gradient = {gradient!r} is invalid: must be 'exact' or 'differences'")
+    exact = gradient == "exact" and all(c in EXACT_COLUMNS for c in [metric, *constraints])
     start = _start(grid, metrics, metric, constraints, workers, parameters)
-    result = optimize.minimize(
-        objective, (start - low) / (high - low), method="SLSQP", bounds=[(0, 1), (0, 1)],
-        constraints=_slsqp_constraints(values, constraints),
-        options={"eps": _STEP, "ftol": 1e-9, "maxiter": 100})
+    if exact:
+        evaluate = _ExactEvaluation(n, R, low, high, design_point, [metric, *constraints],
+                                    parameters)
+        result = optimize.minimize(
+            evaluate.objective(metric), (start - low) / (high - low), jac=True,
+            method="SLSQP", bounds=[(0, 1), (0, 1)],
+            constraints=evaluate.constraints(constraints),
+            options={"ftol": 1e-9, "maxiter": 100})
+        evaluations = evaluate.count
+    else:
+        result = optimize.minimize(
+            objective, (start - low) / (high - low), method="SLSQP", bounds=[(0, 1), (0, 1)],
+            constraints=_slsqp_constraints(values, constraints),
+            options={"eps": _STEP, "ftol": 1e-9, "maxiter": 100})
+        evaluations = None
     u = np.clip(result.x, 0, 1)
     best = values(u)
     Lc_, lam_ = design_point(u)
@@ -151,7 +185,7 @@ def optimize_design(n, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, R=30.0,
         value=best[metric] if best else math.nan, values=best or {},
         active=_active(u, best, constraints), success=bool(converged and feasible),
         message=result.message if feasible else f"{result.message}; constraints not met",
-        evaluations=len(cache))
+        evaluations=len(cache) if evaluations is None else evaluations)
 
 
 def _metrics_for(columns):
@@ -228,3 +262,86 @@ def _active(u, values, constraints, tol=1e-6) -> tuple:
             if close:
                 names.append(f"{column} {end}")
     return tuple(names)
+
+
+class _ExactEvaluation:
+    """Values and exact gradients of metric columns in the unit box, one design at a time
+    (cached: SLSQP asks for the objective and each constraint at the same point)."""
+
+    def __init__(self, n, R, low, high, design_point, columns, parameters):
+        self.n, self.R, self.low, self.high = n, R, low, high
+        self.design_point = design_point
+        self.columns = list(dict.fromkeys(columns))
+        self.parameters = parameters
+        self.cache = {}
+        self.count = 0
+
+    def at(self, u):
+        """{column: (value, d/du (2,))} at u, or None where a test fails there."""
+        from kresling.analyses.design_sensitivity import bending_gradient, snap_through_gradient
+
+        key = tuple(np.clip(u, 0.0, 1.0))
+        if key in self.cache:
+            return self.cache[key]
+        Lc_, lam_ = self.design_point(key)
+        design = Design(self.n, float(lam_), float(Lc_), self.R)
+        scale = self.high - self.low  # d(Lc, lam)/du
+        out = {}
+        try:
+            runs = {}
+            for column in self.columns:
+                test, protocol, quantity = EXACT_COLUMNS[column]
+                if (test, protocol) not in runs:
+                    runs[(test, protocol)] = (
+                        _bending_pair(bending_gradient, design, protocol, self.parameters)
+                        if test == "bending" else
+                        snap_through_gradient(design, parameters=self.parameters,
+                                              variables=("Lc", "lam")))
+                value, grad = runs[(test, protocol)][quantity]
+                out[column] = (value, np.array([grad["Lc"], grad["lam"]]) * scale)
+        except ValueError as error:
+            logger.info("design Lc = %g, lam = %g: %s", Lc_, lam_, error)
+            out = None
+        self.count += 1
+        self.cache[key] = out
+        return out
+
+    def objective(self, metric):
+        def f(u):
+            v = self.at(u)
+            if not v or not v[metric][0] > 0:
+                return 1e3, np.zeros(2)
+            value, grad = v[metric]
+            return -math.log(value), -grad / value
+        return f
+
+    def constraints(self, constraints) -> list:
+        out = []
+        for column, (lo, hi) in constraints.items():
+            for bound, sign in ((lo, 1.0), (hi, -1.0)):
+                if bound is None:
+                    continue
+                scale = max(abs(bound), 1e-12)
+
+                def g(u, column=column, bound=bound, sign=sign, scale=scale):
+                    v = self.at(u)
+                    return sign * (v[column][0] - bound) / scale if v else -1.0
+
+                def dg(u, column=column, sign=sign, scale=scale):
+                    v = self.at(u)
+                    return sign * v[column][1] / scale if v else np.zeros(2)
+
+                out.append({"type": "ineq", "fun": g, "jac": dg})
+        return out
+
+
+def _bending_pair(bending_gradient, design, protocol, parameters) -> dict:
+    """K_B of both states and their ratio, each (value, {variable: derivative})."""
+    variables = ("Lc", "lam")
+    k_ext, g_ext = bending_gradient(design, 1, protocol, parameters=parameters,
+                                    variables=variables)
+    k_con, g_con = bending_gradient(design, 0, protocol, parameters=parameters,
+                                    variables=variables)
+    ratio = {v: (g_ext[v] * k_con - k_ext * g_con[v]) / k_con ** 2 for v in variables}
+    return {"kb_extended": (k_ext, g_ext), "kb_contracted": (k_con, g_con),
+            "kb_ratio": (k_ext / k_con, ratio)}

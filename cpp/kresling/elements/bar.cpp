@@ -45,4 +45,26 @@ BarResponse bar_response(const Vector3& x1, const Vector3& x2, double area, doub
   return r;
 }
 
+BarParameterDerivatives bar_parameter_derivatives(const Vector3& x1, const Vector3& x2,
+                                                  double area, double rest_length,
+                                                  const BarLaw& law) {
+  const double L = rest_length, L2 = L * L;
+  const double l2 = (x2 - x1).squaredNorm();
+  const double strain = (l2 - L2) / (2.0 * L2);
+  const double stretch = std::sqrt(l2) / L;
+  const StressResponse s = law.evaluate(strain, stretch);
+  const StressResponse unit = BarLaw{law.kind, 1.0}.evaluate(strain, stretch);
+  const Vector6 g = bar_strain_gradient(x1, x2, L);
+  const double strain_by_length = -l2 / (L2 * L);  // dE/dL at fixed positions
+  BarParameterDerivatives r;
+  r.force_area = (L * s.stress) * g;
+  r.energy_area = L * s.energy_density;
+  r.force_modulus = (area * L * unit.stress) * g;
+  r.energy_modulus = area * L * unit.energy_density;
+  // g L^2 = [-d, d]: the force (A S / L) [-d, d] differentiated in L through S and 1/L.
+  r.force_rest_length = (-area * (s.modulus * l2 / L2 + s.stress)) * g;
+  r.energy_rest_length = area * s.energy_density + area * L * s.stress * strain_by_length;
+  return r;
+}
+
 }  // namespace kresling::elements

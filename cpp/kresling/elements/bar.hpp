@@ -33,4 +33,24 @@ struct BarResponse {
 BarResponse bar_response(const Vector3& x1, const Vector3& x2, double area, double rest_length,
                          const BarLaw& law, bool with_stiffness = true);
 
+/// The partial derivatives of one bar's force and energy with respect to its parameters,
+/// at fixed positions. With g = dE/dx = [-d, d] / L^2 (d = x2 - x1, l = |d|), the force is
+/// f = A L S(E) g = (A S / L) [-d, d], linear in the area and in the modulus (both laws'
+/// S and W are C0 times a function of the strain), and dE/dL = -l^2 / L^3:
+///
+///     df/dA  = L S g                          dW_bar/dA  = L W
+///     df/dC0 = A L S1 g                       dW_bar/dC0 = A L W1      (S1, W1: C0 = 1)
+///     df/dL  = -(A / L^2) (C l^2 / L^2 + S) [-d, d]
+///                                             dW_bar/dL  = A W + A L S dE/dL
+///
+/// with C = dS/dE. Vectors of 6, ordered (x1, x2).
+struct BarParameterDerivatives {
+  Vector6 force_area, force_modulus, force_rest_length;
+  double energy_area = 0.0, energy_modulus = 0.0, energy_rest_length = 0.0;
+};
+
+BarParameterDerivatives bar_parameter_derivatives(const Vector3& x1, const Vector3& x2,
+                                                  double area, double rest_length,
+                                                  const BarLaw& law);
+
 }  // namespace kresling::elements

@@ -67,4 +67,22 @@ CableResponse cable_response(const CablePoints& x, double stiffness, double rest
   return r;
 }
 
+CableParameterDerivatives cable_parameter_derivatives(const CablePoints& x, double stiffness,
+                                                      double rest_length) {
+  const Index dofs = 3 * x.rows();
+  const double L = rest_length, L2 = L * L;
+  const double l = cable_length(x);
+  const double strain = (l * l - L2) / (2.0 * L2);
+  CableParameterDerivatives r;
+  r.force_stiffness = VectorX::Zero(dofs);
+  r.force_rest_length = VectorX::Zero(dofs);
+  if (!(strain > 0.0)) return r;  // slack: no force or energy to change
+  const VectorX g = cable_length_gradient(x);
+  r.force_stiffness = (strain * l / L) * g;
+  r.energy_stiffness = 0.5 * L * strain * strain;
+  r.force_rest_length = (-stiffness * l * (l * l / (L2 * L2) + strain / L2)) * g;
+  r.energy_rest_length = stiffness * strain * (0.5 * strain - l * l / L2);
+  return r;
+}
+
 }  // namespace kresling::elements

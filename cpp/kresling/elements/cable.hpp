@@ -66,4 +66,19 @@ struct CableResponse {
 CableResponse cable_response(const CablePoints& x, double stiffness, double rest_length,
                              bool with_stiffness = true);
 
+/// The partial derivatives of one cable's force and energy with respect to its rigidity EA
+/// and rest length L, at fixed positions (zero when slack). With T = EA E l / L and
+/// dE/dL = -l^2 / L^3:
+///
+///     df/dEA = (E l / L) dl/dx                 dW/dEA = L E^2 / 2
+///     df/dL  = -EA l (l^2 / L^4 + E / L^2) dl/dx
+///                                              dW/dL  = EA E (E / 2 - l^2 / L^2)
+struct CableParameterDerivatives {
+  VectorX force_stiffness, force_rest_length;  ///< 3 k each
+  double energy_stiffness = 0.0, energy_rest_length = 0.0;
+};
+
+CableParameterDerivatives cable_parameter_derivatives(const CablePoints& x, double stiffness,
+                                                      double rest_length);
+
 }  // namespace kresling::elements

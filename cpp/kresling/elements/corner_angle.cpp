@@ -69,6 +69,7 @@ CornerAngleResponse corner_angle_response(const Vector3& x0, const Vector3& x1,
     g.segment<3>(3 * s) = c.dw;
     g.segment<3>(3 * p) = -(c.du + c.dw);
     r.force += k * excess * g;
+    r.gradients[i] = g;
     if (!with_tangent) continue;
     Matrix9 h = Matrix9::Zero();
     h.block<3, 3>(3 * q, 3 * q) = c.uu;

@@ -42,6 +42,9 @@ struct CornerAngleResponse {
   std::array<double, 3> angle{};          ///< alpha_0, alpha_1, alpha_2 [rad]
   Vector9 force = Vector9::Zero();        ///< dE/dx over (x0, x1, x2) [N]
   Matrix9 stiffness = Matrix9::Zero();    ///< d2E/dx2 [N/mm]
+  /// d alpha_i / dx over (x0, x1, x2): the force is k sum_i (alpha_i - alpha0_i) gradients[i],
+  /// so dE/dalpha0_i = -k (alpha_i - alpha0_i) and d force / d alpha0_i = -k gradients[i].
+  std::array<Vector9, 3> gradients{};
 };
 
 /// The corner springs of stiffness `k` [N mm/rad^2] of triangle (x0, x1, x2) resting at

@@ -26,4 +26,24 @@ HingeResponse hinge_response(const Vector3& a, const Vector3& b, const Vector3& 
                              const SpringLaw& law, bool with_stiffness = true,
                              DihedralForm form = DihedralForm::Exact);
 
+/// The partial derivatives of one hinge's force and energy with respect to its parameters,
+/// at fixed positions. The force is f = L0 M(theta; theta0, kp) dtheta/dx, and every law's
+/// moment and energy are kp times a function of theta (and the limits), so
+///
+///     df/dkp     = L0 M1 dtheta/dx              dE/dkp     = L0 E1     (M1, E1: kp = 1)
+///     df/dtheta0 = L0 dM/dtheta0 dtheta/dx      dE/dtheta0 = L0 dE/dtheta0 of the law
+///     df/dL0     = M dtheta/dx                  dE/dL0     = E
+///
+/// (SpringLaw::rest_angle_derivative). Vectors of 12, ordered (a, b, c, d).
+struct HingeParameterDerivatives {
+  Vector12 force_stiffness, force_rest_angle, force_length;
+  double energy_stiffness = 0.0, energy_rest_angle = 0.0, energy_length = 0.0;
+};
+
+HingeParameterDerivatives hinge_parameter_derivatives(const Vector3& a, const Vector3& b,
+                                                      const Vector3& c, const Vector3& d,
+                                                      double kp, double rest_angle, double length,
+                                                      const SpringLaw& law,
+                                                      DihedralForm form = DihedralForm::Exact);
+
 }  // namespace kresling::elements

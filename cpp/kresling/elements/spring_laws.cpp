@@ -69,6 +69,16 @@ SpringResponse SpringLaw::evaluate(double theta, double theta0, double kp) const
   }
 }
 
+RestAngleDerivative SpringLaw::rest_angle_derivative(double theta, double theta0,
+                                                    double kp) const {
+  const double d = theta - theta0;
+  if (kind == SpringLawKind::SuperLinearBend) {
+    const double root = std::cbrt(std::abs(d));
+    return {-4.0 / 3.0 * kp * root, -(d < 0 ? -1.0 : 1.0) * kp * std::abs(d) * root};
+  }
+  return {-kp, -kp * d};
+}
+
 SpringLawKind spring_law_kind(long long code, const char* name) {
   if (code < static_cast<long long>(SpringLawKind::Linear) ||
       code > static_cast<long long>(SpringLawKind::SuperLinearBend)) {

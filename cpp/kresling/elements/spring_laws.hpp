@@ -24,12 +24,26 @@ enum class SpringLawKind : int {
 /// for any other number.
 SpringLawKind spring_law_kind(long long code, const char* name);
 
+/// The derivatives of a law's moment and energy with respect to its rest angle. The linear
+/// and enhanced-linear laws are kp (theta - theta0) plus terms free of theta0 (the
+/// stiffening beyond the limits depends on theta and the limits only), so
+/// dM/dtheta0 = -kp and dE/dtheta0 = -kp (theta - theta0) everywhere in their domain (the
+/// energy is the integral of M from theta0, and M(theta0) = 0). The super-linear law is a
+/// function of d = theta - theta0: dM/dtheta0 = -4/3 kp |d|^(1/3) (the exact derivative,
+/// not the floored stiffness evaluate() reports) and dE/dtheta0 = -M.
+struct RestAngleDerivative {
+  double moment = 0.0;  ///< dM/dtheta0
+  double energy = 0.0;  ///< dE/dtheta0
+};
+
 struct SpringLaw {
   SpringLawKind kind = SpringLawKind::EnhancedLinear;
   double theta1 = 0.0;  ///< lower limit of the linear range, 0 < theta1 < theta0
   double theta2 = 0.0;  ///< upper limit of the linear range, theta0 < theta2 < 2 pi
 
   SpringResponse evaluate(double theta, double theta0, double kp) const;
+  /// dM/dtheta0 and d(energy)/dtheta0 at theta (per unit hinge length).
+  RestAngleDerivative rest_angle_derivative(double theta, double theta0, double kp) const;
 };
 
 /// Linear law.

@@ -93,4 +93,43 @@ FamilyPtr BarFamily::from_table(const Table& t) {
   return std::make_shared<BarFamily>(std::move(bars));
 }
 
+std::vector<std::string> BarFamily::parameters() const { return {"area", "rest_length", "modulus"}; }
+
+void BarFamily::parameter_derivative(const NodeMatrix& X, const VectorX& u, const std::string& name,
+                                     ParameterDerivative& out) const {
+  if (name != "area" && name != "rest_length" && name != "modulus") throw_unknown_parameter(*this, name);
+  out.reset(static_cast<Index>(bars_.size()));
+  for (std::size_t e = 0; e < bars_.size(); ++e) {
+    const Bar& bar = bars_[e];
+    const auto d = elements::bar_parameter_derivatives(position(X, u, bar.nodes[0]),
+                                                       position(X, u, bar.nodes[1]), bar.area,
+                                                       bar.rest_length, bar.law);
+    const auto dofs = node_dofs(bar.nodes);
+    const auto entry = static_cast<Index>(e);
+    if (name == "area") out.add(entry, d.force_area, dofs, d.energy_area);
+    else if (name == "modulus") out.add(entry, d.force_modulus, dofs, d.energy_modulus);
+    else out.add(entry, d.force_rest_length, dofs, d.energy_rest_length);
+  }
+}
+
+void BarFamily::reference_geometry_derivative(
+    const NodeMatrix& X, const std::string& name,
+    std::vector<ParameterDerivative::Triplet>& out) const {
+  if (name != "area" && name != "rest_length" && name != "modulus") throw_unknown_parameter(*this, name);
+  if (name != "rest_length") return;  // a section and a material are not geometry
+  for (std::size_t e = 0; e < bars_.size(); ++e) {
+    const Bar& bar = bars_[e];
+    const Vector3 d = X.row(bar.nodes[1]) - X.row(bar.nodes[0]);
+    const double length = d.norm();
+    if (length == 0.0 || !holds_reference_geometry(bar.rest_length, length)) continue;
+    // dL/dX = [-n, n] with n the unit vector from the first node to the second.
+    const Vector3 n = d / length;
+    const auto entry = static_cast<int>(e);
+    for (int k = 0; k < 3; ++k) {
+      out.emplace_back(entry, static_cast<int>(3 * bar.nodes[0] + k), -n[k]);
+      out.emplace_back(entry, static_cast<int>(3 * bar.nodes[1] + k), n[k]);
+    }
+  }
+}
+
 }  // namespace kresling::model

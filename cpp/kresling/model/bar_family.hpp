@@ -3,6 +3,7 @@
 /// Axial bars between two nodes (kernel: elements/bar.hpp).
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "kresling/elements/bar_laws.hpp"
@@ -33,6 +34,11 @@ class BarFamily final : public ElementFamily {
   double assemble(const NodeMatrix& X, const VectorX& u, AssemblyTarget& target) const override;
   void add_state(const NodeMatrix& x, ElementState& state) const override;
   Table table() const override;
+  std::vector<std::string> parameters() const override;
+  void parameter_derivative(const NodeMatrix& X, const VectorX& u, const std::string& name,
+                            ParameterDerivative& out) const override;
+  void reference_geometry_derivative(const NodeMatrix& X, const std::string& name,
+                                     std::vector<ParameterDerivative::Triplet>& out) const override;
 
  private:
   std::vector<Bar> bars_;

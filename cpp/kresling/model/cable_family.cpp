@@ -114,4 +114,21 @@ FamilyPtr CableFamily::from_table(const Table& t) {
   return std::make_shared<CableFamily>(std::move(cables));
 }
 
+std::vector<std::string> CableFamily::parameters() const { return {"stiffness", "rest_length"}; }
+
+void CableFamily::parameter_derivative(const NodeMatrix& X, const VectorX& u,
+                                       const std::string& name, ParameterDerivative& out) const {
+  if (name != "stiffness" && name != "rest_length") throw_unknown_parameter(*this, name);
+  out.reset(static_cast<Index>(cables_.size()));
+  for (std::size_t e = 0; e < cables_.size(); ++e) {
+    const Cable& c = cables_[e];
+    const auto d = elements::cable_parameter_derivatives(cable_points(c, X, &u), c.stiffness,
+                                                         c.rest_length);
+    const auto dofs = node_dofs(c.nodes);
+    const auto entry = static_cast<Index>(e);
+    if (name == "stiffness") out.add(entry, d.force_stiffness, dofs, d.energy_stiffness);
+    else out.add(entry, d.force_rest_length, dofs, d.energy_rest_length);
+  }
+}
+
 }  // namespace kresling::model

@@ -2,6 +2,7 @@
 /// \file cable_family.hpp
 /// Sliding cables (tendons) through guide nodes, tension only (kernel: elements/cable.hpp).
 
+#include <string>
 #include <vector>
 
 #include "kresling/model/element_family.hpp"
@@ -34,6 +35,9 @@ class CableFamily final : public ElementFamily {
   double assemble(const NodeMatrix& X, const VectorX& u, AssemblyTarget& target) const override;
   void add_state(const NodeMatrix& x, ElementState& state) const override;
   Table table() const override;
+  std::vector<std::string> parameters() const override;
+  void parameter_derivative(const NodeMatrix& X, const VectorX& u, const std::string& name,
+                            ParameterDerivative& out) const override;
 
  private:
   std::vector<Cable> cables_;

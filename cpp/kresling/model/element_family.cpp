@@ -70,4 +70,23 @@ void require_element_nodes(const ElementFamily& family, std::size_t e, const Ind
   }
 }
 
+void ElementFamily::parameter_derivative(const NodeMatrix& /*X*/, const VectorX& /*u*/,
+                                         const std::string& name,
+                                         ParameterDerivative& /*out*/) const {
+  throw_unknown_parameter(*this, name);
+}
+
+void throw_unknown_parameter(const ElementFamily& family, const std::string& name) {
+  const std::vector<std::string> known = family.parameters();
+  std::string message = "element family '" + std::string(family.name()) + "' has no parameter '" +
+                        name + "'";
+  if (known.empty()) {
+    message += ": it has none to differentiate by";
+  } else {
+    message += ": must be one of ";
+    for (std::size_t i = 0; i < known.size(); ++i) message += (i ? ", " : "") + known[i];
+  }
+  throw std::invalid_argument(message);
+}
+
 }  // namespace kresling::model

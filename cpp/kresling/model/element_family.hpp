@@ -20,6 +20,7 @@
 
 #include "kresling/core/types.hpp"
 #include "kresling/model/family_table.hpp"
+#include "kresling/model/parameter_derivative.hpp"
 
 namespace kresling::model {
 
@@ -125,6 +126,25 @@ class ElementFamily {
                                ActiveElements& out) const {
     out = ActiveElements{};
   }
+  /// The real columns of table() this family differentiates by (parameter_derivative):
+  /// its elements' physical parameters. None by default (contact barriers: their stiffness
+  /// and distance are numerical, not a design's).
+  virtual std::vector<std::string> parameters() const { return {}; }
+  /// The partial derivatives of the force and energy at X + u with respect to the column
+  /// `name` of parameters() (parameter_derivative.hpp); `out` is reset first. Throws
+  /// std::invalid_argument naming the family and the parameters it has for any other name.
+  virtual void parameter_derivative(const NodeMatrix& X, const VectorX& u, const std::string& name,
+                                    ParameterDerivative& out) const;
+  /// The derivative of the column `name`'s entries with respect to the reference positions
+  /// X, for the entries that hold the reference geometry. A model built stress-free in X (a
+  /// bar's rest length its length at X, a hinge's rest angle its angle at X) stays so when X
+  /// moves, so those entries move with X; an entry set to anything else (a fold's target
+  /// angle, a cable's pulled length, a stiffness) does not. Appends triplets (entry, DOF of
+  /// X, d theta_entry / d X_DOF). Nothing by default: no column follows the geometry.
+  virtual void reference_geometry_derivative(const NodeMatrix& X, const std::string& name,
+                                             std::vector<ParameterDerivative::Triplet>& out) const {
+    (void)X, (void)name, (void)out;
+  }
   /// The name of element e in messages ("bar 3 (nodes 1, 2)").
   std::string element_name(std::size_t e) const;
 };
@@ -174,5 +194,8 @@ void require_element_positive(const ElementFamily& family, std::size_t e, const 
 /// is out of [0, num_nodes) or appears twice.
 void require_element_nodes(const ElementFamily& family, std::size_t e, const Index* nodes,
                            int count, Index num_nodes);
+
+/// Throws std::invalid_argument: `name` is not one of family's parameters().
+[[noreturn]] void throw_unknown_parameter(const ElementFamily& family, const std::string& name);
 
 }  // namespace kresling::model

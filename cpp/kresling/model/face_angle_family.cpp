@@ -108,4 +108,65 @@ FamilyPtr FaceAngleFamily::from_table(const Table& t) {
   return std::make_shared<FaceAngleFamily>(std::move(faces));
 }
 
+std::vector<std::string> FaceAngleFamily::parameters() const { return {"rest_angle", "stiffness"}; }
+
+void FaceAngleFamily::parameter_derivative(const NodeMatrix& X, const VectorX& u,
+                                           const std::string& name,
+                                           ParameterDerivative& out) const {
+  if (name != "rest_angle" && name != "stiffness") throw_unknown_parameter(*this, name);
+  const bool rest = name == "rest_angle";
+  out.reset(static_cast<Index>((rest ? 3 : 1) * faces_.size()));
+  for (std::size_t e = 0; e < faces_.size(); ++e) {
+    const FaceAngles& f = faces_[e];
+    const auto r = elements::corner_angle_response(position(X, u, f.nodes[0]),
+                                                   position(X, u, f.nodes[1]),
+                                                   position(X, u, f.nodes[2]), f.rest_angle,
+                                                   f.stiffness, /*with_tangent=*/false);
+    const auto dofs = node_dofs(f.nodes);
+    if (!rest) {
+      // E and f are k times a function of the positions.
+      elements::Vector9 unit = elements::Vector9::Zero();
+      double energy = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        const double excess = r.angle[i] - f.rest_angle[i];
+        unit += excess * r.gradients[i];
+        energy += 0.5 * excess * excess;
+      }
+      out.add(static_cast<Index>(e), unit, dofs, energy);
+      continue;
+    }
+    for (int i = 0; i < 3; ++i) {
+      const elements::Vector9 local = -f.stiffness * r.gradients[i];
+      out.add(static_cast<Index>(3 * e + i), local, dofs,
+              -f.stiffness * (r.angle[i] - f.rest_angle[i]));
+    }
+  }
+}
+
+void FaceAngleFamily::reference_geometry_derivative(
+    const NodeMatrix& X, const std::string& name,
+    std::vector<ParameterDerivative::Triplet>& out) const {
+  if (name != "rest_angle" && name != "stiffness") throw_unknown_parameter(*this, name);
+  if (name != "rest_angle") return;
+  const VectorX still = VectorX::Zero(3 * X.rows());
+  for (std::size_t e = 0; e < faces_.size(); ++e) {
+    const FaceAngles& f = faces_[e];
+    const auto r = elements::corner_angle_response(position(X, still, f.nodes[0]),
+                                                   position(X, still, f.nodes[1]),
+                                                   position(X, still, f.nodes[2]), f.rest_angle,
+                                                   f.stiffness, /*with_tangent=*/false);
+    for (int i = 0; i < 3; ++i) {
+      if (!holds_reference_geometry(f.rest_angle[i], r.angle[i])) continue;
+      for (int a = 0; a < 3; ++a) {
+        for (int k = 0; k < 3; ++k) {
+          const double v = r.gradients[i][3 * a + k];
+          if (v != 0.0) {
+            out.emplace_back(static_cast<int>(3 * e + i), static_cast<int>(3 * f.nodes[a] + k), v);
+          }
+        }
+      }
+    }
+  }
+}
+
 }  // namespace kresling::model

@@ -6,6 +6,7 @@
 /// rest angles and one stiffness.
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "kresling/model/element_family.hpp"
@@ -37,6 +38,11 @@ class FaceAngleFamily final : public ElementFamily {
   /// [rad]) and face_angle_energy [N mm].
   void add_state(const NodeMatrix& x, ElementState& state) const override;
   Table table() const override;
+  std::vector<std::string> parameters() const override;
+  void parameter_derivative(const NodeMatrix& X, const VectorX& u, const std::string& name,
+                            ParameterDerivative& out) const override;
+  void reference_geometry_derivative(const NodeMatrix& X, const std::string& name,
+                                     std::vector<ParameterDerivative::Triplet>& out) const override;
 
  private:
   std::vector<FaceAngles> faces_;

@@ -163,4 +163,65 @@ FamilyPtr HingeFamily::from_table(const Table& t) {
   return std::make_shared<HingeFamily>(std::move(hinges));
 }
 
+std::vector<std::string> HingeFamily::parameters() const {
+  return {"stiffness", "rest_angle", "length"};
+}
+
+void HingeFamily::parameter_derivative(const NodeMatrix& X, const VectorX& u,
+                                       const std::string& name, ParameterDerivative& out) const {
+  if (name != "stiffness" && name != "rest_angle" && name != "length") {
+    throw_unknown_parameter(*this, name);
+  }
+  out.reset(static_cast<Index>(hinges_.size()));
+  for (std::size_t e = 0; e < hinges_.size(); ++e) {
+    const Hinge& h = hinges_[e];
+    // A hinge of zero stiffness (a cut) has no force to change by its rest angle or length,
+    // but its stiffness derivative is the unit law's: a cut's crease may be given stiffness.
+    const auto d = elements::hinge_parameter_derivatives(
+        position(X, u, h.nodes[0]), position(X, u, h.nodes[1]), position(X, u, h.nodes[2]),
+        position(X, u, h.nodes[3]), h.stiffness, h.rest_angle, h.length, h.law, h.form);
+    const auto dofs = node_dofs(h.nodes);
+    const auto entry = static_cast<Index>(e);
+    if (name == "stiffness") out.add(entry, d.force_stiffness, dofs, d.energy_stiffness);
+    else if (name == "rest_angle") out.add(entry, d.force_rest_angle, dofs, d.energy_rest_angle);
+    else out.add(entry, d.force_length, dofs, d.energy_length);
+  }
+}
+
+void HingeFamily::reference_geometry_derivative(
+    const NodeMatrix& X, const std::string& name,
+    std::vector<ParameterDerivative::Triplet>& out) const {
+  if (name != "stiffness" && name != "rest_angle" && name != "length") {
+    throw_unknown_parameter(*this, name);
+  }
+  if (name == "stiffness") return;
+  for (std::size_t e = 0; e < hinges_.size(); ++e) {
+    const Hinge& h = hinges_[e];
+    const auto entry = static_cast<int>(e);
+    if (name == "length") {
+      const Vector3 d = X.row(h.nodes[1]) - X.row(h.nodes[0]);
+      const double length = d.norm();
+      if (length == 0.0 || !holds_reference_geometry(h.length, length)) continue;
+      const Vector3 n = d / length;
+      for (int k = 0; k < 3; ++k) {
+        out.emplace_back(entry, static_cast<int>(3 * h.nodes[0] + k), -n[k]);
+        out.emplace_back(entry, static_cast<int>(3 * h.nodes[1] + k), n[k]);
+      }
+      continue;
+    }
+    // The rest angle follows the hinge's own angle at X (in its own form, arccosine or
+    // atan2, as the model that was built stress-free computed it).
+    const auto theta = elements::dihedral_angle_derivatives(X.row(h.nodes[0]), X.row(h.nodes[1]),
+                                                            X.row(h.nodes[2]), X.row(h.nodes[3]),
+                                                            false, h.form);
+    if (!holds_reference_geometry(h.rest_angle, theta.angle)) continue;
+    for (int a = 0; a < 4; ++a) {
+      for (int k = 0; k < 3; ++k) {
+        const double v = theta.gradient[3 * a + k];
+        if (v != 0.0) out.emplace_back(entry, static_cast<int>(3 * h.nodes[a] + k), v);
+      }
+    }
+  }
+}
+
 }  // namespace kresling::model

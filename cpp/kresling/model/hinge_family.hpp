@@ -3,6 +3,7 @@
 /// Rotational-spring hinges on the dihedral angle of four nodes (kernel: elements/hinge.hpp).
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "kresling/elements/dihedral.hpp"
@@ -47,6 +48,11 @@ class HingeFamily final : public ElementFamily {
   double assemble(const NodeMatrix& X, const VectorX& u, AssemblyTarget& target) const override;
   void add_state(const NodeMatrix& x, ElementState& state) const override;
   Table table() const override;
+  std::vector<std::string> parameters() const override;
+  void parameter_derivative(const NodeMatrix& X, const VectorX& u, const std::string& name,
+                            ParameterDerivative& out) const override;
+  void reference_geometry_derivative(const NodeMatrix& X, const std::string& name,
+                                     std::vector<ParameterDerivative::Triplet>& out) const override;
 
  private:
   std::vector<Hinge> hinges_;

@@ -35,7 +35,11 @@ void check_parameters(const SpecimenParameters& p) {
   }
 }
 
-double family_factor(EdgeFamily f, const SpecimenParameters& p) {
+Index node_index(int n, int level, int j) { return static_cast<Index>(level) * (n + 1) + j; }
+
+}  // namespace
+
+double hinge_factor(EdgeFamily f, const SpecimenParameters& p) {
   switch (f) {
     case EdgeFamily::Valley: return p.valley_factor;
     case EdgeFamily::Mountain: return p.mountain_factor;
@@ -44,10 +48,6 @@ double family_factor(EdgeFamily f, const SpecimenParameters& p) {
   }
   return 0.0;
 }
-
-Index node_index(int n, int level, int j) { return static_cast<Index>(level) * (n + 1) + j; }
-
-}  // namespace
 
 KreslingSpecimenBuilder::KreslingSpecimenBuilder(int n, std::vector<int> chirality,
                                                  SpecimenParameters parameters)
@@ -193,7 +193,7 @@ KreslingSpecimen KreslingSpecimenBuilder::build(const geometry::Design& design,
     const auto& h = hinge_nodes[i];
     const double angle = elements::dihedral_angle(X.row(h[0]), X.row(h[1]), X.row(h[2]),
                                                   X.row(h[3]), p.hinge_angle);
-    hinges[i] = {h, family_factor(s.hinge_family[i], p) * p.kf, angle,
+    hinges[i] = {h, hinge_factor(s.hinge_family[i], p) * p.kf, angle,
                  (X.row(h[1]) - X.row(h[0])).norm(), law, p.hinge_angle};
   }
   if (fixed.empty()) fixed.assign(static_cast<std::size_t>(3 * X.rows()), 0);

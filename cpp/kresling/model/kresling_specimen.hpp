@@ -60,6 +60,9 @@ struct SpecimenParameters {
   elements::DihedralForm hinge_angle = elements::DihedralForm::Merlin2;
 };
 
+/// The factor of kf that gives the stiffness of a hinge on an edge of family `f`.
+double hinge_factor(EdgeFamily f, const SpecimenParameters& p);
+
 struct KreslingSpecimen {
   Model model;
   std::vector<EdgeFamily> bar_family;    ///< per bar

@@ -90,4 +90,25 @@ FamilyPtr SpringFamily::from_table(const Table& t) {
   return std::make_shared<SpringFamily>(std::move(springs));
 }
 
+std::vector<std::string> SpringFamily::parameters() const { return {"stiffness", "anchor"}; }
+
+void SpringFamily::parameter_derivative(const NodeMatrix& X, const VectorX& u,
+                                        const std::string& name, ParameterDerivative& out) const {
+  if (name != "stiffness" && name != "anchor") throw_unknown_parameter(*this, name);
+  // E = 1/2 sum_k k_k (x_k - a_k)^2: df_k/dk_k = x_k - a_k, dE/dk_k = (x_k - a_k)^2 / 2;
+  // df_k/da_k = -k_k, dE/da_k = -k_k (x_k - a_k). Entry 3 e + k, as the columns store them.
+  const bool stiffness = name == "stiffness";
+  out.reset(static_cast<Index>(3 * springs_.size()));
+  for (std::size_t e = 0; e < springs_.size(); ++e) {
+    const AnchorSpring& s = springs_[e];
+    const Vector3 stretch = position(X, u, s.node) - s.anchor;
+    for (int k = 0; k < 3; ++k) {
+      const std::array<Index, 1> dof = {3 * s.node + k};
+      const std::array<double, 1> local = {stiffness ? stretch[k] : -s.stiffness[k]};
+      const double energy = stiffness ? 0.5 * stretch[k] * stretch[k] : -s.stiffness[k] * stretch[k];
+      out.add(static_cast<Index>(3 * e + k), local, dof, energy);
+    }
+  }
+}
+
 }  // namespace kresling::model

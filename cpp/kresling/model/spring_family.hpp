@@ -3,6 +3,7 @@
 /// Zero-length springs tying nodes to fixed points, per axis (kernel:
 /// elements/anchor_spring.hpp).
 
+#include <string>
 #include <vector>
 
 #include "kresling/model/element_family.hpp"
@@ -30,6 +31,9 @@ class SpringFamily final : public ElementFamily {
   double assemble(const NodeMatrix& X, const VectorX& u, AssemblyTarget& target) const override;
   void add_state(const NodeMatrix& x, ElementState& state) const override;
   Table table() const override;
+  std::vector<std::string> parameters() const override;
+  void parameter_derivative(const NodeMatrix& X, const VectorX& u, const std::string& name,
+                            ParameterDerivative& out) const override;
   /// A DOF whose spring stiffness is positive is held near its anchor.
   void mark_grounded_dofs(std::vector<std::uint8_t>& grounded) const override;
 

@@ -1,0 +1,87 @@
+#pragma once
+/// \file sensitivity.hpp
+/// The sensitivity of an equilibrium to parameters, from its tangent.
+///
+/// At an equilibrium r(u, p) = f_int(u, p) - f_ext = 0 with the held DOFs c (supports, and
+/// the DOFs a displacement control prescribes) at given values, the free DOFs f satisfy
+/// r_f = 0 for every p. Differentiating,
+///
+///     K_ff du_f/dp = -(d r_f/dp + K_fc du_c/dp)            (direct: one solve per parameter)
+///     d f_c/dp     = d f_int,c/dp + K_cf du_f/dp + K_cc du_c/dp   (the held DOFs' forces)
+///
+/// with K the tangent d f_int/du (exact, unshifted: the equilibrium is that of f_int) and
+/// d r/dp the partial derivative at fixed u (assembly/parameter_jacobian.hpp, minus any
+/// change of the applied loads). For a scalar J(u, p) the adjoint gives every parameter's
+/// derivative with one solve:
+///
+///     K_ff lambda = dJ/du_f,    dJ/dp = dJ/dp|_u - lambda^T (d r_f/dp + K_fc du_c/dp)
+///                                       + dJ/du_c du_c/dp.
+///
+/// K_ff is factorised once per state (tangent_solver.hpp), and the states of a path reuse
+/// one assembly workspace and one symbolic analysis (update()). It must be nonsingular: at
+/// a limit or bifurcation point the derivative of the state does not exist (a path's limit
+/// load has its own derivative, which the analyses give).
+
+#include <memory>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "kresling/assembly/assembler.hpp"
+#include "kresling/assembly/workspace.hpp"
+#include "kresling/core/types.hpp"
+#include "kresling/model/model.hpp"
+#include "kresling/solvers/tangent_solver.hpp"
+
+namespace kresling::solvers {
+
+class EquilibriumSensitivity {
+ public:
+  /// Factorise the tangent of `model` at u with its supports and the DOFs `held` (each in
+  /// range, not supported, listed once; throws std::invalid_argument otherwise) held.
+  EquilibriumSensitivity(const model::Model& model, const VectorX& u, const std::vector<Index>& held);
+
+  EquilibriumSensitivity(const EquilibriumSensitivity&) = delete;
+  EquilibriumSensitivity& operator=(const EquilibriumSensitivity&) = delete;
+
+  /// Factorise again at another state u of the same model (the next step of a path): the
+  /// workspace and the symbolic analysis are reused.
+  void update(const VectorX& u);
+
+  /// False when K_ff is singular (then every solve throws std::runtime_error).
+  bool ok() const { return info_.ok; }
+  /// Negative eigenvalues of K_ff (0: a stable equilibrium; -1: unknown).
+  int negative_eigenvalues() const { return info_.negative_eigenvalues; }
+  /// Every held DOF: the model's supports in DOF order, then `held` in its order.
+  const std::vector<Index>& held_dofs() const { return held_dofs_; }
+  /// The tangent d f_int/du at the state (3N x 3N, symmetric, unshifted).
+  const SparseMatrix& tangent() const { return K_; }
+  /// The internal force f_int at the state (3N).
+  const VectorX& internal_force() const { return force_; }
+
+  /// du/dp, 3N x P, for the residual's partial derivatives `dresidual` (3N x P) and the
+  /// held DOFs' motion `held_motion` (held_dofs().size() x P; empty: they do not move).
+  Eigen::MatrixXd displacement(const Eigen::MatrixXd& dresidual,
+                               const Eigen::MatrixXd& held_motion = Eigen::MatrixXd()) const;
+  /// d f_int/dp at the held DOFs (held_dofs().size() x P): the internal-force partials
+  /// `dforce` (3N x P) plus the tangent along `du` (3N x P, from displacement()).
+  Eigen::MatrixXd held_force(const Eigen::MatrixXd& dforce, const Eigen::MatrixXd& du) const;
+  /// The adjoint lambda (3N, zero at the held DOFs) of K_ff lambda = g_f.
+  VectorX adjoint(const VectorX& g) const;
+
+ private:
+  void require_ok() const;
+
+  model::Model model_;                           // the assembler binds to this copy
+  std::unique_ptr<assembly::Assembler> assembler_;
+  SparseMatrix K_;
+  VectorX force_;
+  std::vector<Index> held_dofs_;
+  std::vector<Index> free_row_;  // per DOF: its row in K_ff, or -1 if held
+  std::vector<Index> free_dofs_;
+  std::unique_ptr<TangentSolver> solver_;
+  SparseMatrix Kff_;  // the last factorised K_ff: a new pattern needs a new analysis
+  FactorizeInfo info_;
+};
+
+}  // namespace kresling::solvers
