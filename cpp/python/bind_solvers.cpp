@@ -225,6 +225,43 @@ void bind_equilibrium_sensitivity(py::module_& m) {
            py::arg("du"), py::call_guard<py::gil_scoped_release>())
       .def("adjoint", &solvers::EquilibriumSensitivity::adjoint, py::arg("g"),
            py::call_guard<py::gil_scoped_release>());
+  m.def(
+      "path_sensitivity",
+      [](const model::Model& model, const std::vector<VectorX>& states,
+         const std::vector<double>& fractions, const std::vector<Index>& held,
+         const Eigen::MatrixXd& positions, const std::vector<py::tuple>& columns,
+         const Eigen::MatrixXd& drive) {
+        std::vector<solvers::ColumnMotion> motions;
+        for (const py::tuple& c : columns) {
+          motions.push_back({c[0].cast<std::string>(), c[1].cast<std::string>(),
+                             c[2].cast<Eigen::MatrixXd>()});
+        }
+        solvers::PathSensitivityResult r;
+        {
+          py::gil_scoped_release release;
+          r = solvers::path_sensitivity(model, states, fractions, held, positions, motions, drive);
+        }
+        // (S, rows, P) arrays, row-major, from the per-state column-major matrices.
+        auto stack = [](const std::vector<Eigen::MatrixXd>& blocks, py::ssize_t rows,
+                        py::ssize_t cols) {
+          py::array_t<double> out({static_cast<py::ssize_t>(blocks.size()), rows, cols});
+          auto a = out.mutable_unchecked<3>();
+          for (py::ssize_t k = 0; k < static_cast<py::ssize_t>(blocks.size()); ++k) {
+            for (py::ssize_t i = 0; i < rows; ++i) {
+              for (py::ssize_t j = 0; j < cols; ++j) a(k, i, j) = blocks[k](i, j);
+            }
+          }
+          return out;
+        };
+        const py::ssize_t P = r.energy.cols();
+        return py::make_tuple(r.held_dofs, stack(r.displacement, model.num_dofs(), P),
+                              stack(r.held_force, static_cast<py::ssize_t>(r.held_dofs.size()), P),
+                              r.energy);
+      },
+      py::arg("model"), py::arg("states"), py::arg("fractions"), py::arg("held"),
+      py::arg("positions"), py::arg("columns"), py::arg("drive"),
+      "(held_dofs, du/dp (S, 3N, P), held forces' derivatives (S, H, P), dE/dp (S, P)) of a "
+      "path's states");
 }
 
 }  // namespace

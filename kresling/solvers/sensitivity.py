@@ -344,14 +344,6 @@ def _factorised(model, u, held):
     return s
 
 
-def _refactorised(s, u):
-    s.update(u)
-    if not s.ok:
-        raise ValueError("the tangent at this state is singular (a limit or bifurcation point, "
-                         "or a mechanism the supports leave free): it has no derivative")
-    return s
-
-
 def equilibrium_sensitivity(model, u, parameters, *, held=None, load_derivative=None):
     """Direct sensitivity of an equilibrium: one solve per parameter on one factorisation.
 
@@ -496,29 +488,23 @@ def path_sensitivity(model, path, parameters) -> PathSensitivity:
     force_control = bool(len(dofs)) and all(int(d) in supports for d in dofs)
     held = np.zeros(0, dtype=np.int64) if force_control else dofs
     sign = 1.0 if force_control else -1.0  # displacement control reports -f_int
-    S, n, P = path.num_steps, model.num_dofs, len(parameters)
-    du_all = np.zeros((S, n, P))
-    dc_all = np.zeros((S, len(dofs), P))
-    de_all = np.zeros((S, P))
+    n = model.num_dofs
     resolved = _Resolved(model, parameters)
-    s = None
-    order = None
-    for k in range(S):
-        u = path.displacement[k]
-        try:
-            # One workspace and one symbolic analysis for the whole path.
-            s = _factorised(model, u, held) if s is None else _refactorised(s, u)
-        except ValueError as error:
-            raise ValueError(f"step {k} of the path: {error}") from None
-        if order is None:
-            order = np.array([{int(d): i for i, d in enumerate(s.held_dofs)}[int(d)]
-                              for d in dofs], dtype=np.int64)
-        dforce, denergy = resolved.residual(model, u, s)
-        motion = None if force_control else _held_motion(
-            parameters, np.asarray(s.held_dofs, dtype=np.int64), float(path.load_factor[k]))
-        du = s.displacement(dforce) if motion is None else s.displacement(dforce, motion)
-        dc_all[k] = sign * s.held_force(dforce, du)[order]
-        du_all[k] = du
-        de_all[k] = denergy + np.asarray(s.internal_force) @ du
+    columns = [(*key.split("."), W) for key, W in resolved.weights.items()]
+    positions = resolved.positions if resolved.moves else np.zeros((n, 0))
+    drives = [p.drive if isinstance(p, Direction) else None for p in parameters]
+    drive = np.zeros((n, 0))
+    if not force_control and any(d is not None for d in drives):
+        drive = np.column_stack([np.zeros(n) if d is None else
+                                 as_float_array("drive", d).ravel() for d in drives])
+    try:
+        # One workspace and one symbolic analysis for the whole path, in the core.
+        held_dofs, du_all, held_force, de_all = _core.solvers.path_sensitivity(
+            model._core, list(path.displacement), [float(t) for t in path.load_factor],
+            [int(d) for d in held], positions, columns, drive)
+    except (ValueError, RuntimeError) as error:
+        raise ValueError(f"no sensitivity along this path: {error}") from None
+    order = {int(d): i for i, d in enumerate(held_dofs)}
+    dc_all = sign * held_force[:, [order[int(d)] for d in dofs], :]
     return PathSensitivity(parameters=tuple(p.label for p in parameters), displacement=du_all,
                            constraint_force=dc_all, energy=de_all)

@@ -97,8 +97,24 @@ std::vector<std::string> BarFamily::parameters() const { return {"area", "rest_l
 
 void BarFamily::parameter_derivative(const NodeMatrix& X, const VectorX& u, const std::string& name,
                                      ParameterDerivative& out) const {
-  if (name != "area" && name != "rest_length" && name != "modulus") throw_unknown_parameter(*this, name);
-  out.reset(static_cast<Index>(bars_.size()));
+  std::vector<ParameterDerivative> outs;
+  parameter_derivatives(X, u, {name}, outs);
+  out = std::move(outs.front());
+}
+
+void BarFamily::parameter_derivatives(const NodeMatrix& X, const VectorX& u,
+                                      const std::vector<std::string>& names,
+                                      std::vector<ParameterDerivative>& outs) const {
+  enum Column { Area, RestLength, Modulus };
+  std::vector<Column> which;
+  for (const std::string& name : names) {
+    if (name == "area") which.push_back(Area);
+    else if (name == "rest_length") which.push_back(RestLength);
+    else if (name == "modulus") which.push_back(Modulus);
+    else throw_unknown_parameter(*this, name);
+  }
+  outs.resize(names.size());
+  for (auto& out : outs) out.reset(static_cast<Index>(bars_.size()));
   for (std::size_t e = 0; e < bars_.size(); ++e) {
     const Bar& bar = bars_[e];
     const auto d = elements::bar_parameter_derivatives(position(X, u, bar.nodes[0]),
@@ -106,9 +122,13 @@ void BarFamily::parameter_derivative(const NodeMatrix& X, const VectorX& u, cons
                                                        bar.rest_length, bar.law);
     const auto dofs = node_dofs(bar.nodes);
     const auto entry = static_cast<Index>(e);
-    if (name == "area") out.add(entry, d.force_area, dofs, d.energy_area);
-    else if (name == "modulus") out.add(entry, d.force_modulus, dofs, d.energy_modulus);
-    else out.add(entry, d.force_rest_length, dofs, d.energy_rest_length);
+    for (std::size_t i = 0; i < which.size(); ++i) {
+      switch (which[i]) {
+        case Area: outs[i].add(entry, d.force_area, dofs, d.energy_area); break;
+        case Modulus: outs[i].add(entry, d.force_modulus, dofs, d.energy_modulus); break;
+        case RestLength: outs[i].add(entry, d.force_rest_length, dofs, d.energy_rest_length); break;
+      }
+    }
   }
 }
 

@@ -70,6 +70,13 @@ void require_element_nodes(const ElementFamily& family, std::size_t e, const Ind
   }
 }
 
+void ElementFamily::parameter_derivatives(const NodeMatrix& X, const VectorX& u,
+                                          const std::vector<std::string>& names,
+                                          std::vector<ParameterDerivative>& outs) const {
+  outs.resize(names.size());
+  for (std::size_t i = 0; i < names.size(); ++i) parameter_derivative(X, u, names[i], outs[i]);
+}
+
 void ElementFamily::parameter_derivative(const NodeMatrix& /*X*/, const VectorX& /*u*/,
                                          const std::string& name,
                                          ParameterDerivative& /*out*/) const {

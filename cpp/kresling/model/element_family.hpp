@@ -135,6 +135,12 @@ class ElementFamily {
   /// std::invalid_argument naming the family and the parameters it has for any other name.
   virtual void parameter_derivative(const NodeMatrix& X, const VectorX& u, const std::string& name,
                                     ParameterDerivative& out) const;
+  /// parameter_derivative for several columns at once (`outs` resized to `names`): one
+  /// evaluation of each element for all of them where the family's kernel gives every column
+  /// together (bars, hinges); by default one parameter_derivative call per column.
+  virtual void parameter_derivatives(const NodeMatrix& X, const VectorX& u,
+                                     const std::vector<std::string>& names,
+                                     std::vector<ParameterDerivative>& outs) const;
   /// The derivative of the column `name`'s entries with respect to the reference positions
   /// X, for the entries that hold the reference geometry. A model built stress-free in X (a
   /// bar's rest length its length at X, a hinge's rest angle its angle at X) stays so when X

@@ -169,10 +169,24 @@ std::vector<std::string> HingeFamily::parameters() const {
 
 void HingeFamily::parameter_derivative(const NodeMatrix& X, const VectorX& u,
                                        const std::string& name, ParameterDerivative& out) const {
-  if (name != "stiffness" && name != "rest_angle" && name != "length") {
-    throw_unknown_parameter(*this, name);
+  std::vector<ParameterDerivative> outs;
+  parameter_derivatives(X, u, {name}, outs);
+  out = std::move(outs.front());
+}
+
+void HingeFamily::parameter_derivatives(const NodeMatrix& X, const VectorX& u,
+                                        const std::vector<std::string>& names,
+                                        std::vector<ParameterDerivative>& outs) const {
+  enum Column { Stiffness, RestAngle, Length };
+  std::vector<Column> which;
+  for (const std::string& name : names) {
+    if (name == "stiffness") which.push_back(Stiffness);
+    else if (name == "rest_angle") which.push_back(RestAngle);
+    else if (name == "length") which.push_back(Length);
+    else throw_unknown_parameter(*this, name);
   }
-  out.reset(static_cast<Index>(hinges_.size()));
+  outs.resize(names.size());
+  for (auto& out : outs) out.reset(static_cast<Index>(hinges_.size()));
   for (std::size_t e = 0; e < hinges_.size(); ++e) {
     const Hinge& h = hinges_[e];
     // A hinge of zero stiffness (a cut) has no force to change by its rest angle or length,
@@ -182,9 +196,13 @@ void HingeFamily::parameter_derivative(const NodeMatrix& X, const VectorX& u,
         position(X, u, h.nodes[3]), h.stiffness, h.rest_angle, h.length, h.law, h.form);
     const auto dofs = node_dofs(h.nodes);
     const auto entry = static_cast<Index>(e);
-    if (name == "stiffness") out.add(entry, d.force_stiffness, dofs, d.energy_stiffness);
-    else if (name == "rest_angle") out.add(entry, d.force_rest_angle, dofs, d.energy_rest_angle);
-    else out.add(entry, d.force_length, dofs, d.energy_length);
+    for (std::size_t i = 0; i < which.size(); ++i) {
+      switch (which[i]) {
+        case Stiffness: outs[i].add(entry, d.force_stiffness, dofs, d.energy_stiffness); break;
+        case RestAngle: outs[i].add(entry, d.force_rest_angle, dofs, d.energy_rest_angle); break;
+        case Length: outs[i].add(entry, d.force_length, dofs, d.energy_length); break;
+      }
+    }
   }
 }
 

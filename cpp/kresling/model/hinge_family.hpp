@@ -51,6 +51,9 @@ class HingeFamily final : public ElementFamily {
   std::vector<std::string> parameters() const override;
   void parameter_derivative(const NodeMatrix& X, const VectorX& u, const std::string& name,
                             ParameterDerivative& out) const override;
+  void parameter_derivatives(const NodeMatrix& X, const VectorX& u,
+                             const std::vector<std::string>& names,
+                             std::vector<ParameterDerivative>& outs) const override;
   void reference_geometry_derivative(const NodeMatrix& X, const std::string& name,
                                      std::vector<ParameterDerivative::Triplet>& out) const override;
 

@@ -49,31 +49,52 @@ void EquilibriumSensitivity::update(const VectorX& u) {
   }
   assembler_->assemble(u, force_, /*with_matrix=*/true);
   K_ = assembler_->matrix();
-  std::vector<Eigen::Triplet<double, int>> ff;
-  ff.reserve(static_cast<std::size_t>(K_.nonZeros()));
-  for (int col = 0; col < K_.outerSize(); ++col) {
-    for (SparseMatrix::InnerIterator it(K_, col); it; ++it) {
-      const Index r = free_row_[it.row()], c = free_row_[it.col()];
-      if (r >= 0 && c >= 0) ff.emplace_back(static_cast<int>(r), static_cast<int>(c), it.value());
-    }
-  }
   const auto nf = static_cast<Index>(free_dofs_.size());
-  SparseMatrix Kff(nf, nf);
-  Kff.setFromTriplets(ff.begin(), ff.end());
+  const bool same_K = kff_slot_.size() == static_cast<std::size_t>(K_.nonZeros()) &&
+                      std::equal(K_.outerIndexPtr(), K_.outerIndexPtr() + K_.outerSize() + 1,
+                                 k_outer_.begin()) &&
+                      std::equal(K_.innerIndexPtr(), K_.innerIndexPtr() + K_.nonZeros(),
+                                 k_inner_.begin());
+  if (same_K) {
+    // The states of a path share the pattern: copy K's free block's values in place.
+    for (std::size_t i = 0; i < kff_slot_.size(); ++i) {
+      if (kff_slot_[i] >= 0) Kff_.valuePtr()[kff_slot_[i]] = K_.valuePtr()[i];
+    }
+  } else {
+    std::vector<Eigen::Triplet<double, int>> ff;
+    ff.reserve(static_cast<std::size_t>(K_.nonZeros()));
+    for (int col = 0; col < K_.outerSize(); ++col) {
+      for (SparseMatrix::InnerIterator it(K_, col); it; ++it) {
+        const Index r = free_row_[it.row()], c = free_row_[it.col()];
+        if (r >= 0 && c >= 0) ff.emplace_back(static_cast<int>(r), static_cast<int>(c), it.value());
+      }
+    }
+    SparseMatrix Kff(nf, nf);
+    Kff.setFromTriplets(ff.begin(), ff.end());
+    // A new pattern: a new symbolic analysis (contact can change it).
+    solver_ = std::make_unique<TangentSolver>();
+    Kff_ = std::move(Kff);
+    // Where each of K's entries goes in K_ff's value array (-1: a held row or column).
+    kff_slot_.assign(static_cast<std::size_t>(K_.nonZeros()), -1);
+    for (int col = 0; col < K_.outerSize(); ++col) {
+      for (int i = K_.outerIndexPtr()[col]; i < K_.outerIndexPtr()[col + 1]; ++i) {
+        const Index r = free_row_[K_.innerIndexPtr()[i]], c = free_row_[col];
+        if (r < 0 || c < 0) continue;
+        const int* begin = Kff_.innerIndexPtr() + Kff_.outerIndexPtr()[c];
+        const int* end = Kff_.innerIndexPtr() + Kff_.outerIndexPtr()[c + 1];
+        kff_slot_[i] = static_cast<int>(std::lower_bound(begin, end, static_cast<int>(r)) -
+                                        Kff_.innerIndexPtr());
+      }
+    }
+    k_outer_.assign(K_.outerIndexPtr(), K_.outerIndexPtr() + K_.outerSize() + 1);
+    k_inner_.assign(K_.innerIndexPtr(), K_.innerIndexPtr() + K_.nonZeros());
+  }
   if (nf == 0) {
     info_.ok = true;
     info_.negative_eigenvalues = 0;
     return;
   }
-  // The symbolic analysis is kept while the pattern is (contact can change it).
-  const bool same_pattern =
-      solver_ && Kff_.nonZeros() == Kff.nonZeros() && Kff_.rows() == Kff.rows() &&
-      std::equal(Kff.outerIndexPtr(), Kff.outerIndexPtr() + Kff.outerSize() + 1,
-                 Kff_.outerIndexPtr()) &&
-      std::equal(Kff.innerIndexPtr(), Kff.innerIndexPtr() + Kff.nonZeros(), Kff_.innerIndexPtr());
-  if (!same_pattern) solver_ = std::make_unique<TangentSolver>();
-  info_ = solver_->factorize(Kff);
-  Kff_ = std::move(Kff);
+  info_ = solver_->factorize(Kff_);
 }
 
 void EquilibriumSensitivity::require_ok() const {
@@ -146,6 +167,99 @@ VectorX EquilibriumSensitivity::adjoint(const VectorX& g) const {
   const VectorX x = solver_->solve(rhs);
   for (Index r = 0; r < nf; ++r) lambda[free_dofs_[r]] = x[r];
   return lambda;
+}
+
+PathSensitivityResult path_sensitivity(const model::Model& model,
+                                       const std::vector<VectorX>& states,
+                                       const std::vector<double>& fractions,
+                                       const std::vector<Index>& held,
+                                       const Eigen::MatrixXd& positions,
+                                       const std::vector<ColumnMotion>& columns,
+                                       const Eigen::MatrixXd& drive) {
+  const Index n = model.num_dofs();
+  const Index P = positions.cols() > 0 ? positions.cols()
+                  : !columns.empty()   ? columns.front().weights.cols()
+                                       : drive.cols();
+  if (fractions.size() != states.size()) {
+    throw std::invalid_argument("fractions: has " + std::to_string(fractions.size()) +
+                                " entries; must have one per state (" +
+                                std::to_string(states.size()) + ")");
+  }
+  if (positions.cols() > 0 && positions.rows() != n) {
+    throw std::invalid_argument("positions must have 3N = " + std::to_string(n) + " rows");
+  }
+  if (drive.cols() > 0 && (drive.rows() != n || drive.cols() != P)) {
+    throw std::invalid_argument("drive must be 3N x P = " + std::to_string(n) + " x " +
+                                std::to_string(P));
+  }
+  // The columns grouped by family: each family evaluates its elements once per state for
+  // all its columns (ElementFamily::parameter_derivatives).
+  struct FamilyColumns {
+    const model::ElementFamily* family;
+    std::vector<std::string> names;
+    std::vector<const Eigen::MatrixXd*> weights;
+  };
+  std::vector<FamilyColumns> groups;
+  for (const ColumnMotion& c : columns) {
+    const model::ElementFamily* f = model.family(c.family);
+    if (f == nullptr) throw std::invalid_argument("the model has no element family '" + c.family + "'");
+    if (c.weights.cols() != P) {
+      throw std::invalid_argument(c.family + "." + c.column + ": weights must have P = " +
+                                  std::to_string(P) + " columns");
+    }
+    auto it = std::find_if(groups.begin(), groups.end(),
+                           [&](const FamilyColumns& g) { return g.family == f; });
+    if (it == groups.end()) it = groups.insert(groups.end(), FamilyColumns{f, {}, {}});
+    it->names.push_back(c.column);
+    it->weights.push_back(&c.weights);
+  }
+  PathSensitivityResult r;
+  r.energy = Eigen::MatrixXd::Zero(static_cast<Index>(states.size()), P);
+  if (states.empty()) return r;
+  EquilibriumSensitivity s(model, states.front(), held);
+  r.held_dofs = s.held_dofs();
+  const auto H = static_cast<Index>(r.held_dofs.size());
+  std::vector<model::ParameterDerivative> derivatives;
+  for (std::size_t k = 0; k < states.size(); ++k) {
+    const VectorX& u = states[k];
+    if (k > 0) s.update(u);
+    if (!s.ok()) {
+      throw std::runtime_error("state " + std::to_string(k) +
+                               ": the tangent is singular (a limit or bifurcation point, or a "
+                               "mechanism the supports leave free): it has no derivative");
+    }
+    Eigen::MatrixXd dforce = Eigen::MatrixXd::Zero(n, P);
+    Eigen::RowVectorXd denergy = Eigen::RowVectorXd::Zero(P);
+    if (positions.cols() > 0) {
+      dforce = s.tangent() * positions;  // x = X + u: the positions move with X
+      denergy = s.internal_force().transpose() * positions;
+    }
+    for (const FamilyColumns& g : groups) {
+      g.family->parameter_derivatives(model.nodes(), u, g.names, derivatives);
+      for (std::size_t c = 0; c < g.names.size(); ++c) {
+        const model::ParameterDerivative& d = derivatives[c];
+        const Eigen::MatrixXd& W = *g.weights[c];
+        if (W.rows() != d.energy.size()) {
+          throw std::invalid_argument(std::string(g.family->name()) + "." + g.names[c] +
+                                      ": weights have " + std::to_string(W.rows()) +
+                                      " rows; the column has " + std::to_string(d.energy.size()) +
+                                      " entries");
+        }
+        for (const auto& t : d.force) dforce.row(t.row()) += t.value() * W.row(t.col());
+        denergy += d.energy.transpose() * W;
+      }
+    }
+    Eigen::MatrixXd motion;
+    if (drive.cols() > 0) {
+      motion.resize(H, P);
+      for (Index h = 0; h < H; ++h) motion.row(h) = fractions[k] * drive.row(r.held_dofs[h]);
+    }
+    Eigen::MatrixXd du = s.displacement(dforce, motion);
+    r.held_force.push_back(s.held_force(dforce, du));
+    r.energy.row(static_cast<Index>(k)) = denergy + s.internal_force().transpose() * du;
+    r.displacement.push_back(std::move(du));
+  }
+  return r;
 }
 
 }  // namespace kresling::solvers

@@ -23,6 +23,7 @@
 /// load has its own derivative, which the analyses give).
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -80,8 +81,43 @@ class EquilibriumSensitivity {
   std::vector<Index> free_row_;  // per DOF: its row in K_ff, or -1 if held
   std::vector<Index> free_dofs_;
   std::unique_ptr<TangentSolver> solver_;
-  SparseMatrix Kff_;  // the last factorised K_ff: a new pattern needs a new analysis
+  SparseMatrix Kff_;                // the last factorised K_ff
+  std::vector<int> kff_slot_;       // per entry of K_: its place in Kff_'s values, or -1
+  std::vector<int> k_outer_, k_inner_;  // K_'s pattern when kff_slot_ was made
   FactorizeInfo info_;
 };
+
+/// How one parameter column moves per unit of each of P variables: its entries x P
+/// (assembly/parameter_jacobian.hpp orders the entries).
+struct ColumnMotion {
+  std::string family;
+  std::string column;
+  Eigen::MatrixXd weights;
+};
+
+/// The derivatives of a path's states with respect to P variables.
+struct PathSensitivityResult {
+  std::vector<Index> held_dofs;                ///< as EquilibriumSensitivity::held_dofs
+  std::vector<Eigen::MatrixXd> displacement;   ///< per state: du/dp, 3N x P
+  std::vector<Eigen::MatrixXd> held_force;     ///< per state: d f_int/dp at held_dofs, H x P
+  Eigen::MatrixXd energy;                      ///< states x P: dE/dp along each equilibrium
+};
+
+/// Differentiate the equilibria `states` of a path (each 3N) with respect to P variables,
+/// one factorisation per state on one workspace and one symbolic analysis. Each variable
+/// moves the reference positions by a column of `positions` (3N x P; no columns: none moves
+/// them; the rest values that hold the reference geometry must already be in `columns`),
+/// the parameter columns by `columns`, and the held DOFs by fractions[k] times its column of
+/// `drive` (3N x P, read at the held DOFs; no columns: they stay). Per state the residual's
+/// partial derivative is K positions + sum_c G_c W_c. Throws std::invalid_argument for
+/// mismatched sizes or names, std::runtime_error naming the state where the tangent is
+/// singular.
+PathSensitivityResult path_sensitivity(const model::Model& model,
+                                       const std::vector<VectorX>& states,
+                                       const std::vector<double>& fractions,
+                                       const std::vector<Index>& held,
+                                       const Eigen::MatrixXd& positions,
+                                       const std::vector<ColumnMotion>& columns,
+                                       const Eigen::MatrixXd& drive);
 
 }  // namespace kresling::solvers
