@@ -3,7 +3,8 @@ both stable states and the bending-stiffness ratio (section 3.4), its linearised
 orientation study (Appendix A), the facet angle Psi of the built cells (figure 3.8) and the
 snap-through test of bistability strength (section 3.5), and the exact derivatives of the
 bending stiffnesses, their ratio, the snap force and the energy barrier by the design
-(``design_gradient``).
+(``design_gradient``), with which the specimen's stiffnesses are fitted to records on the
+full model (``fit_specimen_stiffness``, ``fit_bending_stiffnesses``).
 
 Submodules beyond these: ``table3`` (Table 3 side by side), ``plots`` (figures 3.5-3.7,
 3.14, 3.16), ``specimen_views`` (FOLD export, 3D plot), ``paths`` (the bending and
@@ -20,10 +21,13 @@ from kresling.analyses.facet_angle import facet_angle, facet_angle_ratio, facet_
 from kresling.analyses.linear_bending import LinearBendingTester, linear_bending_stiffness
 from kresling.analyses.orientation import OrientationStudy, orientation_study
 from kresling.analyses.snap_through import SnapThroughResult, SnapThroughTester, snap_through
+from kresling.analyses.stiffness_fit import (BendingRecord, StiffnessFit, fit_bending_stiffnesses,
+                                             fit_specimen_stiffness)
 
 __all__ = ["PROTOCOLS", "BendingResult", "BendingComparison", "BendingTester", "bending_test",
            "bending_stiffness", "LinearBendingTester", "linear_bending_stiffness",
            "SnapThroughResult", "SnapThroughTester", "snap_through", "facet_angles",
            "facet_angle", "facet_angle_ratio", "OrientationStudy", "orientation_study",
            "DESIGN_VARIABLES", "GRADIENT_QUANTITIES", "DesignGradient", "design_gradient",
-           "bending_gradient", "snap_through_gradient"]
+           "bending_gradient", "snap_through_gradient", "BendingRecord", "StiffnessFit",
+           "fit_specimen_stiffness", "fit_bending_stiffnesses"]

@@ -45,11 +45,15 @@ from kresling.model.model import Model
 from kresling.solvers.displacement_control import solve_displacement_control
 from kresling.solvers.sensitivity import Direction, path_sensitivity
 
-__all__ = ["DESIGN_VARIABLES", "GRADIENT_QUANTITIES", "DesignGradient", "bending_gradient",
-           "snap_through_gradient", "design_gradient"]
+__all__ = ["DESIGN_VARIABLES", "SPECIMEN_VARIABLES", "GRADIENT_QUANTITIES", "DesignGradient",
+           "bending_gradient", "bending_force_gradient", "snap_through_gradient",
+           "design_gradient"]
 
 #: The design variables, in the order results list them.
 DESIGN_VARIABLES = ("lam", "Lc", "R", "thickness", "kf")
+#: What a derivative may be taken by: the design variables and the bars' modulus over kf
+#: (``SpecimenParameters.modulus_factor``, a material's ratio that a fit may seek).
+SPECIMEN_VARIABLES = DESIGN_VARIABLES + ("modulus_factor",)
 #: The quantities :func:`design_gradient` differentiates.
 GRADIENT_QUANTITIES = ("kb_ratio", "kb_extended", "kb_contracted", "snap_force",
                        "energy_barrier")
@@ -150,9 +154,9 @@ def _exact_angles(parameters) -> SpecimenParameters:
 def _checked_variables(variables) -> tuple:
     variables = tuple(variables)
     for v in variables:
-        if v not in DESIGN_VARIABLES:
+        if v not in SPECIMEN_VARIABLES:
             raise ValueError(f"variables: {v!r} is invalid: must be among "
-                             f"{', '.join(DESIGN_VARIABLES)}")
+                             f"{', '.join(SPECIMEN_VARIABLES)}")
     if not variables:
         raise ValueError("variables is empty: give at least one of "
                          f"{', '.join(DESIGN_VARIABLES)}")
@@ -186,7 +190,7 @@ def bending_gradient(design: Design, state, protocol="5mm", *, parameters=None,
     parameters : SpecimenParameters, optional
         The thesis's by default.
     variables : sequence of str
-        Among :data:`DESIGN_VARIABLES`.
+        Among :data:`DESIGN_VARIABLES`, and ``"modulus_factor"`` (the bars' modulus over kf).
 
     Returns
     -------
@@ -200,9 +204,55 @@ def bending_gradient(design: Design, state, protocol="5mm", *, parameters=None,
     ValueError
         For a bad design, state or variable, or a run that does not complete.
     """
+    variables = _checked_variables(variables)
+    y, F, length = _bending_duals(design, state, protocol, parameters, variables, cells,
+                                  deflection, deflection_angle, steps)
+    xy = xx = 0.0
+    for yk, Fk in zip(y, F):
+        angle = _atan2(yk, length)
+        moment = Fk * length * 1e-3
+        xy = angle * moment + xy
+        xx = angle * angle + xx
+    k = xy / xx
+    return k.value, dict(zip(variables, k.grad.tolist()))
+
+
+def bending_force_gradient(design: Design, state, deflection, steps, *, parameters=None,
+                           variables=("kf", "modulus_factor"), cells=4) -> tuple:
+    """The bending test's force-deflection curve and its derivatives: what a fit of the
+    specimen's stiffnesses to a laboratory record needs.
+
+    Parameters
+    ----------
+    design : Design
+    state : {0, 1, "contracted", "extended"}
+    deflection : float
+        The middle polygon's largest transverse motion [mm].
+    steps : int
+        Equal increments to it.
+    parameters : SpecimenParameters, optional
+    variables : sequence of str
+        Among :data:`DESIGN_VARIABLES` and ``"modulus_factor"``.
+    cells : int, default 4
+
+    Returns
+    -------
+    (ndarray (S,), ndarray (S,), ndarray (S, P))
+        The deflection at every increment [mm], the force F [N] and dF/dv.
+    """
+    variables = _checked_variables(variables)
+    y, F, _ = _bending_duals(design, state, "5mm", parameters, variables, cells, deflection,
+                             None, steps)
+    return (np.array([v.value for v in y]), np.array([v.value for v in F]),
+            np.array([v.grad for v in F]).reshape(len(F), len(variables)))
+
+
+def _bending_duals(design, state, protocol, parameters, variables, cells, deflection,
+                   deflection_angle, steps):
+    """One bending run differentiated: the centre's deflection y and the force F at every
+    increment, and the module length L, as duals over ``variables``."""
     design = as_design(design)
     state = state_index(state)
-    variables = _checked_variables(variables)
     parameters = _exact_angles(parameters)
     require_even_n(design.n)
     settings = protocol_settings(protocol, deflection, deflection_angle, steps)
@@ -224,15 +274,7 @@ def bending_gradient(design: Design, state, protocol="5mm", *, parameters=None,
     centre_y = 3 * ((cells // 2) * (n + 1) + n) + 1
     y = _duals(-path.displacement[:, centre_y], -sens.displacement[:, centre_y, :])
     F = _duals(path.constraint_force.sum(axis=1), sens.constraint_force.sum(axis=1))
-    length = _Dual(L, dL)
-    xy = xx = 0.0
-    for yk, Fk in zip(y, F):
-        angle = _atan2(yk, length)
-        moment = Fk * length * 1e-3
-        xy = angle * moment + xy
-        xx = angle * angle + xx
-    k = xy / xx
-    return k.value, dict(zip(variables, k.grad.tolist()))
+    return y, F, _Dual(L, dL)
 
 
 def state_name(state) -> str:

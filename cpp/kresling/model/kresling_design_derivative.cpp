@@ -62,6 +62,9 @@ SpecimenDesignDerivative specimen_design_derivative(const KreslingSpecimen& s,
     // Every hinge's stiffness and every bar's modulus is a factor times kf.
     d.bar_modulus.setConstant(p.modulus_factor);
     for (Index h = 0; h < hinges; ++h) d.hinge_stiffness[h] = hinge_factor(s.hinge_family[h], p);
+  } else if (variable == "modulus_factor") {
+    // Every bar's modulus is modulus_factor kf.
+    d.bar_modulus.setConstant(p.kf);
   } else if (variable == "thickness") {
     // Membrane stiffness ~ t (every bar's area), the facets' bending ~ t^3 (the spokes).
     for (Index b = 0; b < bars; ++b) {
@@ -78,7 +81,8 @@ SpecimenDesignDerivative specimen_design_derivative(const KreslingSpecimen& s,
                                        geometry::design_variable(variable));
   } else {
     throw std::invalid_argument("design variable '" + variable +
-                                "' is invalid: must be one of lam, Lc, R, thickness, kf");
+                                "' is invalid: must be one of lam, Lc, R, thickness, kf, "
+                                "modulus_factor");
   }
   return d;
 }

@@ -15,6 +15,8 @@
 ///
 ///   kf         every hinge's stiffness is a factor times kf and every bar's modulus
 ///              modulus_factor kf: both linear in kf.
+///   modulus_factor  the bars' modulus over kf (the thesis's 1e5): a material's own
+///              ratio, fitted to records beside kf.
 ///   thickness  the facet sheet's thickness t, at the thesis's t0 = 0.25 mm: a sheet's
 ///              membrane stiffness grows like t and its plate bending like t^3, so every
 ///              bar's area scales with t and the polygon spokes' hinges (the facets' bending)
@@ -39,8 +41,10 @@ struct SpecimenDesignDerivative {
   VectorX hinge_stiffness;  ///< d stiffness / dv per hinge
 };
 
-/// The design variables, in the order results list them.
-inline constexpr const char* kSpecimenDesignVariables[] = {"lam", "Lc", "R", "thickness", "kf"};
+/// The design variables, in the order results list them, then the material ratio a fit
+/// may seek.
+inline constexpr const char* kSpecimenDesignVariables[] = {"lam", "Lc", "R", "thickness", "kf",
+                                                           "modulus_factor"};
 
 /// The derivative of `specimen` (built from `design` with `states`, `chirality` and
 /// `parameters`) by `variable`, one of kSpecimenDesignVariables. Throws
