@@ -15,8 +15,8 @@ import os
 import sys
 
 # Subcommand modules, in the order ``kresling --help`` lists them.
-_COMMANDS = ("design", "bend", "snap", "simulate", "view", "sweep", "explore", "pattern", "fit",
-             "manipulator", "arm", "switch", "reproduce")
+_COMMANDS = ("design", "bend", "snap", "simulate", "view", "sweep", "optimize", "explore",
+             "pattern", "fit", "manipulator", "arm", "switch", "reproduce")
 
 
 def build_parser(only=None) -> argparse.ArgumentParser:
