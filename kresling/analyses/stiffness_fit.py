@@ -123,50 +123,27 @@ def fit_specimen_stiffness(records, *, variables=FIT_VARIABLES, initial=None, st
     ValueError
         For no records, a variable that is not fitted here, or a run that does not complete.
     """
-    from scipy.optimize import least_squares
-
     records = list(records)
     if not records or not all(isinstance(r, BendingRecord) for r in records):
         raise ValueError("records must be a non-empty sequence of BendingRecord")
-    variables = tuple(variables)
-    for v in variables:
-        if v not in FIT_VARIABLES:
-            raise ValueError(f"variables: {v!r} is invalid: must be among "
-                             f"{', '.join(FIT_VARIABLES)}")
-    initial = initial or SpecimenParameters()
+    variables = _checked_variables(variables)
     steps = as_integer("steps", steps, minimum=1)
     scales = [float(np.max(np.abs(r.force))) or 1.0 for r in records]
-    cache = {}
 
-    def evaluate(x):
-        key = x.tobytes()
-        if key not in cache:
-            params = dataclasses.replace(initial, **dict(zip(variables, np.exp(x))))
-            residuals, jacobians = [], []
-            for record, scale in zip(records, scales):
-                y, F, dF = bending_force_gradient(
-                    record.design, record.state, float(record.deflection[-1]), steps,
-                    parameters=params, variables=variables)
-                # Linear interpolation at the record's deflections: weights fixed by the
-                # (prescribed) deflections, so the derivative is interpolated the same way.
-                model = np.interp(record.deflection, y, F)
-                dmodel = np.column_stack([np.interp(record.deflection, y, dF[:, j])
-                                          for j in range(len(variables))])
-                residuals.append((model - record.force) / scale)
-                # d/d ln v = v d/dv.
-                jacobians.append(dmodel * np.exp(x)[None, :] / scale)
-            cache.clear()
-            cache[key] = (np.concatenate(residuals), np.vstack(jacobians))
-        return cache[key]
+    def misfit(params):
+        residuals, jacobians = [], []
+        for record, scale in zip(records, scales):
+            y, F, dF = bending_force_gradient(record.design, record.state,
+                                              float(record.deflection[-1]), steps,
+                                              parameters=params, variables=variables)
+            # Linear interpolation at the record's deflections: weights fixed by the
+            # (prescribed) deflections, so the derivative is interpolated the same way.
+            residuals.append((np.interp(record.deflection, y, F) - record.force) / scale)
+            jacobians.append(np.column_stack([np.interp(record.deflection, y, dF[:, j])
+                                              for j in range(len(variables))]) / scale)
+        return np.concatenate(residuals), np.vstack(jacobians)
 
-    x0 = np.log([getattr(initial, v) for v in variables])
-    result = least_squares(lambda x: evaluate(x)[0], x0, jac=lambda x: evaluate(x)[1],
-                           method="trf", xtol=1e-14, ftol=1e-15, gtol=1e-15,
-                           max_nfev=as_integer("max_evaluations", max_evaluations, minimum=1))
-    values = dict(zip(variables, np.exp(result.x).tolist()))
-    return StiffnessFit(parameters=dataclasses.replace(initial, **values), values=values,
-                        residual=evaluate(result.x)[0], evaluations=int(result.nfev),
-                        success=bool(result.success), message=str(result.message))
+    return _fit(misfit, variables, initial, 1e-14, max_evaluations)
 
 
 def fit_bending_stiffnesses(measured, *, variables=FIT_VARIABLES, initial=None,
@@ -187,37 +164,52 @@ def fit_bending_stiffnesses(measured, *, variables=FIT_VARIABLES, initial=None,
     StiffnessFit
         ``residual``: ln K_model - ln K_measured per entry.
     """
-    from scipy.optimize import least_squares
-
     measured = [(as_design(d), state_index(s), float(k)) for d, s, k in measured]
     if not measured or any(not k > 0 for _, _, k in measured):
         raise ValueError("measured must be a non-empty sequence of (design, state, K_B > 0)")
+    variables = _checked_variables(variables)
+
+    def misfit(params):
+        r, J = [], []
+        for design, state, k in measured:
+            value, gradient = bending_gradient(design, state, protocol, parameters=params,
+                                               variables=variables)
+            r.append(np.log(value / k))
+            J.append([gradient[v] / value for v in variables])  # d ln K / dv
+        return np.array(r), np.array(J)
+
+    return _fit(misfit, variables, initial, 1e-12, max_evaluations)
+
+
+def _checked_variables(variables) -> tuple:
     variables = tuple(variables)
     for v in variables:
         if v not in FIT_VARIABLES:
             raise ValueError(f"variables: {v!r} is invalid: must be among "
                              f"{', '.join(FIT_VARIABLES)}")
+    return variables
+
+
+def _fit(misfit, variables, initial, xtol, max_evaluations) -> StiffnessFit:
+    """Least squares of ``misfit(parameters) -> (residual, d residual / d variables)`` over
+    the logarithms of ``variables`` (positive, of any scale), from ``initial``."""
+    from scipy.optimize import least_squares
+
     initial = initial or SpecimenParameters()
     cache = {}
 
     def evaluate(x):
+        # least_squares asks for the residual, then the Jacobian, of one point: one run.
         key = x.tobytes()
         if key not in cache:
-            params = dataclasses.replace(initial, **dict(zip(variables, np.exp(x))))
-            r, J = [], []
-            for design, state, k in measured:
-                value, gradient = bending_gradient(design, state, protocol, parameters=params,
-                                                   variables=variables)
-                r.append(np.log(value / k))
-                # d ln K / d ln v = (v / K) dK/dv.
-                J.append([gradient[v] * np.exp(xv) / value for v, xv in zip(variables, x)])
+            r, J = misfit(dataclasses.replace(initial, **dict(zip(variables, np.exp(x)))))
             cache.clear()
-            cache[key] = (np.array(r), np.array(J))
+            cache[key] = (r, J * np.exp(x)[None, :])  # d/d ln v = v d/dv
         return cache[key]
 
     x0 = np.log([getattr(initial, v) for v in variables])
     result = least_squares(lambda x: evaluate(x)[0], x0, jac=lambda x: evaluate(x)[1],
-                           method="trf", xtol=1e-12, ftol=1e-15, gtol=1e-15,
+                           method="trf", xtol=xtol, ftol=1e-15, gtol=1e-15,
                            max_nfev=as_integer("max_evaluations", max_evaluations, minimum=1))
     values = dict(zip(variables, np.exp(result.x).tolist()))
     return StiffnessFit(parameters=dataclasses.replace(initial, **values), values=values,

@@ -164,7 +164,7 @@ def optimize_design(n, metric="kb_ratio", *, Lc=None, lam=THESIS_LAM, R=30.0,
         result = optimize.minimize(
             evaluate.objective(metric), (start - low) / (high - low), jac=True,
             method="SLSQP", bounds=[(0, 1), (0, 1)],
-            constraints=evaluate.constraints(constraints),
+            constraints=_slsqp_constraints(evaluate.values, constraints, evaluate.gradients),
             options={"ftol": 1e-9, "maxiter": 100})
         evaluations = evaluate.count
     else:
@@ -223,7 +223,10 @@ def _start(grid, metrics, metric, constraints, workers, parameters=None) -> np.n
     return np.array([table["Lc"][i], table["lam"][i]])
 
 
-def _slsqp_constraints(values, constraints) -> list:
+def _slsqp_constraints(values, constraints, gradients=None) -> list:
+    """SLSQP's inequalities for ``{column: (low, high)}``: ``values(u)`` gives the columns at
+    u (None where the design fails), ``gradients(u)`` their d/du (exact gradients; None:
+    SLSQP differentiates by itself)."""
     out = []
     for column, (lo, hi) in constraints.items():
         for bound, sign in ((lo, 1.0), (hi, -1.0)):
@@ -234,7 +237,13 @@ def _slsqp_constraints(values, constraints) -> list:
             def g(u, column=column, bound=bound, sign=sign, scale=scale):
                 v = values(u)
                 return sign * (v[column] - bound) / scale if v else -1.0
-            out.append({"type": "ineq", "fun": g})
+            entry = {"type": "ineq", "fun": g}
+            if gradients is not None:
+                def dg(u, column=column, sign=sign, scale=scale):
+                    d = gradients(u)
+                    return sign * d[column] / scale if d else np.zeros(2)
+                entry["jac"] = dg
+            out.append(entry)
     return out
 
 
@@ -315,24 +324,13 @@ class _ExactEvaluation:
             return -math.log(value), -grad / value
         return f
 
-    def constraints(self, constraints) -> list:
-        out = []
-        for column, (lo, hi) in constraints.items():
-            for bound, sign in ((lo, 1.0), (hi, -1.0)):
-                if bound is None:
-                    continue
-                scale = max(abs(bound), 1e-12)
+    def values(self, u):
+        v = self.at(u)
+        return {c: value for c, (value, _) in v.items()} if v else None
 
-                def g(u, column=column, bound=bound, sign=sign, scale=scale):
-                    v = self.at(u)
-                    return sign * (v[column][0] - bound) / scale if v else -1.0
-
-                def dg(u, column=column, sign=sign, scale=scale):
-                    v = self.at(u)
-                    return sign * v[column][1] / scale if v else np.zeros(2)
-
-                out.append({"type": "ineq", "fun": g, "jac": dg})
-        return out
+    def gradients(self, u):
+        v = self.at(u)
+        return {c: grad for c, (_, grad) in v.items()} if v else None
 
 
 def _bending_pair(bending_gradient, design, protocol, parameters) -> dict:
