@@ -23,7 +23,6 @@ import re
 from dataclasses import dataclass, field
 
 import numpy as np
-import scipy.sparse as sp
 
 from kresling import _core
 from kresling._validation import as_float_array, show
@@ -144,7 +143,7 @@ def shape_jacobian(model, u):
     """
     u = _displacement(model, u)
     (data, indices, indptr, shape), energy = _core.assembly.shape_jacobian(model._core, u)
-    return sp.csc_matrix((data, indices, indptr), shape=shape), np.asarray(energy)
+    return _csc((data, indices, indptr, shape)), np.asarray(energy)
 
 
 def parameter_names(model) -> list:
@@ -194,7 +193,7 @@ def parameter_jacobian(model, u, parameter):
             model._core, u, p.family, p.column)
     except ValueError as error:
         raise ValueError(f"parameter {p.label!r}: {error}") from None
-    return sp.csc_matrix((data, indices, indptr), shape=shape), np.asarray(energy)
+    return _csc((data, indices, indptr, shape)), np.asarray(energy)
 
 
 def with_parameter(model, parameter, values):
@@ -281,6 +280,10 @@ class _Resolved:
 
 
 def _csc(parts):
+    # Here, not at the top: a command that never differentiates (kresling bend) does not
+    # pay for importing scipy.
+    import scipy.sparse as sp
+
     data, indices, indptr, shape = parts
     return sp.csc_matrix((data, indices, indptr), shape=shape)
 
