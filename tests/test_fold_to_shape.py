@@ -1,4 +1,5 @@
-"""Folding by gradient (kresling.solvers.fold_to_shape): rest angles found from a shape.
+"""Folding by gradient (kresling.solvers.fold_to_shape): rest angles found from a shape; and
+the sensitivities of a fold's every step (kresling.solvers.fold_sensitivity).
 
 The reference is a forward fold: a Miura-ori sheet (3 x 3 cells, one panel held) folded
 with a different rest angle on every fold crease (not a rigid folding: its panels bend and
@@ -17,7 +18,8 @@ import pytest
 from kresling.io.miura import miura_sheet
 from kresling.model import ManualProperties, build_pattern_model
 from kresling.model.fold_angles import hinge_fold_signs, rest_angles_for
-from kresling.solvers import solve_fold
+from kresling.solvers import Parameter, solve_fold, with_parameter
+from kresling.solvers.fold_sensitivity import fold_sensitivity
 from kresling.solvers.fold_to_shape import TOLERANCE, fold_to_shape
 
 STIFF = ManualProperties(bar_modulus=1e5, bar_area=1.0, fold_stiffness=1.0, bend_stiffness=1.0)
@@ -86,3 +88,53 @@ def test_bad_requests_are_refused(sheet, kwargs, message):
     with pytest.raises(ValueError, match=message):
         fold_to_shape(pm.model, args["hinges"], args["nodes"], args["targets"],
                       initial=args.get("initial"))
+
+
+def _two_stage_fold(model, hinges, truth, stiffness=None, shift_target=None):
+    """Stage 1 folds every crease to ``truth``; stage 2 moves the first three 0.1 rad on."""
+    stage1 = truth.copy()
+    if shift_target is not None:
+        stage1[shift_target[0]] += shift_target[1]
+    stages = [(hinges, stage1), (hinges[:3], truth[:3] + 0.1)]
+    if stiffness is not None:
+        model = with_parameter(model, "hinges.stiffness", stiffness)
+    path = solve_fold(model, stages, 5, tolerance=TOLERANCE, extrapolation=2, shift=0.0)
+    assert path.completed
+    return stages, path
+
+
+def test_fold_sensitivities_match_folds_again(sheet):
+    # d(every step's displacements and reactions)/d(the creases' stiffness, every target)
+    # against the fold run again with each moved by +-h: stiffness h = 1e-5 of it, targets
+    # h = 1e-6 rad (Newton's 1e-10 mm over 2h: 5e-5 of the 1 mm/rad scale; truncation ~h^2).
+    pm, hinges, truth = sheet
+    model = pm.model
+    stages, path = _two_stage_fold(model, hinges, truth)
+    stiffness = np.asarray(model.hinge_stiffness, dtype=float)
+    w = np.zeros_like(stiffness)
+    w[hinges] = 1.0
+    crease_stiffness = Parameter("hinges", "stiffness", direction=w, name="creases")
+    sens = fold_sensitivity(model, stages, path, [crease_stiffness], targets=True)
+    assert sens.parameters[0] == "creases" and sens.parameters[1] == "stage 0 target[0]"
+    assert sens.displacement.shape == (path.num_steps, model.num_dofs, 1 + hinges.size + 3)
+    h = 1e-5 * stiffness[hinges].mean()
+    plus = _two_stage_fold(model, hinges, truth, stiffness + h * w)[1]
+    minus = _two_stage_fold(model, hinges, truth, stiffness - h * w)[1]
+    fd = (plus.displacement - minus.displacement) / (2 * h)
+    scale = np.abs(fd).max()
+    assert scale > 1e-3
+    assert np.abs(sens.displacement[:, :, 0] - fd).max() < 1e-4 * scale
+    for j, (s, i) in enumerate([(0, 0), (0, 4), (1, 1)]):
+        column = sens.parameters.index(f"stage {s} target[{i}]")
+        h = 1e-6
+        if s == 0:
+            a = _two_stage_fold(model, hinges, truth, shift_target=(i, h))[1]
+            b = _two_stage_fold(model, hinges, truth, shift_target=(i, -h))[1]
+        else:
+            def moved(dh):
+                st = [(hinges, truth), (hinges[:3], truth[:3] + 0.1 + dh * (np.arange(3) == i))]
+                return solve_fold(model, st, 5, tolerance=TOLERANCE, extrapolation=2, shift=0.0)
+            a, b = moved(h), moved(-h)
+        fd = (a.displacement - b.displacement) / (2 * h)
+        np.testing.assert_allclose(sens.displacement[:, :, column], fd,
+                                   atol=1e-4 * max(np.abs(fd).max(), 1e-3))
