@@ -8,7 +8,9 @@ guide (:mod:`kresling.arm.structure`). On it, in the C++ core:
 - :func:`tip_load`: tip displacement and the 3 x 3 tip compliance under a tip force;
 - :func:`load_capacity`: the largest tip load before a module snaps or a tendon goes slack;
 - :func:`pull_until_snap`: pull tendons (all, or some) until a module snaps: which one, the
-  tendon force and the configuration it lands in.
+  tendon force and the configuration it lands in;
+- :func:`reach`: the configuration and tendon pulls that bring the tip to a point, on the
+  exact tip Jacobian (:func:`tip_jacobian`).
 
 Submodules beyond these: ``capacity`` (the load-capacity table of every configuration),
 ``actuation`` (tendon commands in, the structure's shape out, beside the constant-curvature
@@ -21,6 +23,7 @@ from kresling.arm.analyses import (CAPACITY_DIRECTIONS, DEFAULT_PRETENSION, ArmS
                                    CapacityResult, EquilibriumNotReached, SnapResult,
                                    TipLoadResult, arm_summary, load_capacity, pull_until_snap,
                                    tip_load)
+from kresling.arm.reach import ReachResult, reach, tip_jacobian
 from kresling.arm.structure import (THESIS_DESIGN, Arm, ArmParameters, all_configurations,
                                     build_arm, parse_configuration)
 
@@ -28,4 +31,4 @@ __all__ = ["Arm", "ArmParameters", "build_arm", "parse_configuration", "all_conf
            "THESIS_DESIGN", "ArmSolver", "ArmState", "EquilibriumNotReached",
            "DEFAULT_PRETENSION", "TipLoadResult",
            "tip_load", "SnapResult", "pull_until_snap", "CapacityResult", "load_capacity",
-           "CAPACITY_DIRECTIONS", "arm_summary"]
+           "CAPACITY_DIRECTIONS", "arm_summary", "reach", "ReachResult", "tip_jacobian"]

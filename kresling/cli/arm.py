@@ -50,6 +50,12 @@ def register(subparsers) -> None:
     analysis = parser.add_argument_group("analysis (one at most)")
     analysis.add_argument("--tip-load", type=float, nargs=3, metavar=("FX", "FY", "FZ"),
                           help="tip force [N] on the tip guide's centre")
+    analysis.add_argument("--reach", type=float, nargs=3, metavar=("X", "Y", "Z"),
+                          help="the configuration and the tendon pulls (after the pretension; "
+                               "what --pulls takes) that bring the tip guide's centre to this "
+                               "point [mm], on the structural model (every configuration of "
+                               "--modules, or --config alone); exit 1 when out of reach, with "
+                               "the nearest point reached")
     analysis.add_argument("--pull-all", action="store_true",
                           help="shorten all three tendons together until the first module snaps")
     analysis.add_argument("--pull-tendon", type=int, choices=(1, 2, 3),
@@ -85,6 +91,9 @@ def register(subparsers) -> None:
                              "--tip-load)")
     parser.add_argument("--max-pull", type=float,
                         help="largest pull for --pull-all/--pull-tendon [mm]")
+    parser.add_argument("--prefer", choices=("travel", "stiffness"), default="travel",
+                        help="with --reach, among the configurations that reach the target: "
+                             "the smallest tendon travel (default) or the stiffest tip")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.set_defaults(func=run_reporting)
 
@@ -118,7 +127,8 @@ def run(args) -> int:
                               build_arm, load_capacity, pull_until_snap, tip_load)
     from kresling.manipulator import TendonDrive
 
-    chosen = [name for name, on in (("--tip-load", args.tip_load is not None),
+    chosen = [name for name, on in (("--reach", args.reach is not None),
+                                    ("--tip-load", args.tip_load is not None),
                                     ("--pull-all", args.pull_all),
                                     ("--pull-tendon", args.pull_tendon is not None),
                                     ("--capacity", args.capacity),
@@ -142,6 +152,8 @@ def run(args) -> int:
         return arm_dynamics.run_gravity(args, _arm_options(args), _pretension(args))
     if args.modes is not None:
         return arm_dynamics.run_modes(args, _arm_options(args), _pretension(args))
+    if args.reach is not None:
+        return _run_reach(args)
     if args.table:
         return _run_table(args)
     if args.table5:
@@ -262,6 +274,35 @@ def _run_table(args) -> int:
         print(f"wrote {args.plot} (load-capacity figure)",
               file=sys.stderr if args.json else sys.stdout)
     return 0
+
+
+def _run_reach(args) -> int:
+    from kresling.arm.reach import reach
+
+    if args.pulls is not None:
+        raise ValueError("pulls: --reach finds the pulls; leave --pulls out")
+    configurations = None if args.config is None else [_configuration(args)]
+    modules = 3 if args.modules is None else args.modules
+    r = reach(args.reach, configurations=configurations, prefer=args.prefer,
+              pretension=_pretension(args), modules=modules, **_arm_options(args))
+    out = {"target": r.target.tolist(), "configuration": r.configuration,
+           "tendon_displacements": r.tendon_displacements.tolist(),
+           "tip_position": r.tip_position.tolist(), "error": r.error, "reached": r.reached,
+           "prefer": args.prefer, "pretension": _pretension(args),
+           "candidates": {c: (dict(zip(("error", "travel", "compliance"), v))
+                              if isinstance(v, tuple) else {"failed": v})
+                          for c, v in r.candidates.items()},
+           "message": r.message}
+    if args.json:
+        print_json(out)
+    else:
+        print_table([("configuration", r.configuration, ""),
+                     *((f"pull {t + 1}", p, "mm") for t, p in enumerate(r.tendon_displacements)),
+                     *((f"tip {a}", v, "mm") for a, v in zip("xyz", r.tip_position)),
+                     ("error", r.error, "mm")], ("quantity", "value", "unit"))
+        print(f"\n{'reached' if r.reached else r.message}; check: kresling arm --config "
+              f"{r.configuration} --pulls " + " ".join(f"{p:.9g}" for p in r.tendon_displacements))
+    return 0 if r.reached else 1
 
 
 def _pretension(args) -> float:

@@ -1,0 +1,259 @@
+"""Reaching a point with the structural arm: the configuration and the tendon pulls that
+bring its tip to a target.
+
+For one configuration (which modules are extended) the arm is pretensioned as
+:func:`~kresling.arm.tip_load` does, then the three tendons' further pulls ``P`` (mm,
+shortening positive: what ``kresling arm --pulls`` takes) are sought so that the tip guide's
+centre is at the target: a bounded least-squares problem (a tendon cannot push, so
+``P >= 0``) solved by SciPy's trust-region reflective method on the exact tip Jacobian
+``d tip / d P`` (:func:`tip_jacobian`: the equilibrium's sensitivity to the tendons' rest
+lengths, one factorisation and three solves). Every configuration that reaches the target
+is a candidate; the one returned has the smallest tendon travel (``prefer="travel"``, the
+sum of the pulls) or the stiffest tip (``prefer="stiffness"``, the smallest largest
+compliance). A target no configuration reaches is answered with the nearest point one
+reaches, and says so.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from kresling._validation import as_float_array, as_positive_real, show
+from kresling.arm.analyses import DEFAULT_PRETENSION, ArmSolver, ArmState
+from kresling.arm.structure import Arm, all_configurations, build_arm, parse_configuration
+from kresling.solvers.sensitivity import Parameter, equilibrium_sensitivity, with_parameter
+
+__all__ = ["tip_jacobian", "ReachResult", "reach", "reach_with", "REACH_TOLERANCE"]
+
+#: A target counts as reached when the tip is within this distance of it [mm].
+REACH_TOLERANCE = 1e-3
+#: Increments of each move of the search (from the last equilibrium: short moves).
+_STEPS = 3
+#: Halvings of a move's increments before the move counts as one the arm does not follow
+#: (a snap): few, so that trying a step too far costs little; the step is halved instead.
+_BISECTIONS = 3
+#: Gauss-Newton steps of one configuration's search.
+_MAX_ITERATIONS = 30
+
+
+def tip_jacobian(arm: Arm, state: ArmState) -> np.ndarray:
+    """d(tip position)/d(pull of each tendon) at an equilibrium ``state`` of ``arm``,
+    (3, 3) [mm/mm], column t for tendon t (a pull shortens the tendon's rest length by as
+    much). A slack tendon's column is zero.
+
+    Raises
+    ------
+    ValueError
+        Where the arm's tangent is singular (a module at its snap).
+    """
+    rest = arm.slack_length - np.asarray(state.pulls, dtype=float)
+    model = with_parameter(arm.model, "cables.rest_length", rest)
+    sens = equilibrium_sensitivity(model, state.displacement,
+                                   [Parameter("cables", "rest_length", entry=t) for t in range(3)])
+    tip = 3 * arm.tip_node + np.arange(3)
+    return -sens.displacement[tip, :]
+
+
+@dataclass(frozen=True)
+class ReachResult:
+    """The answer of :func:`reach`.
+
+    Attributes
+    ----------
+    target : ndarray (3,)
+        [mm]
+    configuration : str
+        Module states from the base ("1" extended, "0" contracted).
+    tendon_displacements : ndarray (3,)
+        Each tendon's pull after the pretension [mm], shortening positive (``--pulls``).
+    tip_position : ndarray (3,)
+        Where the tip ends [mm].
+    error : float
+        Its distance from the target [mm].
+    reached : bool
+        ``error <= tolerance``.
+    state : ArmState
+        The arm's equilibrium there.
+    candidates : dict
+        Per configuration tried: ``(error [mm], tendon travel [mm], largest tip compliance
+        [mm/N])``, or the reason it failed.
+    message : str
+    """
+
+    target: np.ndarray
+    configuration: str
+    tendon_displacements: np.ndarray
+    tip_position: np.ndarray
+    error: float
+    reached: bool
+    state: ArmState = field(repr=False)
+    candidates: dict = field(repr=False)
+    message: str = ""
+
+
+def _solve_pulls(arm, solver, base, target, start):
+    """Gauss-Newton on the tip's miss over the pulls >= 0, from ``start``: (pulls, state,
+    evaluations). Each step is the linearised problem's bounded least squares (no pull
+    below zero); it is halved until the arm follows it to an equilibrium nearer
+    the target (a step that makes a module snap is one it does not follow), and the search
+    ends where no step gets nearer: at the target, or at the nearest point this
+    configuration reaches. Each equilibrium is followed from the last one (the arm is
+    elastic: where it rests at given pulls does not depend on the way there)."""
+    from scipy.optimize import lsq_linear
+
+    evaluations = 0
+
+    def move(state, P):
+        nonlocal evaluations
+        evaluations += 1
+        states, completed, _ = solver.ramp(state, base.pulls + P)
+        return states[-1] if completed else None
+
+    P = np.zeros(3)
+    state = base
+    trial = np.maximum(start, 0.0)
+    for _ in range(8):  # the start, shortened toward no pull until the arm follows it
+        moved = move(state, trial)
+        if moved is not None:
+            P, state = trial, moved
+            break
+        trial = 0.5 * trial
+    miss = np.linalg.norm(state.tip_position - target)
+    for _ in range(_MAX_ITERATIONS):
+        if miss <= 0.01 * REACH_TOLERANCE:
+            break
+        # The linearised miss's least squares over the steps that keep every pull >= 0.
+        step = lsq_linear(tip_jacobian(arm, state), target - state.tip_position,
+                          bounds=(-P, np.inf)).x
+        scale, accepted = 1.0, False
+        while scale >= 1.0 / 64:
+            trial = np.maximum(P + scale * step, 0.0)
+            moved = move(state, trial)
+            if moved is not None:
+                trial_miss = np.linalg.norm(moved.tip_position - target)
+                if trial_miss < miss:
+                    P, state, miss, accepted = trial, moved, trial_miss, True
+                    break
+            scale *= 0.5
+        if not accepted:
+            break
+    return P, state, evaluations
+
+
+def reach_with(arm: Arm, target, *, pretension: float = DEFAULT_PRETENSION,
+               start=None) -> tuple:
+    """The pulls (after the pretension) that bring ``arm``'s tip nearest to ``target``, in
+    its own configuration, without a module snapping on the way: ``(pulls (3,), state,
+    arm's equilibria computed)``.
+
+    Raises
+    ------
+    ValueError
+        For a bad target; EquilibriumNotReached where the arm cannot be pretensioned.
+    """
+    target = _target(target)
+    # The arm's own solver settings (Newton to 1e-6 mm), as `kresling arm --pulls` runs it,
+    # so that those pulls give back the tip found here.
+    solver = ArmSolver(arm, steps=_STEPS, max_bisections=_BISECTIONS, max_iterations=12)
+    base = solver.pretension(pretension)
+    if start is None:
+        # The linearised answer from the pretensioned arm: often within a few per cent.
+        miss = target - base.tip_position
+        start = np.linalg.lstsq(tip_jacobian(arm, base), miss, rcond=None)[0]
+    start = np.maximum(as_float_array("start", start), 0.0)
+    return _solve_pulls(arm, solver, base, target, start)
+
+
+def reach(target, *, configurations=None, prefer="travel", tolerance=REACH_TOLERANCE,
+          pretension: float = DEFAULT_PRETENSION, **arm_options) -> ReachResult:
+    """The configuration and tendon pulls that bring the structural arm's tip to ``target``.
+
+    Parameters
+    ----------
+    target : array_like (3,)
+        The tip guide's centre [mm], in the base's frame (z up the arm).
+    configurations : sequence of str, optional
+        Those to try (default: every one of the arm's modules' states).
+    prefer : {"travel", "stiffness"}
+        Among the configurations that reach the target: the smallest tendon travel (sum of
+        the pulls), or the stiffest tip (the smallest largest eigenvalue of its compliance).
+    tolerance : float
+        Reached when the tip is within this distance [mm].
+    pretension : float
+        Each tendon's tension before the pulls [N] (as ``tip_load``).
+    **arm_options
+        ``modules`` (default 3), and :func:`~kresling.arm.build_arm`'s ``n``, ``lam``,
+        ``Lc``, ``R``, ``parameters``.
+
+    Returns
+    -------
+    ReachResult
+        ``reached`` False: no configuration gets there; the result is the nearest point one
+        reaches.
+    """
+    target = _target(target)
+    if prefer not in ("travel", "stiffness"):
+        raise ValueError(f"prefer = {show(prefer)} is invalid: must be 'travel' or 'stiffness'")
+    tolerance = as_positive_real("tolerance", tolerance)
+    modules = arm_options.pop("modules", 3)
+    if configurations is None:
+        configurations = all_configurations(modules)
+    else:
+        configurations = ["".join(str(s) for s in parse_configuration(c, modules))
+                          for c in configurations]
+    best, candidates = None, {}
+    # Pulling only shortens an arm: one whose built tip is nearer the base than the target
+    # cannot reach it (unless none is taller: then the tallest gives the nearest point). A
+    # module's two cells stand at their state's height.
+    design = build_arm(configurations[0], **arm_options).design
+    height = {c: 2.0 * sum(design.height(int(s)) for s in c) for c in configurations}
+    distance = float(np.linalg.norm(target))
+    tall = [c for c in configurations if height[c] >= distance] or \
+        [max(configurations, key=height.get)]
+    for configuration in configurations:
+        if configuration not in tall:
+            candidates[configuration] = (f"too short: its tip is {height[configuration]:.1f} mm "
+                                         f"from the base as built, the target {distance:.1f} mm")
+            continue
+        arm = build_arm(configuration, **arm_options)
+        try:
+            pulls, state, _ = reach_with(arm, target, pretension=pretension)
+        except (ValueError, RuntimeError) as error:
+            candidates[configuration] = str(error)
+            continue
+        error = float(np.linalg.norm(state.tip_position - target))
+        compliance = float(np.linalg.eigvalsh(_symmetric(ArmSolver(arm).tip_compliance(state)))
+                           .max())
+        travel = float(pulls.sum())
+        candidates[configuration] = (error, travel, compliance)
+        key = (error > tolerance, error if error > tolerance else 0.0,
+               travel if prefer == "travel" else compliance)
+        if best is None or key < best[0]:
+            best = (key, configuration, pulls, state, error)
+    if best is None:
+        raise ValueError(f"target {target.tolist()}: no configuration could be pulled toward it "
+                         f"({candidates})")
+    _, configuration, pulls, state, error = best
+    reached = error <= tolerance
+    message = ("" if reached else
+               f"target out of reach: the nearest point reached is {error:.3g} mm away "
+               f"({state.tip_position.round(3).tolist()}, configuration {configuration})")
+    return ReachResult(target, configuration, pulls, state.tip_position.copy(), error, reached,
+                       state, candidates, message)
+
+
+def _symmetric(C):
+    C = np.asarray(C, dtype=float)
+    return 0.5 * (C + C.T)
+
+
+def _target(target) -> np.ndarray:
+    t = as_float_array("target", target).ravel()
+    if t.shape != (3,) or not np.all(np.isfinite(t)):
+        raise ValueError(f"target = {show(target)} is invalid: must be three finite coordinates "
+                         "[mm]")
+    if t[2] <= 0:
+        raise ValueError(f"target = {t.tolist()} is invalid: must be above the base (z > 0 mm)")
+    return t
