@@ -90,3 +90,20 @@ def test_the_command_line_reach_and_its_check(capsys):
     np.testing.assert_allclose(check["tip_position"], out["tip_position"], atol=1e-4)
     assert main(["arm", "--config", "111", "--reach", "0", "0", "400"]) == 1
     assert "out of reach" in capsys.readouterr().out
+
+
+def test_closing_the_loop_beats_the_open_loop_on_a_perturbed_arm():
+    from kresling.arm.closed_loop import closed_loop
+
+    target = tip_load(build_arm("101"), [0.0, 0.0, 0.0], pulls=[4.0, 1.0, 0.5]).state.tip_position
+    run = closed_loop(target, seed=1, iterations=3, configurations=["101"])
+    assert run.configuration == "101" and run.closed_loop.shape == (3,)
+    # The true arm misses in open loop; three corrections bring it to the camera's error.
+    assert run.open_loop_structural > 0.3
+    assert run.closed_loop[-1] < 0.5 * run.open_loop_structural
+    assert run.closed_loop[-1] < 0.01 * run.arm_length
+    # Without the camera's error and with a true arm equal to the model, the open loop is
+    # the plan itself and the loop has nothing to correct.
+    exact = closed_loop(target, seed=1, iterations=1, configurations=["101"], camera_error=0.0,
+                        spread={"kf": 0.0, "Lc": 0.0, "tendon_radius": 0.0})
+    assert exact.open_loop_structural < 1e-3 and exact.closed_loop[0] < 1e-3

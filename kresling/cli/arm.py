@@ -91,6 +91,13 @@ def register(subparsers) -> None:
                              "--tip-load)")
     parser.add_argument("--max-pull", type=float,
                         help="largest pull for --pull-all/--pull-tendon [mm]")
+    parser.add_argument("--closed-loop", action="store_true",
+                        help="with --reach: move an arm that differs from the model (crease "
+                             "stiffness, cell height and tendon radius drawn by --seed), measure "
+                             "its tip with 0.2 mm of camera error and correct the pulls on the "
+                             "model's tip Jacobian, five times; print each step's error")
+    parser.add_argument("--seed", type=int, default=0,
+                        help="with --closed-loop: the draw of the true arm and the camera")
     parser.add_argument("--prefer", choices=("travel", "stiffness"), default="travel",
                         help="with --reach, among the configurations that reach the target: "
                              "the smallest tendon travel (default) or the stiffest tip")
@@ -283,6 +290,8 @@ def _run_reach(args) -> int:
         raise ValueError("pulls: --reach finds the pulls; leave --pulls out")
     configurations = None if args.config is None else [_configuration(args)]
     modules = 3 if args.modules is None else args.modules
+    if args.closed_loop:
+        return _run_closed_loop(args, configurations)
     r = reach(args.reach, configurations=configurations, prefer=args.prefer,
               pretension=_pretension(args), modules=modules, **_arm_options(args))
     out = {"target": r.target.tolist(), "configuration": r.configuration,
@@ -303,6 +312,31 @@ def _run_reach(args) -> int:
         print(f"\n{'reached' if r.reached else r.message}; check: kresling arm --config "
               f"{r.configuration} --pulls " + " ".join(f"{p:.9g}" for p in r.tendon_displacements))
     return 0 if r.reached else 1
+
+
+def _run_closed_loop(args, configurations) -> int:
+    from kresling.arm.closed_loop import closed_loop
+
+    if args.modules not in (None, 3) or args.tendon_radius != 32.0 or args.contact > 0:
+        raise ValueError("closed-loop: the closed loop runs on the thesis's three-module arm; "
+                         "leave --modules, --tendon-radius and --contact at their defaults")
+    r = closed_loop(args.reach, seed=args.seed, configurations=configurations,
+                    pretension=_pretension(args))
+    out = {"target": r.target.tolist(), "configuration": r.configuration, "seed": args.seed,
+           "arm_length": r.arm_length,
+           "open_loop_kinematic": None if r.open_loop_kinematic != r.open_loop_kinematic
+           else r.open_loop_kinematic,
+           "open_loop_structural": r.open_loop_structural,
+           "closed_loop": r.closed_loop.tolist(), "tendon_displacements": r.pulls.tolist()}
+    if args.json:
+        print_json(out)
+    else:
+        rows = [("open loop, constant curvature", r.open_loop_kinematic),
+                ("open loop, structural model", r.open_loop_structural),
+                *((f"closed loop, correction {k + 1}", e) for k, e in enumerate(r.closed_loop))]
+        print_table([(name, e, 100 * e / r.arm_length) for name, e in rows],
+                    ("tip error", "mm", "% of the arm's length"))
+    return 0
 
 
 def _pretension(args) -> float:
