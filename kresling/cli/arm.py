@@ -97,7 +97,8 @@ def register(subparsers) -> None:
                              "its tip with 0.2 mm of camera error and correct the pulls on the "
                              "model's tip Jacobian, five times; print each step's error")
     parser.add_argument("--seed", type=int, default=0,
-                        help="with --closed-loop: the draw of the true arm and the camera")
+                        help="with --closed-loop: the draw of the true arm and the camera, an "
+                             "integer index (default 0)")
     parser.add_argument("--prefer", choices=("travel", "stiffness"), default="travel",
                         help="with --reach, among the configurations that reach the target: "
                              "the smallest tendon travel (default) or the stiffest tip")

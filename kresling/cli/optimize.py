@@ -19,7 +19,8 @@ def register(subparsers) -> None:
                     "from the best design of a coarse grid. Constraints bound other metrics, "
                     "e.g. --min kb_con 0.3 (a joint not too soft) or --max snap_force 5.",
     )
-    parser.add_argument("--n", type=int, required=True, help="sides of the base polygon")
+    parser.add_argument("--n", type=int, required=True,
+                        help="sides of the base polygon, a count (even for the bending metrics)")
     parser.add_argument("--metric", default="kb_ratio",
                         help="the metric column to maximise (default kb_ratio)")
     parser.add_argument("--Lc", type=float, nargs=2, metavar=("MIN", "MAX"),
