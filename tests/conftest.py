@@ -6,6 +6,10 @@ import pytest
 
 TESTS = Path(__file__).resolve().parent
 
+#: slow_check: a test not marked slow that takes over 10 s fails (tests/slow_check.py);
+#: pytester: for the test of that check.
+pytest_plugins = ["slow_check", "pytester"]
+
 
 @pytest.fixture(scope="session")
 def golden_dir() -> Path:
