@@ -58,16 +58,18 @@ def intersecting_pairs(x, triangles) -> list:
     lo, hi = x[tri].min(axis=1), x[tri].max(axis=1)
     distinct = len(tri) == 0 or bool(np.all((tri[:, 0] != tri[:, 1]) & (tri[:, 1] != tri[:, 2])
                                             & (tri[:, 0] != tri[:, 2])))
-    pairs = []
+    first, second = [], []
     for i in range(len(tri)):
         overlap = np.all((lo[i + 1:] <= hi[i]) & (lo[i] <= hi[i + 1:]), axis=1)
-        others = np.nonzero(overlap)[0] + i + 1
-        if distinct:
-            others = others[_may_intersect(x, tri[i], tri[others])]
-        for j in others:
-            if triangles_intersect(x, tuple(tri[i]), tuple(tri[j])):
-                pairs.append((i, int(j)))
-    return pairs
+        second.append(np.nonzero(overlap)[0] + i + 1)
+        first.append(np.full(len(second[-1]), i))
+    first = np.concatenate(first) if first else np.zeros(0, dtype=int)
+    second = np.concatenate(second) if second else np.zeros(0, dtype=int)
+    if distinct:   # all the boxes' pairs at once
+        kept = _may_intersect(x, tri[first], tri[second])
+        first, second = first[kept], second[kept]
+    return [(int(i), int(j)) for i, j in zip(first, second)
+            if triangles_intersect(x, tuple(tri[i]), tuple(tri[j]))]
 
 
 #: The prefilter's margin, relative to the size of each quantity's rounding error (a few
@@ -77,19 +79,19 @@ _MARGIN = 1e-9
 
 
 def _may_intersect(x, s, t) -> np.ndarray:
-    """For triangle ``s`` (3,) and triangles ``t`` (P, 3), all of distinct nodes: False
+    """For the pairs of triangles ``s`` and ``t`` (P, 3), each of distinct nodes: False
     where :func:`triangles_intersect` certainly answers False, True where it may not."""
-    meets = s[None, :, None] == t[:, None, :]            # (P, 3, 3): s[a] is t[b]
+    meets = s[:, :, None] == t[:, None, :]               # (P, 3, 3): s[a] is t[b]
     s_shared, t_shared = meets.any(axis=2), meets.any(axis=1)
     maybe = np.zeros(len(t), dtype=bool)
     for k in range(3):
         k1 = (k + 1) % 3
-        # An edge of s against each triangle of t, then an edge of each of t against s.
+        # An edge of each s against its t, then an edge of each t against its s.
         tested = ~(s_shared[:, k] | s_shared[:, k1])
-        crosses = _may_cross(x[s[k]], x[s[k1]], x[t[:, 0]], x[t[:, 1]], x[t[:, 2]])
+        crosses = _may_cross(x[s[:, k]], x[s[:, k1]], x[t[:, 0]], x[t[:, 1]], x[t[:, 2]])
         maybe |= tested & crosses
         tested = ~(t_shared[:, k] | t_shared[:, k1])
-        crosses = _may_cross(x[t[:, k]], x[t[:, k1]], x[s[0]], x[s[1]], x[s[2]])
+        crosses = _may_cross(x[t[:, k]], x[t[:, k1]], x[s[:, 0]], x[s[:, 1]], x[s[:, 2]])
         maybe |= tested & crosses
     return maybe & (s_shared.sum(axis=1) < 2)
 
