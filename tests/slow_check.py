@@ -15,7 +15,8 @@ builds it as long as one unmarked test asks for it). It is the sum of
   (Linux's pressure stall information, ``/proc/pressure/cpu``), so that a test is never
   charged for a busy machine: on a loaded machine (``pytest -n`` runs a worker per core, and
   CI machines are shared) wall time grows with the load, the CPU a test needs does not.
-  Where the kernel does not report CPU pressure, this part is not counted.
+  Where the kernel does not report CPU pressure (not Linux, or Linux before 4.20), this part
+  is not counted.
 
 ``KRESLING_SLOW_LIMIT`` (seconds) overrides the limit; ``0`` turns the check off (``make fuzz``
 and ``make sanitize``, which run tests at many times their usual cost). The cost of each test
@@ -53,23 +54,25 @@ def cpu_seconds() -> float:
     return times.user + times.system + times.children_user + times.children_system
 
 
-def stall_seconds(pressure: Path) -> float:
+def stall_seconds(pressure: Path) -> float | None:
     """Total time some task on the machine waited for a CPU since boot [s], from the file
-    ``pressure`` (/proc/pressure/cpu); 0 where the kernel does not say (then every
-    difference of it is 0)."""
+    ``pressure`` (/proc/pressure/cpu); None where the kernel does not say."""
     try:
         line = pressure.read_text().splitlines()[0]        # some avg10=... total=<us>
         return int(line.rsplit("total=", 1)[1]) * 1e-6
     except (OSError, IndexError, ValueError):
-        return 0.0
+        return None
 
 
-def charged(cpu: float, wall: float, stall: float) -> float:
+def charged(cpu: float, wall: float, stall: float | None) -> float:
     """A test's cost [s]: its ``cpu`` time, and of its ``wall`` time what neither that CPU
     time nor the machine's CPU pressure (``stall``, time a task waited for a CPU) explains.
     The pressure is an upper bound of the time the test and its children waited for a core
-    (they wait one after the other), so what remains is time the test waited on its own."""
-    return cpu + max(0.0, wall - cpu - stall)
+    (they wait one after the other), so what remains is time the test waited on its own.
+    Without a measure of the pressure (``stall`` None), its CPU time alone."""
+    if stall is None:
+        return cpu
+    return cpu + max(0.0, wall - cpu - max(0.0, stall))
 
 
 def limit() -> float:
@@ -103,9 +106,9 @@ def pytest_runtest_makereport(item, call):
     report = outcome.get_result()
     if call.when != "call" or _START not in item.stash:
         return
-    cpu, wall, stall = (end - start for end, start in zip(_now(item.config),
-                                                          item.stash[_START]))
-    cost = charged(cpu, wall, max(0.0, stall))
+    (cpu0, wall0, stall0), (cpu1, wall1, stall1) = item.stash[_START], _now(item.config)
+    cpu, wall = cpu1 - cpu0, wall1 - wall0
+    cost = charged(cpu, wall, None if stall0 is None or stall1 is None else stall1 - stall0)
     item.user_properties += [("cpu_seconds", round(cpu, 3)), ("charged_seconds", round(cost, 3))]
     seconds = item.config.stash[_LIMIT]
     if (seconds <= 0 or cost <= seconds or not report.passed

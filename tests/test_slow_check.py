@@ -92,6 +92,7 @@ def test_a_test_is_charged_its_cpu_time_and_its_waiting_never_the_machines_load(
     assert charged(cpu=0.1, wall=12.0, stall=0.0) == pytest.approx(12.0)  # a sleep
     assert charged(cpu=0.1, wall=12.0, stall=5.0) == pytest.approx(7.0)   # part of it loaded
     assert charged(cpu=16.0, wall=8.0, stall=0.0) == 16.0     # two threads: CPU time
+    assert charged(cpu=0.1, wall=12.0, stall=None) == 0.1     # no measure of the pressure
 
 
 def test_the_cpu_pressure_is_read_or_taken_as_none(tmp_path, monkeypatch):
@@ -99,13 +100,15 @@ def test_the_cpu_pressure_is_read_or_taken_as_none(tmp_path, monkeypatch):
     pressure.write_text("some avg10=1.00 avg60=0.50 avg300=0.10 total=2500000\n"
                         "full avg10=0.00 avg60=0.00 avg300=0.00 total=0\n")
     assert slow_check.stall_seconds(pressure) == 2.5
-    assert slow_check.stall_seconds(tmp_path / "missing") == 0.0
+    assert slow_check.stall_seconds(tmp_path / "missing") is None
 
 
 def test_an_unmarked_test_over_the_limit_fails_saying_why(pytester, monkeypatch):
     # No CPU pressure in the run it starts, so that test_waiting's sleep is charged whatever
     # the machine's load (this run's own check keeps the file it read).
-    monkeypatch.setattr(slow_check, "PRESSURE", pytester.path / "no_pressure")
+    quiet = pytester.path / "pressure"
+    quiet.write_text("some avg10=0.00 avg60=0.00 avg300=0.00 total=0\n")
+    monkeypatch.setattr(slow_check, "PRESSURE", quiet)
     result = _run(pytester, monkeypatch, LIMIT)
     assert _outcomes(result) == EXPECTED
     result.stdout.fnmatch_lines([
