@@ -10,6 +10,13 @@ PY := $(VENV)/bin/python
 BUILD_DIR := build/py
 # libcairo2: cairosvg (the fabrication extra) renders the cut files' PNG previews with it.
 APT_PACKAGES := g++ make libeigen3-dev libsuitesparse-dev liblapack-dev libgtest-dev libcairo2
+# The CPUs this process may use: ctest's and pytest's workers.
+JOBS := $(shell nproc 2>/dev/null || echo 2)
+# pytest on every core (pytest-xdist), a file's tests on one worker (a module-scoped fixture
+# is built once), the files in the order tests/conftest.py gives (the long ones first).
+# `make test PYTEST_WORKERS=0` runs pytest in one process.
+PYTEST_WORKERS ?= $(JOBS)
+PYTEST_PARALLEL := -n $(PYTEST_WORKERS) --dist loadfile --no-loadscope-reorder
 # Only for `make test`: the report is checked in a real browser (headless Chromium; about
 # 20 s and 500 MB to install).
 APT_TEST_PACKAGES := chromium
@@ -18,12 +25,13 @@ DOCS_BUILD := docs/_build/html
 # What the compiled extension depends on: any change reinstalls it (incrementally).
 CORE_SOURCES := CMakeLists.txt pyproject.toml $(shell find cmake cpp -type f 2>/dev/null)
 
-.PHONY: demo test test-cpp test-python install system-deps test-deps benchmark docs fuzz sanitize \
+.PHONY: demo test test-fast test-cpp test-python install system-deps test-deps benchmark docs fuzz sanitize \
         clean help
 
 help:
 	@echo "make demo   - the optimal design's geometry, then reproduce the thesis: $(REPORT_DIR)/report.html"
-	@echo "make test   - C++ unit tests (ctest) and the Python test suite (pytest)"
+	@echo "make test   - C++ unit tests (ctest) and the Python test suite (pytest, on every core)"
+	@echo "make test-fast - the same without the tests marked slow (over 10 s each): for everyday work"
 	@echo "make benchmark - solver speed and memory against MERLIN2, Miura sheets to 100,000 DOFs (prints tables)"
 	@echo "make docs   - the documentation site: $(DOCS_BUILD)/index.html"
 	@echo "make fuzz   - the fuzz suite at $(FUZZ_SCALE)x its test-suite examples, from random seeds"
@@ -39,11 +47,17 @@ demo: install
 
 test: install test-cpp test-python
 
+# make test-fast: everything but the tests marked @pytest.mark.slow (those over 10 s; a test
+# not marked that takes longer fails, see tests/slow_check.py). The browser tests are skipped
+# when chromium is not installed (make test installs it).
+test-fast: install test-cpp
+	$(PY) -m pytest -q $(PYTEST_PARALLEL) -m "not slow"
+
 test-cpp: install
-	ctest --test-dir $(BUILD_DIR) --output-on-failure -j2
+	ctest --test-dir $(BUILD_DIR) --output-on-failure -j$(JOBS)
 
 test-python: install test-deps
-	$(PY) -m pytest -q
+	$(PY) -m pytest -q $(PYTEST_PARALLEL)
 
 install: $(VENV)/.installed
 
@@ -98,13 +112,15 @@ $(VENV)/.installed: $(VENV)/.venv-ready $(CORE_SOURCES) | system-deps
 # derandomized examples per target; here with FUZZ_SCALE times as many, from random seeds
 # (a failure prints the failing example and a @reproduce_failure line that replays it).
 FUZZ_SCALE ?= 50
+# (KRESLING_SLOW_LIMIT=0: no check of the tests' time, which is FUZZ_SCALE times the usual.)
 fuzz: install
-	KRESLING_FUZZ_SCALE=$(FUZZ_SCALE) $(PY) -m pytest -q tests/test_fuzz.py
+	KRESLING_FUZZ_SCALE=$(FUZZ_SCALE) KRESLING_SLOW_LIMIT=0 $(PY) -m pytest -q tests/test_fuzz.py
 
 # The core under AddressSanitizer and UndefinedBehaviorSanitizer (build/sanitize): the
 # GoogleTest suite, and a pytest subset through the extension built the same way.
+# (KRESLING_SLOW_LIMIT=0: the sanitizers make the tests several times slower.)
 sanitize: install
-	PY=$(abspath $(PY)) tests/sanitize.sh
+	KRESLING_SLOW_LIMIT=0 PY=$(abspath $(PY)) tests/sanitize.sh
 
 benchmark: install
 	$(PY) benchmarks/solver_speed.py

@@ -71,6 +71,7 @@ def test_a_single_tendon_pull_bends_the_arm_without_panels_passing_through():
     assert held.pull < free.pull - 10.0
 
 
+@pytest.mark.slow
 def test_a_solver_reused_after_a_pull_follows_the_pattern_its_pairs_changed():
     # A pull brings pairs within d_hat and grows the tangent's pattern; the next solve from
     # the built arm factorises a tangent of another pattern, which the solver must be told.

@@ -23,6 +23,8 @@ TESTS = Path(__file__).resolve().parent
 ROOT = TESTS.parent
 TARGETS = sorted((TESTS / "fuzz").glob("fuzz_*.py"))
 SCALE = float(os.environ.get("KRESLING_FUZZ_SCALE", "1"))
+#: Targets that take over 10 s of CPU time at scale 1 (tests/slow_check.py).
+SLOW_TARGETS = {"fuzz_cli"}
 #: A file that runs longer than this has hung (its slowest file takes ~10 s at scale 1).
 WATCHDOG = 120 + 60 * SCALE
 #: Address space of a fuzz process [bytes]: far above what any target needs (~1 GB).
@@ -42,7 +44,9 @@ def test_every_target_file_is_found():
             "fuzz_sweeps", "fuzz_cli", "fuzz_arm_view"} <= names
 
 
-@pytest.mark.parametrize("path", TARGETS, ids=lambda path: path.stem)
+@pytest.mark.parametrize("path", [
+    pytest.param(path, marks=pytest.mark.slow) if path.stem in SLOW_TARGETS else path
+    for path in TARGETS], ids=lambda path: path.stem)
 def test_fuzz(path):
     # --show-capture=no: a failure's report is its traceback and falsifying example, not the
     # thousands of log lines a long run captures (they would crowd it out of the tail kept).

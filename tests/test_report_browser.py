@@ -52,6 +52,8 @@ def images_in_browser(page, tmp_path):
     return json.loads(html.unescape(text))
 
 
+# Every test that asks for the quick report is marked slow: whichever runs first pays for
+# making it (about 30 s of CPU), and `pytest -m "not slow"` would make it for any of them.
 @pytest.fixture(scope="module")
 def quick_report(tmp_path_factory):
     out = tmp_path_factory.mktemp("quick_report")
@@ -61,6 +63,7 @@ def quick_report(tmp_path_factory):
     return out, result, time.perf_counter() - start
 
 
+@pytest.mark.slow
 def test_the_quick_report_runs_every_available_section(quick_report):
     out, result, seconds = quick_report
     assert result.returncode == 0, result.stderr
@@ -73,6 +76,7 @@ def test_the_quick_report_runs_every_available_section(quick_report):
     assert seconds < 180, f"the quick report took {seconds:.0f} s"
 
 
+@pytest.mark.slow
 @needs_browser
 def test_every_figure_of_the_quick_report_loads_in_a_browser(quick_report, tmp_path):
     out, _, _ = quick_report
@@ -119,6 +123,7 @@ window.addEventListener("load", function () {
 </script>"""
 
 
+@pytest.mark.slow
 @needs_browser
 def test_the_contents_stay_in_view_and_the_sweep_table_is_folded(quick_report, tmp_path):
     out, _, _ = quick_report
@@ -144,6 +149,7 @@ def test_the_contents_stay_in_view_and_the_sweep_table_is_folded(quick_report, t
     assert folded[0]["height"] <= folded[0]["summary"] + 10  # only its one-line summary shows
 
 
+@pytest.mark.slow
 def test_the_readme_shows_the_quick_reports_table(quick_report):
     """README's quick start shows this command's table: the same sections, thesis chapters,
     checks and outcomes (not the seconds, which depend on the machine)."""
@@ -171,6 +177,7 @@ def test_the_readme_shows_the_quick_reports_table(quick_report):
     assert f"{total} checks passed" in result.stdout
 
 
+@pytest.mark.slow
 def test_the_report_says_the_sweeps_optima_are_on_the_grids_boundary(quick_report):
     import csv
 
