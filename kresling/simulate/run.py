@@ -18,7 +18,8 @@ from kresling.simulate.graceful_stop import GracefulStop
 from kresling.simulate.preset_check import preset_goes_past
 from kresling.simulate.progress_log import ProgressLog
 from kresling.simulate.modes_output import run_modes
-from kresling.simulate.problem import _AXES, PREDICTORS, Problem, load_problem, node_count
+from kresling.simulate.problem import (_AXES, FOLD_GIVE_UP_AFTER, PREDICTORS, Problem,
+                                       load_problem, node_count)
 from kresling.simulate.problem_contact import TANGENTS, auto_barrier_stiffness
 from kresling.solvers import (PathResult, solve_displacement_control, solve_force_control,
                               solve_fold, solve_mgdcm)
@@ -613,7 +614,7 @@ def _solve(problem, pm, vector, common, plan):
                           extrapolation=PREDICTORS.index(analysis.predictor),
                           adaptive=analysis.increments == "adaptive",
                           adaptive_tolerance=ADAPTIVE_TOLERANCE, snap=analysis.snap,
-                          **common)
+                          give_up_after=FOLD_GIVE_UP_AFTER, **common)
     monitor = analysis.stop
     return solve_mgdcm(model, vector, initial_load_factor=analysis.initial_load_factor,
                        max_increments=analysis.max_increments,
