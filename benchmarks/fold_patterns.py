@@ -34,10 +34,15 @@ failed (the path's message, at most 80 characters) or timeout. The full refusals
 messages follow the table.
 
 Run: ``python benchmarks/fold_patterns.py [FILE ...] [--material stiff|soft]
-[--support auto|none] [--steps 50] [--assets DIR] [--timeout 60] [--jobs 1]``. With no
-FILE: the Origami Simulator files under tests/data/public/origami_simulator/ and, with
-``--assets DIR`` (a checkout of Origami Simulator's assets folder), nineteen of its
-patterns.
+[--support auto|none] [--steps 50] [--assets DIR] [--large] [--timeout 60] [--jobs 1]``.
+With no FILE: the Origami Simulator files under tests/data/public/origami_simulator/ and,
+with ``--assets DIR`` (a checkout of Origami Simulator's assets folder), nineteen of its
+patterns; with ``--large`` and ``--assets DIR``, its large patterns only (1,000 to 6,400
+edges: the box-pleated ones, the circular pleat, the hex-tri tessellation), each as a new
+user folds it (nothing but the pattern), with two further columns: ``tried``, the Newton
+iterations of every increment tried (those given up and halved too), and ``first``, the
+seconds to the first converged increment (reading and building the model, and that
+increment).
 """
 
 from __future__ import annotations
@@ -64,6 +69,10 @@ ASSETS = ("Bases/frogBase.svg", "Bases/squareBase.svg", "Bases/pinwheelBase.svg"
           "Kirigami/honeycombKiri.svg", "Popup/popupSimple.svg",
           "SimpleFolds/simpleVertex.svg", "SimpleFolds/mapfold.svg",
           "Pleating/BoxPleatPyramid.fold", "Pleating/BoxPleatTessellation.fold")
+#: Origami Simulator's patterns of 1,000 to 6,400 edges (``--large``).
+LARGE = ("Pleating/BoxPleatPyramid.fold", "Pleating/BoxPleatInOutWave.fold",
+         "Pleating/BoxPleatSkipOneWave.fold", "Pleating/BoxPleatSpiralPyramid.fold",
+         "Curved/CircularPleat-antiFacet.svg", "Tessellations/HexTriFlatFoldableTess.svg")
 
 #: Stiff bars, panels as stiff in bending as the creases in folding (N, mm).
 STIFF = {"calibration": "manual", "bar_modulus": 1e5, "bar_area": 1.0,
@@ -101,11 +110,18 @@ def fold_one(path: str, material_name: str, support: str, steps: int) -> dict:
     problem = {"pattern": {"file": str(path)},
                "actuation": [{"family": "fold", "fold_angle_deg": "file"}],
                "analysis": {"method": "fold"}}
+    first = []
+
+    def note_first(state):   # the time of the first converged increment
+        if not first:
+            first.append(time.perf_counter() - start)
+        return False
+
     while True:
         print(json.dumps(row), flush=True)
         start = time.perf_counter()
         try:
-            sim = simulate(problem, progress=False)
+            sim = simulate(problem, progress=False, stop=note_first)
         except ValueError as error:
             row["seconds"] = time.perf_counter() - start
             message = str(error)
@@ -132,6 +148,8 @@ def fold_one(path: str, material_name: str, support: str, steps: int) -> dict:
     report = sim.fold_report()
     row.update(increments=int(path_result.num_steps),
                iterations=int(path_result.iterations.sum()),
+               tried=int(path_result.newton_iterations),
+               first=first[0] if first else None,
                reached=(100.0 * float(path_result.load_factor[-1])
                         if path_result.num_steps else 0.0),
                driven=report.get("creases_driven"),
@@ -215,13 +233,14 @@ def cells(name: str, row: dict, timeout: float) -> list[str]:
     return [name, number("vertices"), number("edges"), built,
             ", ".join(row.get("added", [])) or "none",
             row.get("material", "?"), row.get("supports", "?"), number("increments"),
-            number("iterations"), number("reached", "{:.1f}"), of_driven("short_of_target"),
-            of_driven("left_branch"), seconds, outcome]
+            number("iterations"), number("tried"), number("reached", "{:.1f}"),
+            of_driven("short_of_target"), of_driven("left_branch"),
+            number("first", "{:.2f}"), seconds, outcome]
 
 
 HEADER = ["pattern", "vertices", "edges", "built", "added", "material", "supports",
-          "increments", "iterations", "reached %", "short_of_target", "left_branch", "seconds",
-          "outcome"]
+          "increments", "iterations", "tried", "reached %", "short_of_target", "left_branch",
+          "first", "seconds", "outcome"]
 LEFT = {"pattern", "built", "added", "material", "supports", "outcome"}
 
 
@@ -242,6 +261,10 @@ def patterns(args) -> list[tuple[str, str]]:
     """(name in the table, path) of every pattern to fold."""
     if args.files:
         return [(f, f) for f in args.files]
+    if args.large:
+        if not args.assets:
+            raise SystemExit("--large needs --assets DIR (Origami Simulator's assets folder)")
+        return [(Path(name).name, str(Path(args.assets) / name)) for name in LARGE]
     found = sorted(p for p in VENDORED.iterdir() if p.suffix.lower() in (".svg", ".fold"))
     listed = [(p.name, str(p)) for p in found]
     if args.assets:  # the ones not vendored already
@@ -263,6 +286,8 @@ def main(argv=None) -> int:
                         help="increments, where the number is asked for (default 50)")
     parser.add_argument("--assets", help="a checkout of Origami Simulator's assets folder: "
                                          "fold nineteen of its patterns too")
+    parser.add_argument("--large", action="store_true",
+                        help="with --assets: its large patterns only (1,000 to 6,400 edges)")
     parser.add_argument("--timeout", type=float, default=60.0,
                         help="wall-clock seconds per pattern (default 60)")
     parser.add_argument("--jobs", type=int, default=1, help="patterns folded at once")
@@ -293,7 +318,8 @@ def main(argv=None) -> int:
     print("added: what the problem was given after a refusal asked for it; short_of_target: "
           "creases more than 1 deg from their targets at the end, of those driven; "
           "left_branch: creases folded the other way from their targets (more than 1 deg), of "
-          "those driven; seconds: wall time of the attempt that ran")
+          "those driven; tried: Newton iterations of every increment tried; first: seconds "
+          "to the first converged increment; seconds: wall time of the attempt that ran")
     asked = {}  # each refusal answered by an addition, once, with how many patterns it met
     for row in rows:
         for key, message in zip(row.get("added", []), row.get("refusals", [])):
