@@ -63,8 +63,9 @@ def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterati
         fails at its smallest size), let the sheet snap as a slowly actuated one would:
         descend the potential energy at that increment's rest angles from the last
         equilibrium to a stable state (saddle-free Newton steps with a line search), record
-        it as a step (``PathResult.snapped``) and fold on from there. For models of up to
-        3,000 free DOFs (the descent uses dense eigen-decompositions); where the descent
+        it as a step (``PathResult.snapped``) and fold on from there. Up to 3,000 free
+        DOFs the descent uses dense eigen-decompositions; beyond, sparse Cholesky
+        factorisations of the tangent shifted until positive definite. Where the descent
         finds no stable state the fold ends as without it.
 
     give_up_after : int, default 0
