@@ -47,7 +47,8 @@ def test_the_files_hold_the_path_so_far_at_every_increment(tmp_path):
     def look(state):   # the files as a kill at this increment would leave them
         history = _rows(tmp_path / "history.csv")
         summary = json.loads((tmp_path / "summary.json").read_text())
-        frames = json.loads((tmp_path / "path.fold").read_text()).get("file_frames", [])
+        fold = tmp_path / "path.fold"   # (written from the first increment on)
+        frames = json.loads(fold.read_text()).get("file_frames", []) if fold.exists() else []
         seen.append((state.step, len(history), len(_rows(tmp_path / "displacements.csv")),
                      summary, len(frames)))
         return False

@@ -58,7 +58,7 @@ def register(subparsers) -> None:
 def run(args) -> int:
     from pathlib import Path
 
-    from kresling.simulate import load_problem, simulate
+    from kresling.simulate import simulate
 
     problem = Path(args.problem)
     out = Path(args.out) if args.out else problem.with_suffix("")
@@ -76,7 +76,7 @@ def run(args) -> int:
     with log_to_stderr("kresling.simulate", "simulate"):
         # The files are written as the path goes (a kill leaves the path so far), and
         # rewritten whole at its end.
-        simulation = simulate(load_problem(problem, overrides=overrides),
+        simulation = simulate(problem, overrides=overrides,
                               progress=False if args.quiet else None, stream=out)
         written = simulation.write(out, view=not args.no_view, every=args.every)
     summary = simulation.summary()

@@ -5,7 +5,8 @@ kill, a crash, a lost machine) leaves the path up to where it got.
   (every ``every``-th, as the final files keep them), flushed at once;
 - ``summary.json`` and ``path.fold`` (every increment so far as a frame) are rewritten
   whole, each through a temporary file renamed over the old one, so that either file is
-  always complete: at the start, and then whenever the time since the last rewrite is ten
+  always complete: at the start (summary.json alone, before the first increment), and then
+  whenever the time since the last rewrite is ten
   times what that rewrite took (at most about a tenth of the run spent on them, however
   long the path); until the run ends, ``summary.json`` says ``"completed": false``,
   ``"interrupted": true`` and ``"partial": true``, with how many increments the files hold.
@@ -68,7 +69,7 @@ class PathStream:
         self._rows = {"load_factor": [], "displacement": [], "constraint_force": [],
                       "energies": [], "iterations": [], "negative_eigenvalues": [],
                       "snapped": []}
-        self._frame_angles = []
+        self._frame_angles = []   # of the frames written so far
         self._triangles = oriented_triangles(simulation.pattern_model.elements)
         self._edges, self._assignment = path_fold_edges(simulation.pattern_model)
         self._rest_angles = fold_angle_frames(self._triangles, self._edges,
@@ -126,9 +127,6 @@ class PathStream:
         rows["negative_eigenvalues"].append(int(step["negative_eigenvalues"]))
         rows["snapped"].append(bool(step["snapped"]))
         count = len(rows["load_factor"])
-        x = self.model.nodes + rows["displacement"][-1].reshape(-1, 3)
-        self._frame_angles.append(
-            fold_angle_frames(self._triangles, self._edges, [x])[0])
         if count % self.every == 0:
             self._write_rows(count - 1)
         if time.perf_counter() >= self._next_rewrite:
@@ -159,10 +157,14 @@ class PathStream:
         partial = replace(self.simulation, path=self.path(), interrupted="")
         frames = list(self.model.nodes[None] + partial.path.displacement.reshape(
             partial.path.num_steps, self.model.num_nodes, 3))
+        if len(frames) > len(self._frame_angles):   # the new frames' angles, all at once
+            self._frame_angles.extend(fold_angle_frames(
+                self._triangles, self._edges, frames[len(self._frame_angles):]))
         # path.fold first, then summary.json: a kill between the two leaves a summary that
         # counts no more increments than the frames hold. A path too large to rewrite
-        # keeps its rows files and summary only.
-        if len(frames) * self.model.num_dofs * 20 <= LARGE_OUTPUT:
+        # keeps its rows files and summary only; before its first increment the summary
+        # alone is written.
+        if frames and len(frames) * self.model.num_dofs * 20 <= LARGE_OUTPUT:
             target = self.directory / "path.fold"
             tmp = target.with_name(target.name + ".part")
             write_fold(tmp, self.model.nodes, self._triangles, edges=self._edges,

@@ -444,7 +444,7 @@ def _load_vector(problem, num_dofs):
     return vector
 
 
-def simulate(problem, *, stop=None, progress=None, stream=None) -> Simulation:
+def simulate(problem, *, stop=None, progress=None, stream=None, overrides=None) -> Simulation:
     """Run a problem file (or dict, or :class:`Problem`).
 
     Parameters
@@ -465,6 +465,9 @@ def simulate(problem, *, stop=None, progress=None, stream=None) -> Simulation:
         :mod:`kresling.simulate.path_stream`), so that a run ended any way at all, even
         killed, leaves its path so far. :meth:`Simulation.write` into the same directory at
         the end replaces them. Not for ``method = "modes"`` or ``"dynamic"``.
+    overrides : dict, optional
+        Keys replacing the problem's own, by table, as :func:`load_problem` takes them
+        (read within the run, so that its progress lines cover reading the pattern).
 
     Returns
     -------
@@ -486,7 +489,8 @@ def simulate(problem, *, stop=None, progress=None, stream=None) -> Simulation:
             problem if not isinstance(problem, dict) else "problem")
         lines = ProgressLog(source, "reading the problem and building its model")
     try:
-        return _simulate(problem, stop, progress, stream, lines)
+        return _simulate(load_problem(problem, overrides=overrides), stop, progress, stream,
+                         lines)
     finally:
         if lines is not None:
             lines.close()
