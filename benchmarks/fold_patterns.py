@@ -42,7 +42,8 @@ edges: the box-pleated ones, the circular pleat, the hex-tri tessellation), each
 user folds it (nothing but the pattern), with two further columns: ``tried``, the Newton
 iterations of every increment tried (those given up and halved too), and ``first``, the
 seconds to the first converged increment (reading and building the model, and that
-increment).
+increment). A fold stopped by the timeout shows what the files it wrote as it went hold:
+its increments, their Newton iterations and the fold fraction reached.
 """
 
 from __future__ import annotations
@@ -53,6 +54,7 @@ import os
 import signal
 import subprocess
 import sys
+import tempfile
 import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
@@ -93,7 +95,7 @@ def first_line(text: str) -> str:
     return lines[0] if lines else ""
 
 
-def fold_one(path: str, material_name: str, support: str, steps: int) -> dict:
+def fold_one(path: str, material_name: str, support: str, steps: int, stream=None) -> dict:
     """Fold one pattern, adding what a refusal asks for; a row of the table. The row so far
     is printed as a JSON line before each attempt (what a timeout leaves to report)."""
     from kresling.io import read_pattern
@@ -121,7 +123,7 @@ def fold_one(path: str, material_name: str, support: str, steps: int) -> dict:
         print(json.dumps(row), flush=True)
         start = time.perf_counter()
         try:
-            sim = simulate(problem, progress=False, stop=note_first)
+            sim = simulate(problem, progress=False, stop=note_first, stream=stream)
         except ValueError as error:
             row["seconds"] = time.perf_counter() - start
             message = str(error)
@@ -176,16 +178,23 @@ def missing(message: str, problem: dict, pattern, material_name: str, support: s
 
 
 def run(path: str, args) -> dict:
-    """One pattern in a fresh process, stopped after ``args.timeout`` seconds."""
+    """One pattern in a fresh process, stopped after ``args.timeout`` seconds (a stopped
+    fold's row says how far it got, from the files it wrote as it went)."""
+    with tempfile.TemporaryDirectory() as files:
+        return _run(path, args, files)
+
+
+def _run(path: str, args, files: str) -> dict:
     command = [sys.executable, str(Path(__file__).resolve()), "--worker", path,
                "--material", args.material, "--support", args.support,
-               "--steps", str(args.steps)]
+               "--steps", str(args.steps), "--stream", files]
     start = time.perf_counter()
     try:
         done = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout)
     except subprocess.TimeoutExpired as expired:
         row = last_row(expired.stdout)
         row.update(timeout=True, seconds=time.perf_counter() - start)
+        row.update(so_far(Path(files) / "summary.json", path, row))
         return row
     row = last_row(done.stdout)
     if done.returncode:
@@ -196,6 +205,26 @@ def run(path: str, args) -> dict:
         row.update(error=how + (f": {tail[0]}" if tail else ""),
                    seconds=time.perf_counter() - start)
     return row
+
+
+def so_far(summary: Path, path: str, row: dict) -> dict:
+    """What a fold stopped by the timeout had done: its size, and the increments, Newton
+    iterations and fold fraction its streamed summary.json holds."""
+    out = {}
+    if row.get("edges") is None:
+        from kresling.io import read_pattern
+
+        pattern = read_pattern(path)
+        out.update(vertices=pattern.num_vertices, edges=pattern.num_edges)
+    try:
+        summary = json.loads(summary.read_text())
+    except (OSError, ValueError):   # no increment yet
+        return out
+    if summary.get("increments"):
+        # (Not the iterations tried: a run's files count the accepted ones until its end.)
+        out.update(increments=summary["increments"], iterations=summary["newton_iterations"],
+                   reached=100.0 * summary["final_load_factor"])
+    return out
 
 
 def last_row(out) -> dict:
@@ -292,9 +321,11 @@ def main(argv=None) -> int:
                         help="wall-clock seconds per pattern (default 60)")
     parser.add_argument("--jobs", type=int, default=1, help="patterns folded at once")
     parser.add_argument("--worker", help=argparse.SUPPRESS)
+    parser.add_argument("--stream", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.worker:
-        print(json.dumps(fold_one(args.worker, args.material, args.support, args.steps)))
+        print(json.dumps(fold_one(args.worker, args.material, args.support, args.steps,
+                                  args.stream)))
         return 0
     listed = patterns(args)
     load = os.getloadavg()

@@ -180,8 +180,10 @@ class PathStream:
                                  "frame_unit": "mm"})
             os.replace(tmp, target)
         summary = partial.summary()
+        # The increments tried and their iterations are known at the run's end only.
         summary.update(completed=False, interrupted=True, partial=True,
-                       message=partial.path.message)
+                       message=partial.path.message, attempted_increments=None,
+                       attempted_newton_iterations=None)
         _replace_text(self.directory / "summary.json", json.dumps(summary, indent=2) + "\n")
         took = time.perf_counter() - start
         self._next_rewrite = time.perf_counter() + _REWRITE_SPACING * took
