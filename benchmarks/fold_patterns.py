@@ -34,10 +34,16 @@ failed (the path's message, at most 80 characters) or timeout. The full refusals
 messages follow the table.
 
 Run: ``python benchmarks/fold_patterns.py [FILE ...] [--material stiff|soft]
-[--support auto|none] [--steps 50] [--assets DIR] [--timeout 60] [--jobs 1]``. With no
-FILE: the Origami Simulator files under tests/data/public/origami_simulator/ and, with
-``--assets DIR`` (a checkout of Origami Simulator's assets folder), nineteen of its
-patterns.
+[--support auto|none] [--steps 50] [--assets DIR] [--large] [--timeout 60] [--jobs 1]``.
+With no FILE: the Origami Simulator files under tests/data/public/origami_simulator/ and,
+with ``--assets DIR`` (a checkout of Origami Simulator's assets folder), nineteen of its
+patterns; with ``--large`` and ``--assets DIR``, its large patterns only (1,000 to 6,400
+edges: the box-pleated ones, the circular pleat, the hex-tri tessellation), each as a new
+user folds it (nothing but the pattern), with two further columns: ``tried``, the Newton
+iterations of every increment tried (those given up and halved too), and ``first``, the
+seconds to the first converged increment (reading and building the model, and that
+increment). A fold stopped by the timeout shows what the files it wrote as it went hold:
+its increments, their Newton iterations and the fold fraction reached.
 """
 
 from __future__ import annotations
@@ -48,6 +54,7 @@ import os
 import signal
 import subprocess
 import sys
+import tempfile
 import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
@@ -64,6 +71,10 @@ ASSETS = ("Bases/frogBase.svg", "Bases/squareBase.svg", "Bases/pinwheelBase.svg"
           "Kirigami/honeycombKiri.svg", "Popup/popupSimple.svg",
           "SimpleFolds/simpleVertex.svg", "SimpleFolds/mapfold.svg",
           "Pleating/BoxPleatPyramid.fold", "Pleating/BoxPleatTessellation.fold")
+#: Origami Simulator's patterns of 1,000 to 6,400 edges (``--large``).
+LARGE = ("Pleating/BoxPleatPyramid.fold", "Pleating/BoxPleatInOutWave.fold",
+         "Pleating/BoxPleatSkipOneWave.fold", "Pleating/BoxPleatSpiralPyramid.fold",
+         "Curved/CircularPleat-antiFacet.svg", "Tessellations/HexTriFlatFoldableTess.svg")
 
 #: Stiff bars, panels as stiff in bending as the creases in folding (N, mm).
 STIFF = {"calibration": "manual", "bar_modulus": 1e5, "bar_area": 1.0,
@@ -84,7 +95,7 @@ def first_line(text: str) -> str:
     return lines[0] if lines else ""
 
 
-def fold_one(path: str, material_name: str, support: str, steps: int) -> dict:
+def fold_one(path: str, material_name: str, support: str, steps: int, stream=None) -> dict:
     """Fold one pattern, adding what a refusal asks for; a row of the table. The row so far
     is printed as a JSON line before each attempt (what a timeout leaves to report)."""
     from kresling.io import read_pattern
@@ -101,11 +112,18 @@ def fold_one(path: str, material_name: str, support: str, steps: int) -> dict:
     problem = {"pattern": {"file": str(path)},
                "actuation": [{"family": "fold", "fold_angle_deg": "file"}],
                "analysis": {"method": "fold"}}
+    first = []
+
+    def note_first(state):   # the time of the first converged increment
+        if not first:
+            first.append(time.perf_counter() - start)
+        return False
+
     while True:
         print(json.dumps(row), flush=True)
         start = time.perf_counter()
         try:
-            sim = simulate(problem, progress=False)
+            sim = simulate(problem, progress=False, stop=note_first, stream=stream)
         except ValueError as error:
             row["seconds"] = time.perf_counter() - start
             message = str(error)
@@ -132,6 +150,8 @@ def fold_one(path: str, material_name: str, support: str, steps: int) -> dict:
     report = sim.fold_report()
     row.update(increments=int(path_result.num_steps),
                iterations=int(path_result.iterations.sum()),
+               tried=int(path_result.newton_iterations),
+               first=first[0] if first else None,
                reached=(100.0 * float(path_result.load_factor[-1])
                         if path_result.num_steps else 0.0),
                driven=report.get("creases_driven"),
@@ -158,16 +178,23 @@ def missing(message: str, problem: dict, pattern, material_name: str, support: s
 
 
 def run(path: str, args) -> dict:
-    """One pattern in a fresh process, stopped after ``args.timeout`` seconds."""
+    """One pattern in a fresh process, stopped after ``args.timeout`` seconds (a stopped
+    fold's row says how far it got, from the files it wrote as it went)."""
+    with tempfile.TemporaryDirectory() as files:
+        return _run(path, args, files)
+
+
+def _run(path: str, args, files: str) -> dict:
     command = [sys.executable, str(Path(__file__).resolve()), "--worker", path,
                "--material", args.material, "--support", args.support,
-               "--steps", str(args.steps)]
+               "--steps", str(args.steps), "--stream", files]
     start = time.perf_counter()
     try:
         done = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout)
     except subprocess.TimeoutExpired as expired:
         row = last_row(expired.stdout)
         row.update(timeout=True, seconds=time.perf_counter() - start)
+        row.update(so_far(Path(files) / "summary.json", path, row))
         return row
     row = last_row(done.stdout)
     if done.returncode:
@@ -178,6 +205,26 @@ def run(path: str, args) -> dict:
         row.update(error=how + (f": {tail[0]}" if tail else ""),
                    seconds=time.perf_counter() - start)
     return row
+
+
+def so_far(summary: Path, path: str, row: dict) -> dict:
+    """What a fold stopped by the timeout had done: its size, and the increments, Newton
+    iterations and fold fraction its streamed summary.json holds."""
+    out = {}
+    if row.get("edges") is None:
+        from kresling.io import read_pattern
+
+        pattern = read_pattern(path)
+        out.update(vertices=pattern.num_vertices, edges=pattern.num_edges)
+    try:
+        summary = json.loads(summary.read_text())
+    except (OSError, ValueError):   # no increment yet
+        return out
+    if summary.get("increments"):
+        # (Not the iterations tried: a run's files count the accepted ones until its end.)
+        out.update(increments=summary["increments"], iterations=summary["newton_iterations"],
+                   reached=100.0 * summary["final_load_factor"])
+    return out
 
 
 def last_row(out) -> dict:
@@ -215,13 +262,14 @@ def cells(name: str, row: dict, timeout: float) -> list[str]:
     return [name, number("vertices"), number("edges"), built,
             ", ".join(row.get("added", [])) or "none",
             row.get("material", "?"), row.get("supports", "?"), number("increments"),
-            number("iterations"), number("reached", "{:.1f}"), of_driven("short_of_target"),
-            of_driven("left_branch"), seconds, outcome]
+            number("iterations"), number("tried"), number("reached", "{:.1f}"),
+            of_driven("short_of_target"), of_driven("left_branch"),
+            number("first", "{:.2f}"), seconds, outcome]
 
 
 HEADER = ["pattern", "vertices", "edges", "built", "added", "material", "supports",
-          "increments", "iterations", "reached %", "short_of_target", "left_branch", "seconds",
-          "outcome"]
+          "increments", "iterations", "tried", "reached %", "short_of_target", "left_branch",
+          "first", "seconds", "outcome"]
 LEFT = {"pattern", "built", "added", "material", "supports", "outcome"}
 
 
@@ -242,6 +290,10 @@ def patterns(args) -> list[tuple[str, str]]:
     """(name in the table, path) of every pattern to fold."""
     if args.files:
         return [(f, f) for f in args.files]
+    if args.large:
+        if not args.assets:
+            raise SystemExit("--large needs --assets DIR (Origami Simulator's assets folder)")
+        return [(Path(name).name, str(Path(args.assets) / name)) for name in LARGE]
     found = sorted(p for p in VENDORED.iterdir() if p.suffix.lower() in (".svg", ".fold"))
     listed = [(p.name, str(p)) for p in found]
     if args.assets:  # the ones not vendored already
@@ -263,13 +315,17 @@ def main(argv=None) -> int:
                         help="increments, where the number is asked for (default 50)")
     parser.add_argument("--assets", help="a checkout of Origami Simulator's assets folder: "
                                          "fold nineteen of its patterns too")
+    parser.add_argument("--large", action="store_true",
+                        help="with --assets: its large patterns only (1,000 to 6,400 edges)")
     parser.add_argument("--timeout", type=float, default=60.0,
                         help="wall-clock seconds per pattern (default 60)")
     parser.add_argument("--jobs", type=int, default=1, help="patterns folded at once")
     parser.add_argument("--worker", help=argparse.SUPPRESS)
+    parser.add_argument("--stream", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.worker:
-        print(json.dumps(fold_one(args.worker, args.material, args.support, args.steps)))
+        print(json.dumps(fold_one(args.worker, args.material, args.support, args.steps,
+                                  args.stream)))
         return 0
     listed = patterns(args)
     load = os.getloadavg()
@@ -293,7 +349,8 @@ def main(argv=None) -> int:
     print("added: what the problem was given after a refusal asked for it; short_of_target: "
           "creases more than 1 deg from their targets at the end, of those driven; "
           "left_branch: creases folded the other way from their targets (more than 1 deg), of "
-          "those driven; seconds: wall time of the attempt that ran")
+          "those driven; tried: Newton iterations of every increment tried; first: seconds "
+          "to the first converged increment; seconds: wall time of the attempt that ran")
     asked = {}  # each refusal answered by an addition, once, with how many patterns it met
     for row in rows:
         for key, message in zip(row.get("added", []), row.get("refusals", [])):

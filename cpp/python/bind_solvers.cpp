@@ -91,7 +91,11 @@ void bind_path_result(py::module_& m) {
       .def_readonly("newton_iterations", &PathResult::newton_iterations);
 }
 
-// A Python callable `stop(load_factor, displacement) -> bool` as a solver's stopping rule.
+// A Python callable `stop(load_factor, displacement) -> bool` as a solver's stopping rule;
+// one with a true attribute `takes_step` is called as `stop(load_factor, displacement,
+// step)`, `step` a dict of the step's `iterations`, `energies` (by family, in the path's
+// order), `constraint_force`, `negative_eigenvalues` and `snapped` (what a caller writing
+// the path as it goes needs of each increment).
 // The solvers run without the GIL: the call takes it back, and so does the release of the
 // callable when the last copy of the rule goes.
 StopRule stop_rule(const py::object& callable) {
@@ -99,13 +103,21 @@ StopRule stop_rule(const py::object& callable) {
   if (!PyCallable_Check(callable.ptr())) {
     throw std::invalid_argument("stop: must be None or a callable");
   }
+  const bool takes_step = py::bool_(py::getattr(callable, "takes_step", py::bool_(false)));
   std::shared_ptr<py::object> f(new py::object(callable), [](py::object* o) {
     py::gil_scoped_acquire gil;
     delete o;
   });
-  return [f](const PathStep& s) {
+  return [f, takes_step](const PathStep& s) {
     py::gil_scoped_acquire gil;
-    return py::cast<bool>((*f)(s.load_factor, s.displacement));
+    if (!takes_step) return py::cast<bool>((*f)(s.load_factor, s.displacement));
+    py::dict step;
+    step["iterations"] = s.iterations;
+    step["energies"] = s.energies;
+    step["constraint_force"] = s.constraint_force;
+    step["negative_eigenvalues"] = s.negative_eigenvalues;
+    step["snapped"] = s.snapped;
+    return py::cast<bool>((*f)(s.load_factor, s.displacement, step));
   };
 }
 

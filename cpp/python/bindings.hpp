@@ -24,7 +24,10 @@ pybind11::class_<Options>& def_newton_controls(pybind11::class_<Options>& option
           [](Options& o, double v) { o.newton.tolerance = v; })
       .def_property(
           "max_iterations", [](const Options& o) { return o.newton.max_iterations; },
-          [](Options& o, int v) { o.newton.max_iterations = v; });
+          [](Options& o, int v) { o.newton.max_iterations = v; })
+      .def_property(
+          "give_up_after", [](const Options& o) { return o.newton.give_up_after; },
+          [](Options& o, int v) { o.newton.give_up_after = v; });
 }
 
 /// A sparse matrix as scipy.sparse.csc_matrix's arguments: (data, indices, indptr), shape

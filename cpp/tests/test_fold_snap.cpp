@@ -31,6 +31,8 @@
 #include "kresling/model/hinge_family.hpp"
 #include "kresling/model/model.hpp"
 #include "kresling/model/spring_family.hpp"
+#include "kresling/assembly/assembler.hpp"
+#include "kresling/solvers/energy_minimum.hpp"
 #include "kresling/solvers/fold.hpp"
 
 using namespace kresling;
@@ -156,4 +158,32 @@ TEST(FoldSnap, WithSnapItJumpsToTheFarBranchAndFoldsOn) {
   EXPECT_EQ(snaps, 1);
   // The far branch's equilibrium at the end, solved on its own.
   EXPECT_NEAR(phi_of(w, path.steps.back().displacement), branch(kEnd, -kPi, far_edge), 1e-4);
+}
+
+// The sparse descent (minimize_energy_sparse, the snap of models beyond kMaxSnapDofs) finds
+// the state the dense one finds: at the end's rest angle, past the limit point, from the
+// flat state, the far branch's stable equilibrium.
+TEST(FoldSnap, TheSparseDescentEndsWhereTheDenseOneDoes) {
+  const Wing w = make_wing();
+  const model::Model end = solvers::folded_rest_model(
+      w.model, {{{0}, (VectorX(1) << kPi + kEnd).finished()}});
+  const double expected = branch(kEnd, -kPi, kPhiA - 2 * kPi + std::acos(-1.0 / kBeta));
+  solvers::EnergyMinimumOptions o;
+  o.tolerance = 1e-10;
+  o.max_iterations = 2000;
+  o.max_step = 0.01;
+  VectorX dense = VectorX::Zero(12), sparse = VectorX::Zero(12);
+  assembly::Assembler full(end, assembly::unmasked_dofs(end.fixed()), 0.0,
+                           assembly::Storage::Full);
+  const auto d = solvers::minimize_energy(full, dense, o);
+  assembly::Assembler lower(end, assembly::unmasked_dofs(end.fixed()), 0.0,
+                            assembly::Storage::Lower);
+  solvers::TangentSolver solver;
+  const auto s = solvers::minimize_energy_sparse(lower, solver, sparse, o);
+  ASSERT_TRUE(d.converged) << d.failure;
+  ASSERT_TRUE(s.converged) << s.failure;
+  EXPECT_EQ(s.negative_eigenvalues, 0);
+  EXPECT_NEAR(phi_of(w, dense), expected, 1e-4);
+  EXPECT_NEAR(phi_of(w, sparse), expected, 1e-4);
+  EXPECT_NEAR(s.energy, d.energy, 1e-9 * std::abs(d.energy) + 1e-12);
 }

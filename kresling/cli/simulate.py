@@ -28,7 +28,11 @@ def register(subparsers) -> None:
                     "its target), 1 when it stopped early or a fold fell short (the files "
                     "still hold every converged increment), 2 for a bad problem, 130 when "
                     "Ctrl-C or a kill (SIGTERM) ended the path at its next increment (the "
-                    "files hold the path so far; a second Ctrl-C stops at once).",
+                    "files hold the path so far; a second Ctrl-C stops at once). A path's "
+                    "files are written as it goes (history.csv and displacements.csv row by "
+                    "row, summary.json and path.fold rewritten whole), so a run killed any "
+                    "other way leaves them too, its summary.json saying \"completed\": "
+                    "false and \"interrupted\": true.",
     )
     parser.add_argument("problem", metavar="PROBLEM.toml", help="the problem file")
     parser.add_argument("--out", metavar="DIR",
@@ -54,7 +58,7 @@ def register(subparsers) -> None:
 def run(args) -> int:
     from pathlib import Path
 
-    from kresling.simulate import load_problem, simulate
+    from kresling.simulate import simulate
 
     problem = Path(args.problem)
     out = Path(args.out) if args.out else problem.with_suffix("")
@@ -67,9 +71,13 @@ def run(args) -> int:
         overrides["analysis"] = {"fold_percent": args.fold_percent}
     if args.snap_tolerance is not None:
         overrides["pattern"] = {"snap_tolerance": args.snap_tolerance}
+    if args.every is not None:   # the files written as the path goes keep the same rows
+        overrides["output"] = {"every": args.every}
     with log_to_stderr("kresling.simulate", "simulate"):
-        simulation = simulate(load_problem(problem, overrides=overrides),
-                              progress=False if args.quiet else None)
+        # The files are written as the path goes (a kill leaves the path so far), and
+        # rewritten whole at its end.
+        simulation = simulate(problem, overrides=overrides,
+                              progress=False if args.quiet else None, stream=out)
         written = simulation.write(out, view=not args.no_view, every=args.every)
     summary = simulation.summary()
     summary["outputs"] = {name: str(path) for name, path in written.items()}

@@ -66,6 +66,12 @@ RELATIVE_TOLERANCE = 1e-8
 MERLIN2_TOLERANCE = 1e-6
 #: ``method = "fold"``: increments per stage when the problem gives no ``steps``.
 FOLD_STEPS = 40
+#: ``method = "fold"``: each increment's start when the problem gives no ``predictor``.
+FOLD_PREDICTOR = "quadratic"
+#: ``method = "fold"``: Newton gives an increment up (and halves it) when its correction
+#: at this iteration or later is still above 1e-3 of its first (no ``max_iterations`` of
+#: wandering where the path turns sharply; docs/folding.md, 'Large patterns').
+FOLD_GIVE_UP_AFTER = 12
 #: The hinges' enhanced linear limits [deg] when ``[laws]`` gives none (with a preset
 #: material, the preset's).
 LAW_LIMITS_DEG = (45.0, 315.0)
@@ -536,7 +542,11 @@ def _read_analysis(t, num_nodes):
         if settings["increments"] == "adaptive" and t.has("predictor"):
             t.fail("predictor", "applies to fixed increments only: adaptive increments start "
                                 "each Newton solve from their own cubic Hermite curves")
-        settings["predictor"] = t.get("predictor", _string, "previous", choices=PREDICTORS)
+        # A fold starts each increment from its quadratic extrapolation: along a smooth
+        # fold it halves the Newton iterations (the box-pleat pyramid: 5 instead of 10).
+        settings["predictor"] = t.get("predictor", _string,
+                                      FOLD_PREDICTOR if method == "fold" else "previous",
+                                      choices=PREDICTORS)
         if method == "fold":
             settings["snap"] = t.get("snap", _boolean, False)
     elif method == "dynamic":

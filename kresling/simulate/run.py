@@ -18,7 +18,8 @@ from kresling.simulate.graceful_stop import GracefulStop
 from kresling.simulate.preset_check import preset_goes_past
 from kresling.simulate.progress_log import ProgressLog
 from kresling.simulate.modes_output import run_modes
-from kresling.simulate.problem import _AXES, PREDICTORS, Problem, load_problem, node_count
+from kresling.simulate.problem import (_AXES, FOLD_GIVE_UP_AFTER, PREDICTORS, Problem,
+                                       load_problem, node_count)
 from kresling.simulate.problem_contact import TANGENTS, auto_barrier_stiffness
 from kresling.solvers import (PathResult, solve_displacement_control, solve_force_control,
                               solve_fold, solve_mgdcm)
@@ -443,7 +444,7 @@ def _load_vector(problem, num_dofs):
     return vector
 
 
-def simulate(problem, *, stop=None, progress=None) -> Simulation:
+def simulate(problem, *, stop=None, progress=None, stream=None, overrides=None) -> Simulation:
     """Run a problem file (or dict, or :class:`Problem`).
 
     Parameters
@@ -454,7 +455,19 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
         ``stop(state: PathState) -> bool``, asked after every accepted increment; True ends
         the path there (completed), e.g. ``lambda s: s.displacement[4, 2] < -10``.
     progress : bool, optional
-        A progress bar on stderr; default: when stderr is a terminal.
+        A progress bar on stderr; default: when stderr is a terminal. Otherwise (unless
+        False) progress lines on this module's logger: what runs, from half a second after
+        the call (reading and building the model, then the path), and where the path is
+        every few seconds.
+    stream : str or os.PathLike, optional
+        A directory: the run's files are written there as the path goes (history.csv and
+        displacements.csv row by row, summary.json and path.fold rewritten whole as it goes;
+        :mod:`kresling.simulate.path_stream`), so that a run ended any way at all, even
+        killed, leaves its path so far. :meth:`Simulation.write` into the same directory at
+        the end replaces them. Not for ``method = "modes"`` or ``"dynamic"``.
+    overrides : dict, optional
+        Keys replacing the problem's own, by table, as :func:`load_problem` takes them
+        (read within the run, so that its progress lines cover reading the pattern).
 
     Returns
     -------
@@ -470,6 +483,21 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
         For a bad problem (naming the file and key), or a model the supports leave free to
         move as a rigid body.
     """
+    lines = None  # progress lines where there is no bar (a log, a batch job)
+    if progress is not False:
+        source = problem.source if isinstance(problem, Problem) else str(
+            problem if not isinstance(problem, dict) else "problem")
+        lines = ProgressLog(source, "reading the problem and building its model")
+    try:
+        return _simulate(load_problem(problem, overrides=overrides), stop, progress, stream,
+                         lines)
+    finally:
+        if lines is not None:
+            lines.close()
+
+
+def _simulate(problem, stop, progress, stream, lines) -> Simulation:
+    """:func:`simulate` with its progress lines running."""
     problem = load_problem(problem)
     if problem.preset is not None:
         logger.info("%s: material: preset %r", problem.source, problem.preset)
@@ -485,14 +513,34 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
     analysis = problem.analysis
     vector = _load_vector(problem, model.num_dofs)
     bar = _progress_bar(problem, progress)
+    if bar is not None and lines is not None:   # the bar takes over
+        lines.close()
+        lines = None
     count = [0]
-    lines = None  # progress lines where there is no bar (a log, a batch job)
+    try:
+        plan = fold_plan(problem, pm) if analysis.method == "fold" else None
+    except ValueError as error:   # named as the solver's own refusals are
+        raise ValueError(f"{problem.source}: {_solver_where(str(error))}") from None
+    # The DOFs that carry a force (displacement control: the imposed DOFs, which the path
+    # records as its constraint DOFs).
+    driven = np.flatnonzero(vector)
+    writer = None
+    if stream is not None:
+        from kresling.simulate.path_stream import PathStream
+
+        recorded = (np.flatnonzero(vector) if analysis.method == "displacement_control"
+                    else np.flatnonzero(model.fixed.ravel()))
+        before = Simulation(problem, pm, _no_path(model.num_dofs, recorded, model.families),
+                            driven, plan)
+        writer = PathStream(stream, before, problem.output.every)
     # The problem's own rules where the C++ solver has none (MGDCM checks them itself).
     monitor = analysis.stop if analysis.method != "mgdcm" else None
     bound = analysis.max_load_factor if analysis.method == "force_control" else np.inf
 
-    def rule(load_factor, u):
+    def rule(load_factor, u, step=None):
         count[0] += 1
+        if writer is not None:
+            writer.append(load_factor, u, step)
         if bar is not None:
             bar.update(count[0], load_factor, u)
         if lines is not None:
@@ -507,28 +555,30 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
             return False
         return bool(stop(PathState(count[0], float(load_factor), np.asarray(u).reshape(-1, 3))))
 
+    rule.takes_step = writer is not None  # the step's iterations and energies too
+
     # Scale-free like the tolerance: MERLIN2's absolute shift only to reproduce its runs.
     shift = MERLIN2_SHIFT if problem.merlin2_compat else scale_free_shift(model)
-    if bar is None and progress is not False:
-        lines = ProgressLog(problem.source, f"{model.num_nodes} nodes, {len(model.bars)} "
-                                            f"bars, {len(model.hinges)} hinges; "
-                                            f"{stepping(problem)}")
+    if lines is not None:
+        lines.begin(f"{model.num_nodes} nodes, {len(model.bars)} bars, {len(model.hinges)} "
+                    f"hinges; {stepping(problem)}")
     with GracefulStop() as graceful:
         # The rule is asked only where it has something to do (Python at every increment
         # otherwise for nothing); a Ctrl-C or a kill it listens for is one of those.
         needed = (graceful.listening or lines is not None or bar is not None
-                  or stop is not None or monitor is not None or np.isfinite(bound))
+                  or stop is not None or monitor is not None or np.isfinite(bound)
+                  or writer is not None)
         common = {"tolerance": analysis.tolerance, "max_iterations": analysis.max_iterations,
                   "stop": rule if needed else None, "shift": shift}
         try:
-            path, plan = _solve(problem, pm, vector, common)
+            path = _solve(problem, pm, vector, common, plan)
         except ValueError as error:
             raise ValueError(f"{problem.source}: {_solver_where(str(error))}") from None
         finally:
             if bar is not None:
                 bar.close()
-            if lines is not None:
-                lines.close()
+            if writer is not None:
+                writer.close()
     if graceful.requested:
         logger.warning("%s: %s: the path stopped after %d increments; they are kept",
                        problem.source, graceful.requested, path.num_steps)
@@ -536,13 +586,22 @@ def simulate(problem, *, stop=None, progress=None) -> Simulation:
         logger.warning("%s: the path stopped after %d increments: %s", problem.source,
                        path.num_steps, path.message)
     driven = (path.constraint_dofs if analysis.method == "displacement_control"
-              else np.flatnonzero(vector))
+              else driven)
     return Simulation(problem, pm, path, np.asarray(driven, dtype=np.int64), plan,
                       graceful.requested, _preset_advice(problem, path, graceful.requested))
 
 
-def _solve(problem, pm, vector, common):
-    """The problem's path by its method's solver: (PathResult, FoldPlan or None)."""
+def _no_path(num_dofs, constraint_dofs, families) -> PathResult:
+    """A path without a step yet (what a streamed run's files start from)."""
+    count = len(constraint_dofs)
+    return PathResult(np.zeros(0), np.zeros((0, num_dofs)), np.asarray(constraint_dofs, np.int64),
+                      np.zeros((0, count)), tuple(families), np.zeros((0, len(families))),
+                      np.zeros(0, np.int64), np.zeros(0, np.int64), False, "", 0, 0, 0,
+                      np.zeros(0, bool))
+
+
+def _solve(problem, pm, vector, common, plan):
+    """The problem's path by its method's solver (``plan``: a fold's stages)."""
     model, analysis = pm.model, problem.analysis
     if analysis.method == "displacement_control":
         adaptive = analysis.increments == "adaptive"
@@ -551,23 +610,22 @@ def _solve(problem, pm, vector, common):
             model, vector, analysis.steps, adaptive=adaptive,
             adaptive_tolerance=ADAPTIVE_TOLERANCE, extrapolation=order,
             merlin2_steps=problem.merlin2_compat and not adaptive and order == 0,
-            **common), None
+            **common)
     if analysis.method == "force_control":
-        return solve_force_control(model, vector, analysis.steps, **common), None
+        return solve_force_control(model, vector, analysis.steps, **common)
     if analysis.method == "fold":
-        plan = fold_plan(problem, pm)
         return solve_fold(model, plan.stages, analysis.steps, forces=vector,
                           extrapolation=PREDICTORS.index(analysis.predictor),
                           adaptive=analysis.increments == "adaptive",
                           adaptive_tolerance=ADAPTIVE_TOLERANCE, snap=analysis.snap,
-                          **common), plan
+                          give_up_after=FOLD_GIVE_UP_AFTER, **common)
     monitor = analysis.stop
     return solve_mgdcm(model, vector, initial_load_factor=analysis.initial_load_factor,
                        max_increments=analysis.max_increments,
                        max_load_factor=analysis.max_load_factor,
                        monitor_dof=None if monitor is None else monitor.dof,
                        max_displacement=np.inf if monitor is None else monitor.beyond,
-                       **common), None
+                       **common)
 
 
 def _preset_advice(problem, path, interrupted) -> str:

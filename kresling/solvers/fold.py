@@ -28,7 +28,7 @@ __all__ = ["solve_fold", "fold", "FoldResult"]
 def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterations=50,
                max_bisections=10, extrapolation=0, shift=_DEFAULTS.shift, initial=None, stop=None,
                cholesky="auto", adaptive=False, adaptive_tolerance=1e-9,
-               snap=False) -> PathResult:
+               snap=False, give_up_after=0) -> PathResult:
     """Drive hinges' rest angles to targets, stage after stage, and follow the equilibrium.
 
     Parameters
@@ -63,9 +63,15 @@ def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterati
         fails at its smallest size), let the sheet snap as a slowly actuated one would:
         descend the potential energy at that increment's rest angles from the last
         equilibrium to a stable state (saddle-free Newton steps with a line search), record
-        it as a step (``PathResult.snapped``) and fold on from there. For models of up to
-        3,000 free DOFs (the descent uses dense eigen-decompositions); where the descent
+        it as a step (``PathResult.snapped``) and fold on from there. Up to 3,000 free
+        DOFs the descent uses dense eigen-decompositions; beyond, sparse Cholesky
+        factorisations of the tangent shifted until positive definite. Where the descent
         finds no stable state the fold ends as without it.
+
+    give_up_after : int, default 0
+        > 0: an increment whose Newton correction at this iteration or later is still above
+        1e-3 of its first is given up there and halved, instead of iterating on to
+        ``max_iterations`` (0: never).
 
     Returns
     -------
@@ -77,6 +83,7 @@ def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterati
     o.cholesky = cholesky_choice(cholesky)
     o.tolerance = as_positive_real("tolerance", tolerance)
     o.max_iterations = as_integer("max_iterations", max_iterations, minimum=1)
+    o.give_up_after = as_integer("give_up_after", give_up_after, minimum=0)
     o.max_bisections = as_integer("max_bisections", max_bisections, minimum=0)
     o.extrapolation = as_integer("extrapolation", extrapolation, minimum=0, maximum=3)
     o.adaptive = as_bool("adaptive", adaptive)

@@ -97,4 +97,80 @@ EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
   return out;
 }
 
+EnergyMinimum minimize_energy_sparse(assembly::Assembler& assembler, TangentSolver& solver,
+                                     VectorX& u, const EnergyMinimumOptions& o,
+                                     const VectorX* external) {
+  require_positive("tolerance", o.tolerance);
+  require_positive("max_step", o.max_step);
+  if (o.max_iterations < 1) throw_invalid("max_iterations", o.max_iterations, "an integer >= 1");
+  EnergyMinimum out;
+  double mu = 0.0;  // the last shift that gave a Cholesky: where the next search starts
+  for (out.iterations = 0; out.iterations < o.max_iterations; ++out.iterations) {
+    check_interrupt();
+    VectorX force;
+    const double energy =
+        assembler.assemble(u, force, /*with_matrix=*/true).total() - work(external, u);
+    const VectorX gradient = gather_rows(assembler, external ? VectorX(force - *external) : force);
+    if (!std::isfinite(energy) || !gradient.allFinite()) {
+      out.failure = "the energy or its derivatives are not finite (an element degenerated)";
+      return out;
+    }
+    out.energy = energy;
+    SparseMatrix K = assembler.matrix();
+    const double largest = K.diagonal().cwiseAbs().maxCoeff();
+    // The smallest shift (from none, then from a tenth of the last one) whose Cholesky exists.
+    double shift = 0.0;
+    bool factorized = solver.factorize(K, /*cholesky_only=*/true).ok;
+    if (!factorized) {
+      shift = std::max(0.1 * mu, 1e-6 * largest);
+      for (int tries = 0; tries < 60 && !factorized; ++tries, shift *= 4.0) {
+        SparseMatrix shifted = K;
+        shifted.diagonal().array() += shift;
+        factorized = solver.factorize(shifted, /*cholesky_only=*/true).ok;
+        if (factorized) break;
+      }
+      if (!factorized) {
+        out.failure = "no shift of the tangent made it positive definite";
+        return out;
+      }
+    }
+    mu = shift;
+    out.negative_eigenvalues = shift == 0.0 ? 0 : -1;
+    VectorX step = -solver.solve(gradient);
+    if (!step.allFinite()) {
+      out.failure = "the descent step is not finite";
+      return out;
+    }
+    if (step.norm() <= o.tolerance) {
+      if (shift == 0.0) {
+        out.converged = true;
+        return out;
+      }
+      out.failure = "the descent stopped where the tangent is not positive definite (a saddle)";
+      return out;
+    }
+    if (step.norm() > o.max_step) step *= o.max_step / step.norm();
+    const double slope = std::min(gradient.dot(step), 0.0);
+    VectorX move = VectorX::Zero(u.size());
+    scatter_add_rows(assembler, step, move);
+    double alpha = std::min(1.0, barrier_step_fraction(assembler.model(), u, move));
+    VectorX trial;
+    for (int halvings = 0;; ++halvings) {
+      trial = u;
+      scatter_add_rows(assembler, alpha * step, trial);
+      const double e = energy_at(assembler, trial, external);
+      const bool rounding = alpha * step.norm() <= 10.0 * o.tolerance;
+      if ((std::isfinite(e) && e <= energy + 1e-4 * alpha * slope) || rounding) break;
+      if (halvings == 40) {
+        out.failure = "the line search found no lower energy along the step";
+        return out;
+      }
+      alpha *= 0.5;
+    }
+    u = trial;
+  }
+  out.failure = "no stable equilibrium within " + std::to_string(o.max_iterations) + " iterations";
+  return out;
+}
+
 }  // namespace kresling::solvers

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "kresling/assembly/assembler.hpp"
+#include "kresling/solvers/tangent_solver.hpp"
 
 namespace kresling::solvers {
 
@@ -45,5 +46,18 @@ struct EnergyMinimum {
 EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
                               const EnergyMinimumOptions& options = {},
                               const VectorX* external = nullptr);
+
+/// The same descent for models of any size, on sparse factorisations: each step is
+/// -(K + mu I)^-1 g with the smallest shift mu (0, else doubled from 1e-6 of the tangent's
+/// largest diagonal entry) whose Cholesky exists, so every step descends; the same
+/// backtracking line search and longest step. Converged when the step is at most
+/// `tolerance` with no shift (the tangent itself positive definite: a stable equilibrium).
+/// It has no eigenvectors to leave an exact saddle by (`escape_step` unused): a descent
+/// that stops at one fails. `solver` is the caller's (its pattern the assembler's);
+/// negative_eigenvalues is 0 at a converged end, else -1; smallest_eigenvalue is not
+/// computed (0).
+EnergyMinimum minimize_energy_sparse(assembly::Assembler& assembler, TangentSolver& solver,
+                                     VectorX& u, const EnergyMinimumOptions& options = {},
+                                     const VectorX* external = nullptr);
 
 }  // namespace kresling::solvers

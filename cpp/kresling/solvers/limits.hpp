@@ -52,6 +52,7 @@ inline void check_shift(double shift) {
 inline void check_newton(const NewtonOptions& o) {
   require_positive("tolerance", o.tolerance);
   require_integer_in("max_iterations", o.max_iterations, 1, kMaxIterations);
+  require_integer_in("give_up_after", o.give_up_after, 0, kMaxIterations);
 }
 
 /// The adaptive increments' error target (adaptive_path.hpp), relative to the monitored

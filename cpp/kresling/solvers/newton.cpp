@@ -137,6 +137,7 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
   VectorX force;
   bool factorized = false;  // a tangent of this solve is factorised
   double last_correction = INFINITY;
+  double first_correction = INFINITY;  // of this solve (give_up_after)
   const double tol = options.tolerance;
   while (out.iterations < limit) {
     check_interrupt();
@@ -196,6 +197,17 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
     last_correction = du.norm();
     if (last_correction <= tol) {
       out.converged = true;
+      return out;
+    }
+    if (out.iterations == 1) first_correction = last_correction;
+    if (options.give_up_after > 0 && out.iterations >= options.give_up_after &&
+        last_correction > kGiveUpRatio * first_correction) {
+      char detail[160];
+      std::snprintf(detail, sizeof detail,
+                    "Newton gave up after %d iterations (correction %.3g mm, still above "
+                    "%.0e of the first, %.3g mm)",
+                    out.iterations, last_correction, kGiveUpRatio, first_correction);
+      out.failure = detail;
       return out;
     }
   }

@@ -22,7 +22,14 @@ struct NewtonOptions {
   /// model). The others are for comparisons: near a bifurcation the branch a path takes is
   /// decided by rounding, which differs from one factorisation to another.
   CholeskyChoice cholesky = CholeskyChoice::Auto;
+  /// > 0: a solve whose correction at this iteration or any later one is still above
+  /// kGiveUpRatio times its first correction ends there, not converged (its caller halves
+  /// the increment), instead of wandering on to max_iterations; 0: never.
+  int give_up_after = 0;
 };
+
+/// What NewtonOptions::give_up_after asks of a solve's corrections by then.
+inline constexpr double kGiveUpRatio = 1e-3;
 
 /// One converged equilibrium point of a path.
 struct PathStep {

@@ -164,7 +164,6 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
   // The descent's steps are bounded by the model's size (not in mm), so it follows the
   // landscape at any scale.
   auto snap = [&]() {
-    if (assembler.size() > kMaxSnapDofs) return false;
     if (control.changes_model()) assembler.rebind(control.model_at(increment.to));
     VectorX trial = u;
     control.advance(increment, u, trial, external);
@@ -175,7 +174,11 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     descent.max_iterations = 2000;
     descent.max_step = 0.01 * size;
     descent.escape_step = 1e-3 * size;
-    const EnergyMinimum rest = minimize_energy(assembler, trial, descent, &external);
+    // Dense eigen-decompositions up to kMaxSnapDofs, shifted sparse Cholesky beyond.
+    const EnergyMinimum rest =
+        assembler.size() > kMaxSnapDofs
+            ? minimize_energy_sparse(assembler, solver, trial, descent, &external)
+            : minimize_energy(assembler, trial, descent, &external);
     result.newton_iterations += rest.iterations;
     if (!rest.converged) return false;
     NewtonOutcome outcome;

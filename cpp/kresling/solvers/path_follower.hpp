@@ -54,12 +54,13 @@ struct FollowOptions {
   /// the parameter, no equilibrium is near), let the structure snap: descend the energy at
   /// the failed increment's end from the last equilibrium to a stable one
   /// (energy_minimum.hpp), record it as a step (PathStep::snapped) and follow the path on
-  /// from there. For models of up to kMaxSnapDofs free DOFs (the descent is dense); a
-  /// descent that finds no stable state ends the path as before, saying so.
+  /// from there. Up to kMaxSnapDofs free DOFs the descent is dense (minimize_energy),
+  /// beyond it sparse (minimize_energy_sparse); a descent that finds no stable state ends
+  /// the path as before, saying so.
   bool snap = false;
 };
 
-/// The largest model (free DOFs) a snap is tried on.
+/// The largest model (free DOFs) whose snap descends with dense eigen-decompositions.
 inline constexpr Index kMaxSnapDofs = 3000;
 
 /// Follow `control` with the increments of `policy` from `u` (all DOFs; the accepted state at t = 0,
