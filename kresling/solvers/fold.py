@@ -25,6 +25,20 @@ _DEFAULTS = _core.solvers.FoldOptions()
 __all__ = ["solve_fold", "fold", "FoldResult"]
 
 
+def fold_stages(stages) -> list:
+    """The stages as ``[(hinges (K,) int, targets (K,) float), ...]``; a stage that is not
+    a pair is refused naming it (the core checks ranges and sizes)."""
+    out = []
+    for k, stage in enumerate(stages):
+        try:
+            hinges, targets = stage
+        except (TypeError, ValueError):
+            raise ValueError(f"stages[{k}] must be (hinges, targets)") from None
+        out.append((np.asarray(hinges, dtype=np.int64).ravel(),
+                    np.asarray(targets, dtype=float).ravel()))
+    return out
+
+
 def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterations=50,
                max_bisections=10, extrapolation=0, shift=_DEFAULTS.shift, initial=None, stop=None,
                cholesky="auto", adaptive=False, adaptive_tolerance=1e-9,
@@ -93,15 +107,7 @@ def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterati
     if stop is not None and not callable(stop):
         raise ValueError(f"stop = {stop!r} is invalid: must be None or a callable")
     o.stop = stop
-    core_stages = []
-    for k, stage in enumerate(stages):
-        try:
-            hinges, targets = stage
-        except (TypeError, ValueError):
-            raise ValueError(f"stages[{k}] must be (hinges, targets)") from None
-        hinges = np.asarray(hinges, dtype=np.int64).ravel()
-        targets = np.asarray(targets, dtype=float).ravel()
-        core_stages.append((hinges.tolist(), targets))
+    core_stages = [(hinges.tolist(), targets) for hinges, targets in fold_stages(stages)]
     load = np.zeros(model.num_dofs) if forces is None else dof_vector(model, "forces", forces)
     core = _core.solvers.fold(model._core, core_stages, as_integer("steps", steps, minimum=1),
                               load, o, dof_vector(model, "initial", initial, allow_none=True))

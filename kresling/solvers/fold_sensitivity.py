@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from kresling._validation import as_float_array
+from kresling.solvers.fold import fold_stages
 from kresling.solvers.path import PathResult
 from kresling.solvers.sensitivity import (Direction, Parameter, PathSensitivity,
                                           equilibrium_sensitivity, with_parameter)
@@ -22,17 +22,10 @@ __all__ = ["fold_sensitivity"]
 
 
 def _stages(stages) -> list:
-    out = []
-    for k, stage in enumerate(stages):
-        try:
-            hinges, targets = stage
-        except (TypeError, ValueError):
-            raise ValueError(f"stages[{k}] must be (hinges, targets)") from None
-        hinges = np.asarray(hinges, dtype=np.int64).ravel()
-        targets = as_float_array(f"stages[{k}] targets", targets).ravel()
+    out = fold_stages(stages)
+    for k, (hinges, targets) in enumerate(out):
         if hinges.shape != targets.shape:
             raise ValueError(f"stages[{k}]: {hinges.size} hinges but {targets.size} targets")
-        out.append((hinges, targets))
     if not out:
         raise ValueError("stages is empty: give the fold's stages")
     return out
