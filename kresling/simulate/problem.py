@@ -66,11 +66,14 @@ RELATIVE_TOLERANCE = 1e-8
 MERLIN2_TOLERANCE = 1e-6
 #: ``method = "fold"``: increments per stage when the problem gives no ``steps``.
 FOLD_STEPS = 40
-#: ``method = "fold"``: each increment's start when the problem gives no ``predictor``.
+#: ``method = "fold"``: each increment's start when the problem gives no ``predictor`` (and
+#: no ``[contact]``: then the previous equilibrium).
 FOLD_PREDICTOR = "quadratic"
 #: ``method = "fold"``: Newton gives an increment up (and halves it) when its correction
 #: at this iteration or later is still above 1e-3 of its first (no ``max_iterations`` of
-#: wandering where the path turns sharply; docs/folding.md, 'Large patterns').
+#: wandering where the path turns sharply; docs/folding.md, 'Large patterns'). Not with
+#: ``[contact]``, whose barriers shorten Newton's steps near touching panels and so slow
+#: it down without its wandering.
 FOLD_GIVE_UP_AFTER = 12
 #: The hinges' enhanced linear limits [deg] when ``[laws]`` gives none (with a preset
 #: material, the preset's).
@@ -808,6 +811,12 @@ def load_problem(problem, *, overrides=None) -> Problem:
                                       text), _number, _positive, _boolean, _vector3, _string)
     if analysis.tolerance is None:
         analysis = replace(analysis, tolerance=default_tolerance(pattern, compat))
+    if (contact is not None and analysis.method == "fold" and analysis.increments != "adaptive"
+            and not t_analysis.has("predictor")):
+        # With panel contact a fold starts each increment from the previous equilibrium: an
+        # extrapolated start may carry panels into each other, where the barriers' own
+        # limits then shorten every Newton step.
+        analysis = replace(analysis, predictor="previous")
     root.finish()
     result = Problem(pattern, split, material, compat, laws, supports, loads, analysis, source,
                      centre, output, actuations, springs, convention, sheet_mass, masses,

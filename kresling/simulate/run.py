@@ -618,7 +618,8 @@ def _solve(problem, pm, vector, common, plan):
                           extrapolation=PREDICTORS.index(analysis.predictor),
                           adaptive=analysis.increments == "adaptive",
                           adaptive_tolerance=ADAPTIVE_TOLERANCE, snap=analysis.snap,
-                          give_up_after=FOLD_GIVE_UP_AFTER, **common)
+                          give_up_after=0 if problem.contact is not None else FOLD_GIVE_UP_AFTER,
+                          **common)
     monitor = analysis.stop
     return solve_mgdcm(model, vector, initial_load_factor=analysis.initial_load_factor,
                        max_increments=analysis.max_increments,
