@@ -53,6 +53,28 @@ def test_arm_pull_until_snap(configuration, direction, max_pull):
         finite(result.pulls)
 
 
+@fuzz(3)
+@given(mostly(st.lists(st.floats(-80, 80), min_size=2, max_size=2).map(
+           lambda xy: [*xy, 0.0]), junk),
+       mostly(st.floats(150, 340), edgy_floats, junk),
+       mostly(st.sampled_from([["111"], ["101"], ["1"], ["12"]]), junk),
+       mostly(st.sampled_from(["travel", "stiffness"]), junk),
+       mostly(st.floats(1e-4, 1.0), edgy_floats, junk))
+def test_arm_reach(target_xy, z, configurations, prefer, tolerance):
+    # Reaching a point: a result with a finite tip and pulls >= 0 (the meaning of --pulls),
+    # or a ValueError naming what is wrong; never a traceback or a hang.
+    from kresling.arm.reach import reach
+
+    target = target_xy if not isinstance(target_xy, list) else [target_xy[0], target_xy[1], z]
+    result = attempt(lambda: reach(target, configurations=configurations, prefer=prefer,
+                                   tolerance=tolerance),
+                     *ARM, "target", "configurations", "prefer", "tolerance", "modules")
+    if result is not None:
+        finite(result.tip_position, result.tendon_displacements, result.error)
+        assert (result.tendon_displacements >= 0).all()
+        assert result.reached == (result.error <= tolerance)
+
+
 _ONE_MODULE = {c: build_arm(c) for c in ("1", "0")}
 
 
