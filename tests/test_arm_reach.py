@@ -107,3 +107,15 @@ def test_closing_the_loop_beats_the_open_loop_on_a_perturbed_arm():
     exact = closed_loop(target, seed=1, iterations=1, configurations=["101"], camera_error=0.0,
                         spread={"kf": 0.0, "Lc": 0.0, "tendon_radius": 0.0})
     assert exact.open_loop_structural < 1e-3 and exact.closed_loop[0] < 1e-3
+
+
+def test_the_reach_view_shows_the_arm_moving_to_the_target(tmp_path, capsys):
+    page = tmp_path / "reach.html"
+    assert main(["arm", "--config", "111", "--reach", "10", "-5", "320", "--view",
+                 str(page)]) == 0
+    assert f"wrote {page}" in capsys.readouterr().out
+    text = page.read_text()
+    assert "configuration 111 reaching" in text and "distance from the target" in text
+    assert main(["arm", "--reach", "10", "-5", "320", "--closed-loop", "--view",
+                 str(page)]) == 2
+    assert "--view draws the planned reach" in capsys.readouterr().err

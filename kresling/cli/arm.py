@@ -96,6 +96,10 @@ def register(subparsers) -> None:
                              "stiffness, cell height and tendon radius drawn by --seed), measure "
                              "its tip with 0.2 mm of camera error and correct the pulls on the "
                              "model's tip Jacobian, five times; print each step's error")
+    parser.add_argument("--view", metavar="FILE.html",
+                        help="with --reach: write an interactive page of the arm moving from "
+                             "its pretensioned state to the pulls found, beside the tip's "
+                             "distance from the target")
     parser.add_argument("--seed", type=int, default=0,
                         help="with --closed-loop: the draw of the true arm and the camera, an "
                              "integer index (default 0)")
@@ -289,6 +293,12 @@ def _run_reach(args) -> int:
 
     if args.pulls is not None:
         raise ValueError("pulls: --reach finds the pulls; leave --pulls out")
+    if args.view:
+        if args.closed_loop:
+            raise ValueError("view: --view draws the planned reach; leave --closed-loop out")
+        from kresling.view import check_writable
+
+        check_writable(args.view)   # before the planning, not after
     configurations = None if args.config is None else [_configuration(args)]
     modules = 3 if args.modules is None else args.modules
     if args.closed_loop:
@@ -303,6 +313,10 @@ def _run_reach(args) -> int:
                               if isinstance(v, tuple) else {"failed": v})
                           for c, v in r.candidates.items()},
            "message": r.message}
+    if args.view:
+        _write_reach_view(args, r)
+        print(f"wrote {args.view} (interactive page)", file=sys.stderr if args.json
+              else sys.stdout)
     if args.json:
         print_json(out)
     else:
@@ -313,6 +327,33 @@ def _run_reach(args) -> int:
         print(f"\n{'reached' if r.reached else r.message}; check: kresling arm --config "
               f"{r.configuration} --pulls " + " ".join(f"{p:.9g}" for p in r.tendon_displacements))
     return 0 if r.reached else 1
+
+
+def _write_reach_view(args, result) -> None:
+    """The arm pulled from its pretensioned state to ``result``'s pulls in 20 increments,
+    beside the tip's distance from the target."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from kresling.arm import ArmSolver, build_arm
+    from kresling.view import view_path, write_html
+
+    arm = build_arm(result.configuration, **_arm_options(args))
+    solver = ArmSolver(arm, steps=20, max_bisections=0)
+    base = solver.pretension(_pretension(args))
+    states, _, _ = solver.ramp(base, base.pulls + result.tendon_displacements)
+    states = [base, *states]
+    fraction = np.linspace(0.0, 1.0, len(states))
+    miss = [float(np.linalg.norm(s.tip_position - result.target)) for s in states]
+    path = SimpleNamespace(displacement=np.array([s.displacement for s in states]),
+                           load_factor=fraction, completed=True, message="")
+    page = view_path(arm, path, curve=(fraction, miss, "fraction of the pulls",
+                                       "tip's distance from the target [mm]"),
+                     title=f"configuration {result.configuration} reaching "
+                           f"{np.round(result.target, 2).tolist()} mm "
+                           f"(pulls {np.round(result.tendon_displacements, 3).tolist()} mm)")
+    write_html(page, args.view)
 
 
 def _run_closed_loop(args, configurations) -> int:
