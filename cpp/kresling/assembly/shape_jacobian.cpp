@@ -1,5 +1,6 @@
 #include "kresling/assembly/shape_jacobian.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,11 +16,13 @@ SparseMatrix reference_geometry_jacobian(const model::Model& model, const std::s
   if (f == nullptr) {
     throw std::invalid_argument("the model has no element family '" + family + "'");
   }
-  model::ParameterDerivative d;
-  f->parameter_derivative(model.nodes(), VectorX::Zero(model.num_dofs()), column, d);  // checks the name
+  const std::vector<std::string> columns = f->parameters();
+  if (std::find(columns.begin(), columns.end(), column) == columns.end()) {
+    model::throw_unknown_parameter(*f, column);
+  }
   std::vector<model::ParameterDerivative::Triplet> triplets;
   f->reference_geometry_derivative(model.nodes(), column, triplets);
-  SparseMatrix R(d.energy.size(), model.num_dofs());
+  SparseMatrix R(static_cast<Index>(f->table().at(column).size()), model.num_dofs());
   R.setFromTriplets(triplets.begin(), triplets.end());
   return R;
 }

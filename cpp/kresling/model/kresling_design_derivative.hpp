@@ -41,13 +41,9 @@ struct SpecimenDesignDerivative {
   VectorX hinge_stiffness;  ///< d stiffness / dv per hinge
 };
 
-/// The design variables, in the order results list them, then the material ratio a fit
-/// may seek.
-inline constexpr const char* kSpecimenDesignVariables[] = {"lam", "Lc", "R", "thickness", "kf",
-                                                           "modulus_factor"};
-
 /// The derivative of `specimen` (built from `design` with `states`, `chirality` and
-/// `parameters`) by `variable`, one of kSpecimenDesignVariables. Throws
+/// `parameters`) by `variable`: "lam", "Lc", "R", "thickness", "kf" or
+/// "modulus_factor". Throws
 /// std::invalid_argument for any other name or lists that do not match the specimen.
 SpecimenDesignDerivative specimen_design_derivative(const KreslingSpecimen& specimen,
                                                     const geometry::Design& design,

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include <Eigen/Dense>
 
@@ -39,6 +41,35 @@ double energy_at(assembly::Assembler& assembler, const VectorX& u, const VectorX
   return assembler.assemble(u, force, /*with_matrix=*/false).total() - work(external, u);
 }
 
+// Move u along `step` (on the assembler's rows; shortened to max_step) by backtracking on
+// the energy from `energy` (slope from `gradient`), no further than a contact barrier
+// allows: across it the energy is finite again. A step below the energy's rounding is
+// taken whole. False, with `failure` said, when 40 halvings find no lower energy.
+bool line_search(assembly::Assembler& assembler, VectorX& u, VectorX step, double energy,
+                 const VectorX& gradient, const VectorX* external,
+                 const EnergyMinimumOptions& o, std::string& failure) {
+  if (step.norm() > o.max_step) step *= o.max_step / step.norm();
+  const double slope = std::min(gradient.dot(step), 0.0);
+  VectorX move = VectorX::Zero(u.size());
+  scatter_add_rows(assembler, step, move);
+  double alpha = std::min(1.0, barrier_step_fraction(assembler.model(), u, move));
+  VectorX trial;
+  for (int halvings = 0;; ++halvings) {
+    trial = u;
+    scatter_add_rows(assembler, alpha * step, trial);
+    const double e = energy_at(assembler, trial, external);
+    const bool rounding = alpha * step.norm() <= 10.0 * o.tolerance;
+    if ((std::isfinite(e) && e <= energy + 1e-4 * alpha * slope) || rounding) break;
+    if (halvings == 40) {
+      failure = "the line search found no lower energy along the step";
+      return false;
+    }
+    alpha *= 0.5;
+  }
+  u = std::move(trial);
+  return true;
+}
+
 }  // namespace
 
 EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
@@ -71,27 +102,9 @@ EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
       }
       step = o.escape_step * V.col(0);  // out of the saddle, down its steepest direction
     }
-    if (step.norm() > o.max_step) step *= o.max_step / step.norm();
-    // Backtracking on the energy; a step below the rounding of the energy is taken whole.
-    const double slope = std::min(e.gradient.dot(step), 0.0);
-    // No further than a contact barrier allows: across it the energy is finite again.
-    VectorX move = VectorX::Zero(u.size());
-    scatter_add_rows(assembler, step, move);
-    double alpha = std::min(1.0, barrier_step_fraction(assembler.model(), u, move));
-    VectorX trial;
-    for (int halvings = 0;; ++halvings) {
-      trial = u;
-      scatter_add_rows(assembler, alpha * step, trial);
-      const double energy = energy_at(assembler, trial, external);
-      const bool rounding = alpha * step.norm() <= 10.0 * o.tolerance;
-      if ((std::isfinite(energy) && energy <= e.energy + 1e-4 * alpha * slope) || rounding) break;
-      if (halvings == 40) {
-        out.failure = "the line search found no lower energy along the step";
-        return out;
-      }
-      alpha *= 0.5;
+    if (!line_search(assembler, u, step, e.energy, e.gradient, external, o, out.failure)) {
+      return out;
     }
-    u = trial;
   }
   out.failure = "no stable equilibrium within " + std::to_string(o.max_iterations) + " iterations";
   return out;
@@ -149,25 +162,9 @@ EnergyMinimum minimize_energy_sparse(assembly::Assembler& assembler, TangentSolv
       out.failure = "the descent stopped where the tangent is not positive definite (a saddle)";
       return out;
     }
-    if (step.norm() > o.max_step) step *= o.max_step / step.norm();
-    const double slope = std::min(gradient.dot(step), 0.0);
-    VectorX move = VectorX::Zero(u.size());
-    scatter_add_rows(assembler, step, move);
-    double alpha = std::min(1.0, barrier_step_fraction(assembler.model(), u, move));
-    VectorX trial;
-    for (int halvings = 0;; ++halvings) {
-      trial = u;
-      scatter_add_rows(assembler, alpha * step, trial);
-      const double e = energy_at(assembler, trial, external);
-      const bool rounding = alpha * step.norm() <= 10.0 * o.tolerance;
-      if ((std::isfinite(e) && e <= energy + 1e-4 * alpha * slope) || rounding) break;
-      if (halvings == 40) {
-        out.failure = "the line search found no lower energy along the step";
-        return out;
-      }
-      alpha *= 0.5;
+    if (!line_search(assembler, u, step, energy, gradient, external, o, out.failure)) {
+      return out;
     }
-    u = trial;
   }
   out.failure = "no stable equilibrium within " + std::to_string(o.max_iterations) + " iterations";
   return out;

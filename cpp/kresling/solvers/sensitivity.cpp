@@ -48,23 +48,23 @@ void EquilibriumSensitivity::update(const VectorX& u) {
                                 std::to_string(n) + " (3 per node)");
   }
   assembler_->assemble(u, force_, /*with_matrix=*/true);
-  K_ = assembler_->matrix();
+  const SparseMatrix& K = assembler_->matrix();
   const auto nf = static_cast<Index>(free_dofs_.size());
-  const bool same_K = kff_slot_.size() == static_cast<std::size_t>(K_.nonZeros()) &&
-                      std::equal(K_.outerIndexPtr(), K_.outerIndexPtr() + K_.outerSize() + 1,
+  const bool same_K = kff_slot_.size() == static_cast<std::size_t>(K.nonZeros()) &&
+                      std::equal(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1,
                                  k_outer_.begin()) &&
-                      std::equal(K_.innerIndexPtr(), K_.innerIndexPtr() + K_.nonZeros(),
+                      std::equal(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros(),
                                  k_inner_.begin());
   if (same_K) {
     // The states of a path share the pattern: copy K's free block's values in place.
     for (std::size_t i = 0; i < kff_slot_.size(); ++i) {
-      if (kff_slot_[i] >= 0) Kff_.valuePtr()[kff_slot_[i]] = K_.valuePtr()[i];
+      if (kff_slot_[i] >= 0) Kff_.valuePtr()[kff_slot_[i]] = K.valuePtr()[i];
     }
   } else {
     std::vector<Eigen::Triplet<double, int>> ff;
-    ff.reserve(static_cast<std::size_t>(K_.nonZeros()));
-    for (int col = 0; col < K_.outerSize(); ++col) {
-      for (SparseMatrix::InnerIterator it(K_, col); it; ++it) {
+    ff.reserve(static_cast<std::size_t>(K.nonZeros()));
+    for (int col = 0; col < K.outerSize(); ++col) {
+      for (SparseMatrix::InnerIterator it(K, col); it; ++it) {
         const Index r = free_row_[it.row()], c = free_row_[it.col()];
         if (r >= 0 && c >= 0) ff.emplace_back(static_cast<int>(r), static_cast<int>(c), it.value());
       }
@@ -75,10 +75,10 @@ void EquilibriumSensitivity::update(const VectorX& u) {
     solver_ = std::make_unique<TangentSolver>();
     Kff_ = std::move(Kff);
     // Where each of K's entries goes in K_ff's value array (-1: a held row or column).
-    kff_slot_.assign(static_cast<std::size_t>(K_.nonZeros()), -1);
-    for (int col = 0; col < K_.outerSize(); ++col) {
-      for (int i = K_.outerIndexPtr()[col]; i < K_.outerIndexPtr()[col + 1]; ++i) {
-        const Index r = free_row_[K_.innerIndexPtr()[i]], c = free_row_[col];
+    kff_slot_.assign(static_cast<std::size_t>(K.nonZeros()), -1);
+    for (int col = 0; col < K.outerSize(); ++col) {
+      for (int i = K.outerIndexPtr()[col]; i < K.outerIndexPtr()[col + 1]; ++i) {
+        const Index r = free_row_[K.innerIndexPtr()[i]], c = free_row_[col];
         if (r < 0 || c < 0) continue;
         const int* begin = Kff_.innerIndexPtr() + Kff_.outerIndexPtr()[c];
         const int* end = Kff_.innerIndexPtr() + Kff_.outerIndexPtr()[c + 1];
@@ -86,8 +86,8 @@ void EquilibriumSensitivity::update(const VectorX& u) {
                                         Kff_.innerIndexPtr());
       }
     }
-    k_outer_.assign(K_.outerIndexPtr(), K_.outerIndexPtr() + K_.outerSize() + 1);
-    k_inner_.assign(K_.innerIndexPtr(), K_.innerIndexPtr() + K_.nonZeros());
+    k_outer_.assign(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1);
+    k_inner_.assign(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros());
   }
   if (nf == 0) {
     info_.ok = true;
@@ -108,7 +108,8 @@ void EquilibriumSensitivity::require_ok() const {
 Eigen::MatrixXd EquilibriumSensitivity::displacement(const Eigen::MatrixXd& dresidual,
                                                      const Eigen::MatrixXd& held_motion) const {
   require_ok();
-  const Index n = K_.rows(), P = dresidual.cols();
+  const SparseMatrix& K = tangent();
+  const Index n = K.rows(), P = dresidual.cols();
   const auto nh = static_cast<Index>(held_dofs_.size());
   if (dresidual.rows() != n) {
     throw std::invalid_argument("dresidual has " + std::to_string(dresidual.rows()) +
@@ -124,9 +125,9 @@ Eigen::MatrixXd EquilibriumSensitivity::displacement(const Eigen::MatrixXd& dres
     for (Index k = 0; k < nh; ++k) du.row(held_dofs_[k]) = held_motion.row(k);
   }
   // Right-hand side -(d r_f/dp + K_fc du_c/dp): K du with only the held rows of du set is
-  // K_.c du_c, whose free rows are K_fc du_c.
+  // K.c du_c, whose free rows are K_fc du_c.
   Eigen::MatrixXd coupled;
-  if (moving) coupled = K_ * du;
+  if (moving) coupled = K * du;
   const auto nf = static_cast<Index>(free_dofs_.size());
   if (nf == 0) return du;
   Eigen::MatrixXd rhs(nf, P);
@@ -141,12 +142,13 @@ Eigen::MatrixXd EquilibriumSensitivity::displacement(const Eigen::MatrixXd& dres
 
 Eigen::MatrixXd EquilibriumSensitivity::held_force(const Eigen::MatrixXd& dforce,
                                                    const Eigen::MatrixXd& du) const {
-  const Index n = K_.rows();
+  const SparseMatrix& K = tangent();
+  const Index n = K.rows();
   if (dforce.rows() != n || du.rows() != n || dforce.cols() != du.cols()) {
     throw std::invalid_argument("dforce and du must both be " + std::to_string(n) +
                                 " x P (DOFs x parameters)");
   }
-  const Eigen::MatrixXd total = dforce + K_ * du;
+  const Eigen::MatrixXd total = dforce + K * du;
   Eigen::MatrixXd out(static_cast<Index>(held_dofs_.size()), du.cols());
   for (std::size_t k = 0; k < held_dofs_.size(); ++k) out.row(static_cast<Index>(k)) = total.row(held_dofs_[k]);
   return out;
@@ -154,7 +156,7 @@ Eigen::MatrixXd EquilibriumSensitivity::held_force(const Eigen::MatrixXd& dforce
 
 VectorX EquilibriumSensitivity::adjoint(const VectorX& g) const {
   require_ok();
-  const Index n = K_.rows();
+  const Index n = tangent().rows();
   if (g.size() != n) {
     throw std::invalid_argument("g has " + std::to_string(g.size()) + " entries: must have " +
                                 std::to_string(n));

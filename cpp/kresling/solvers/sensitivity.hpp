@@ -56,7 +56,7 @@ class EquilibriumSensitivity {
   /// Every held DOF: the model's supports in DOF order, then `held` in its order.
   const std::vector<Index>& held_dofs() const { return held_dofs_; }
   /// The tangent d f_int/du at the state (3N x 3N, symmetric, unshifted).
-  const SparseMatrix& tangent() const { return K_; }
+  const SparseMatrix& tangent() const { return assembler_->matrix(); }
   /// The internal force f_int at the state (3N).
   const VectorX& internal_force() const { return force_; }
 
@@ -74,16 +74,15 @@ class EquilibriumSensitivity {
   void require_ok() const;
 
   model::Model model_;                           // the assembler binds to this copy
-  std::unique_ptr<assembly::Assembler> assembler_;
-  SparseMatrix K_;
+  std::unique_ptr<assembly::Assembler> assembler_;  // its matrix: the tangent at the state
   VectorX force_;
   std::vector<Index> held_dofs_;
   std::vector<Index> free_row_;  // per DOF: its row in K_ff, or -1 if held
   std::vector<Index> free_dofs_;
   std::unique_ptr<TangentSolver> solver_;
   SparseMatrix Kff_;                // the last factorised K_ff
-  std::vector<int> kff_slot_;       // per entry of K_: its place in Kff_'s values, or -1
-  std::vector<int> k_outer_, k_inner_;  // K_'s pattern when kff_slot_ was made
+  std::vector<int> kff_slot_;       // per entry of K: its place in Kff_'s values, or -1
+  std::vector<int> k_outer_, k_inner_;  // K's pattern when kff_slot_ was made
   FactorizeInfo info_;
 };
 
