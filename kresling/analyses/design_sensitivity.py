@@ -46,8 +46,8 @@ from kresling.solvers.displacement_control import solve_displacement_control
 from kresling.solvers.sensitivity import Direction, path_sensitivity
 
 __all__ = ["DESIGN_VARIABLES", "SPECIMEN_VARIABLES", "GRADIENT_QUANTITIES", "DesignGradient",
-           "bending_gradient", "bending_force_gradient", "snap_through_gradient",
-           "design_gradient"]
+           "bending_gradient", "bending_pair_gradient", "bending_force_gradient",
+           "snap_through_gradient", "design_gradient", "checked_variables"]
 
 #: The design variables, in the order results list them.
 DESIGN_VARIABLES = ("lam", "Lc", "R", "thickness", "kf")
@@ -151,12 +151,13 @@ def _exact_angles(parameters) -> SpecimenParameters:
     return dataclasses.replace(parameters or SpecimenParameters(), hinge_angle="exact")
 
 
-def _checked_variables(variables) -> tuple:
+def checked_variables(variables, allowed=SPECIMEN_VARIABLES) -> tuple:
+    """``variables`` as a tuple, each among ``allowed``; a ValueError names the first that
+    is not."""
     variables = tuple(variables)
     for v in variables:
-        if v not in SPECIMEN_VARIABLES:
-            raise ValueError(f"variables: {v!r} is invalid: must be among "
-                             f"{', '.join(SPECIMEN_VARIABLES)}")
+        if v not in allowed:
+            raise ValueError(f"variables: {v!r} is invalid: must be among {', '.join(allowed)}")
     if not variables:
         raise ValueError("variables is empty: give at least one of "
                          f"{', '.join(DESIGN_VARIABLES)}")
@@ -204,7 +205,7 @@ def bending_gradient(design: Design, state, protocol="5mm", *, parameters=None,
     ValueError
         For a bad design, state or variable, or a run that does not complete.
     """
-    variables = _checked_variables(variables)
+    variables = checked_variables(variables)
     y, F, length = _bending_duals(design, state, protocol, parameters, variables, cells,
                                   deflection, deflection_angle, steps)
     xy = xx = 0.0
@@ -240,7 +241,7 @@ def bending_force_gradient(design: Design, state, deflection, steps, *, paramete
     (ndarray (S,), ndarray (S,), ndarray (S, P))
         The deflection at every increment [mm], the force F [N] and dF/dv.
     """
-    variables = _checked_variables(variables)
+    variables = checked_variables(variables)
     y, F, _ = _bending_duals(design, state, "5mm", parameters, variables, cells, deflection,
                              None, steps)
     return (np.array([v.value for v in y]), np.array([v.value for v in F]),
@@ -334,7 +335,7 @@ def snap_through_gradient(design: Design, *, parameters=None, variables=DESIGN_V
         NaN with NaN derivatives.
     """
     design = as_design(design)
-    variables = _checked_variables(variables)
+    variables = checked_variables(variables)
     parameters = _exact_angles(parameters)
     n = design.n
     test = _core.analyses.SnapThroughTest(n, steps, parameters.to_core(),
@@ -419,16 +420,26 @@ def design_gradient(design: Design, protocol="5mm", *, parameters=None,
     -------
     DesignGradient
     """
-    variables = _checked_variables(variables)
+    variables = checked_variables(variables)
+    both = bending_pair_gradient(design, protocol, parameters=parameters, variables=variables,
+                                 **bending)
+    snap = snap_through_gradient(design, parameters=parameters, variables=variables)
+    runs = dict(both, **snap)
+    return DesignGradient(values={q: runs[q][0] for q in GRADIENT_QUANTITIES},
+                          gradient={q: runs[q][1] for q in GRADIENT_QUANTITIES},
+                          protocol=protocol)
+
+
+def bending_pair_gradient(design: Design, protocol="5mm", *, parameters=None,
+                          variables=DESIGN_VARIABLES, **bending) -> dict:
+    """K_B of both states and their ratio with their derivatives: ``{"kb_extended",
+    "kb_contracted", "kb_ratio"}`` to ``(value, {variable: derivative})`` (arguments as
+    :func:`design_gradient`)."""
+    variables = checked_variables(variables)
     k_ext, g_ext = bending_gradient(design, 1, protocol, parameters=parameters,
                                     variables=variables, **bending)
     k_con, g_con = bending_gradient(design, 0, protocol, parameters=parameters,
                                     variables=variables, **bending)
     ratio = _Dual(k_ext, [g_ext[v] for v in variables]) / _Dual(k_con, [g_con[v] for v in variables])
-    snap = snap_through_gradient(design, parameters=parameters, variables=variables)
-    values = {"kb_ratio": ratio.value, "kb_extended": k_ext, "kb_contracted": k_con,
-              "snap_force": snap["snap_force"][0], "energy_barrier": snap["energy_barrier"][0]}
-    gradient = {"kb_ratio": dict(zip(variables, ratio.grad.tolist())), "kb_extended": g_ext,
-                "kb_contracted": g_con, "snap_force": snap["snap_force"][1],
-                "energy_barrier": snap["energy_barrier"][1]}
-    return DesignGradient(values=values, gradient=gradient, protocol=protocol)
+    return {"kb_extended": (k_ext, g_ext), "kb_contracted": (k_con, g_con),
+            "kb_ratio": (ratio.value, dict(zip(variables, ratio.grad.tolist())))}

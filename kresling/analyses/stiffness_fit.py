@@ -23,7 +23,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling._validation import as_float_array, as_integer
-from kresling.analyses.design_sensitivity import bending_force_gradient, bending_gradient
+from kresling.analyses.design_sensitivity import (bending_force_gradient, bending_gradient,
+                                                checked_variables)
 from kresling.geometry import Design, as_design, state_index
 from kresling.model.kresling_specimen import SpecimenParameters
 
@@ -126,7 +127,7 @@ def fit_specimen_stiffness(records, *, variables=FIT_VARIABLES, initial=None, st
     records = list(records)
     if not records or not all(isinstance(r, BendingRecord) for r in records):
         raise ValueError("records must be a non-empty sequence of BendingRecord")
-    variables = _checked_variables(variables)
+    variables = checked_variables(variables, FIT_VARIABLES)
     steps = as_integer("steps", steps, minimum=1)
     scales = [float(np.max(np.abs(r.force))) or 1.0 for r in records]
 
@@ -167,7 +168,7 @@ def fit_bending_stiffnesses(measured, *, variables=FIT_VARIABLES, initial=None,
     measured = [(as_design(d), state_index(s), float(k)) for d, s, k in measured]
     if not measured or any(not k > 0 for _, _, k in measured):
         raise ValueError("measured must be a non-empty sequence of (design, state, K_B > 0)")
-    variables = _checked_variables(variables)
+    variables = checked_variables(variables, FIT_VARIABLES)
 
     def misfit(params):
         r, J = [], []
@@ -179,15 +180,6 @@ def fit_bending_stiffnesses(measured, *, variables=FIT_VARIABLES, initial=None,
         return np.array(r), np.array(J)
 
     return _fit(misfit, variables, initial, 1e-12, max_evaluations)
-
-
-def _checked_variables(variables) -> tuple:
-    variables = tuple(variables)
-    for v in variables:
-        if v not in FIT_VARIABLES:
-            raise ValueError(f"variables: {v!r} is invalid: must be among "
-                             f"{', '.join(FIT_VARIABLES)}")
-    return variables
 
 
 def _fit(misfit, variables, initial, xtol, max_evaluations) -> StiffnessFit:

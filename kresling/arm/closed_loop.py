@@ -109,6 +109,8 @@ def closed_loop(target, *, seed: int = 0, iterations: int = 5, camera_error=CAME
     ValueError
         For a target the model does not reach.
     """
+    from scipy.optimize import lsq_linear
+
     if not (isinstance(iterations, int) and iterations >= 1):
         raise ValueError(f"iterations = {iterations!r} is invalid: must be an integer >= 1")
     if not camera_error >= 0:
@@ -141,8 +143,6 @@ def closed_loop(target, *, seed: int = 0, iterations: int = 5, camera_error=CAME
     P = plan.tendon_displacements.copy()
     tip = true_tip(P)
     open_structural = float(np.linalg.norm(tip - plan.target))
-    from scipy.optimize import lsq_linear
-
     errors = []
     model_state = plan.state
     # A correction may let a tendon out below the plan's zero (the pretension's pull), but

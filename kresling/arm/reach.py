@@ -142,8 +142,15 @@ def _solve_pulls(arm, solver, base, target, start):
     return P, state, evaluations
 
 
+def search_solver(arm: Arm) -> ArmSolver:
+    """The solver of a reach's search on ``arm``: the arm's own Newton tolerance (1e-6 mm),
+    as ``kresling arm --pulls`` runs it, so that those pulls give back the tip found; short
+    moves, and few halvings before a move counts as one the arm does not follow."""
+    return ArmSolver(arm, steps=_STEPS, max_bisections=_BISECTIONS, max_iterations=12)
+
+
 def reach_with(arm: Arm, target, *, pretension: float = DEFAULT_PRETENSION,
-               start=None) -> tuple:
+               start=None, solver: ArmSolver | None = None) -> tuple:
     """The pulls (after the pretension) that bring ``arm``'s tip nearest to ``target``, in
     its own configuration, without a module snapping on the way: ``(pulls (3,), state,
     arm's equilibria computed)``.
@@ -154,9 +161,7 @@ def reach_with(arm: Arm, target, *, pretension: float = DEFAULT_PRETENSION,
         For a bad target; EquilibriumNotReached where the arm cannot be pretensioned.
     """
     target = _target(target)
-    # The arm's own solver settings (Newton to 1e-6 mm), as `kresling arm --pulls` runs it,
-    # so that those pulls give back the tip found here.
-    solver = ArmSolver(arm, steps=_STEPS, max_bisections=_BISECTIONS, max_iterations=12)
+    solver = search_solver(arm) if solver is None else solver
     base = solver.pretension(pretension)
     if start is None:
         # The linearised answer from the pretensioned arm: often within a few per cent.
@@ -219,12 +224,13 @@ def reach(target, *, configurations=None, prefer="travel", tolerance=REACH_TOLER
             continue
         arm = build_arm(configuration, **arm_options)
         try:
-            pulls, state, _ = reach_with(arm, target, pretension=pretension)
+            solver = search_solver(arm)
+            pulls, state, _ = reach_with(arm, target, pretension=pretension, solver=solver)
         except (ValueError, RuntimeError) as error:
             candidates[configuration] = str(error)
             continue
         error = float(np.linalg.norm(state.tip_position - target))
-        compliance = float(np.linalg.eigvalsh(_symmetric(ArmSolver(arm).tip_compliance(state)))
+        compliance = float(np.linalg.eigvalsh(_symmetric(solver.tip_compliance(state)))
                            .max())
         travel = float(pulls.sum())
         candidates[configuration] = (error, travel, compliance)

@@ -287,7 +287,8 @@ class _ExactEvaluation:
 
     def at(self, u):
         """{column: (value, d/du (2,))} at u, or None where a test fails there."""
-        from kresling.analyses.design_sensitivity import bending_gradient, snap_through_gradient
+        from kresling.analyses.design_sensitivity import (bending_pair_gradient,
+                                                          snap_through_gradient)
 
         key = tuple(np.clip(u, 0.0, 1.0))
         if key in self.cache:
@@ -302,7 +303,8 @@ class _ExactEvaluation:
                 test, protocol, quantity = EXACT_COLUMNS[column]
                 if (test, protocol) not in runs:
                     runs[(test, protocol)] = (
-                        _bending_pair(bending_gradient, design, protocol, self.parameters)
+                        bending_pair_gradient(design, protocol, parameters=self.parameters,
+                                              variables=("Lc", "lam"))
                         if test == "bending" else
                         snap_through_gradient(design, parameters=self.parameters,
                                               variables=("Lc", "lam")))
@@ -331,15 +333,3 @@ class _ExactEvaluation:
     def gradients(self, u):
         v = self.at(u)
         return {c: grad for c, (_, grad) in v.items()} if v else None
-
-
-def _bending_pair(bending_gradient, design, protocol, parameters) -> dict:
-    """K_B of both states and their ratio, each (value, {variable: derivative})."""
-    variables = ("Lc", "lam")
-    k_ext, g_ext = bending_gradient(design, 1, protocol, parameters=parameters,
-                                    variables=variables)
-    k_con, g_con = bending_gradient(design, 0, protocol, parameters=parameters,
-                                    variables=variables)
-    ratio = {v: (g_ext[v] * k_con - k_ext * g_con[v]) / k_con ** 2 for v in variables}
-    return {"kb_extended": (k_ext, g_ext), "kb_contracted": (k_con, g_con),
-            "kb_ratio": (k_ext / k_con, ratio)}
