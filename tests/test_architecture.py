@@ -277,3 +277,66 @@ def test_the_binding_files_mirror_the_cpp_folders():
         for bound_types, _ in bindings.values():
             assert not [t for t in bound_types if types.get(t) == {folder}], \
                 f"types of cpp/kresling/{folder} bound outside a bind_{folder}.cpp"
+
+
+def _module_name(path: Path) -> str:
+    parts = ["kresling", *path.relative_to(PACKAGE).with_suffix("").parts]
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def import_graph() -> dict:
+    """Module -> the package's modules it imports (anywhere in the file, at the top or
+    inside a function); ``from a.b import c`` reaches ``a.b.c`` when that is a module,
+    else ``a.b``. The compiled core is a module of its own."""
+    modules = {_module_name(path): path for path in files()}
+    known = set(modules) | {"kresling._core"}
+
+    def module_of(dotted):
+        while dotted and dotted not in known:
+            dotted = dotted.rpartition(".")[0]
+        return dotted or None
+
+    graph = {}
+    for name, path in modules.items():
+        reached = {module_of(dotted) for _, dotted, layer in imports(path) if layer}
+        graph[name] = sorted(reached - {None, name})
+    return graph
+
+
+def import_cycles(graph: dict) -> list:
+    """The cycles of ``graph``: each strongly connected set of more than one module."""
+    index, low, stack, on_stack, cycles = {}, {}, [], set(), []
+
+    def visit(module):  # Tarjan's algorithm
+        index[module] = low[module] = len(index)
+        stack.append(module)
+        on_stack.add(module)
+        for other in graph.get(module, ()):
+            if other not in index:
+                visit(other)
+                low[module] = min(low[module], low[other])
+            elif other in on_stack:
+                low[module] = min(low[module], index[other])
+        if low[module] == index[module]:
+            component = []
+            while not component or component[-1] != module:
+                component.append(stack.pop())
+                on_stack.discard(component[-1])
+            if len(component) > 1:
+                cycles.append(sorted(component))
+
+    for module in graph:
+        if module not in index:
+            visit(module)
+    return cycles
+
+
+def test_no_two_modules_import_each_other_even_inside_a_function():
+    cycles = import_cycles(import_graph())
+    assert not cycles, "modules that import each other (directly or around a loop):\n" + \
+        "\n".join(" <-> ".join(cycle) for cycle in cycles)
+
+
+def test_the_cycle_check_finds_a_loop_of_three_and_not_a_chain():
+    assert import_cycles({"a": ["b"], "b": ["c"], "c": ["a"], "d": ["a"]}) == [["a", "b", "c"]]
+    assert import_cycles({"a": ["b"], "b": ["c"], "c": []}) == []

@@ -128,7 +128,7 @@ def test_at_rest_the_floor_carries_the_weight(drop, columns):
 
 def test_without_the_floor_the_cell_falls_through_it():
     problem = load_problem(EXAMPLE)
-    problem = type(problem)(**{**problem.__dict__, "contact": None})
+    problem = problem.replace(contact=None)
     free = simulate(problem, progress=False)
     assert free.completed
     z = free.model.nodes[:, 2] + free.path.displacement[-1, 2::3]

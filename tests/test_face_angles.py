@@ -16,7 +16,7 @@ from kresling.assembly import assemble
 from kresling.io import read_pattern
 from kresling.model import ManualProperties, Model, build_pattern_model, family_kinds
 from kresling.simulate import load_problem, simulate
-from kresling.simulate.run import build_problem_model
+from kresling.simulate import build_problem_model
 from public_files import ORIGAMI_SIMULATOR
 
 

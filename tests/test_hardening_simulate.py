@@ -15,7 +15,7 @@ import pytest
 from cli_helpers import run_kresling
 from kresling import _core
 from kresling.simulate import load_problem, simulate
-from kresling.simulate.problem import QUANTITY_RANGE
+from kresling.simulate.problem_table import QUANTITY_RANGE
 from kresling.simulate.problem_file import MAX_NESTING
 
 DOCS = Path(__file__).resolve().parents[1] / "docs"

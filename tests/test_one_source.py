@@ -12,7 +12,7 @@ import pytest
 
 from kresling import _core
 from kresling.model import SpecimenParameters
-from kresling.simulate.problem import Analysis
+from kresling.simulate.problem_keys.analysis import Analysis
 from kresling.solvers import (solve_displacement_control, solve_fold, solve_force_control,
                               solve_mgdcm)
 
@@ -88,9 +88,9 @@ def test_the_fold_assignment_tables_derive_from_one():
     from kresling.model.crease_laws import CreaseLaws, HingeLaw
     from kresling.model.pattern_model import FAMILY_OF_ASSIGNMENT
     from kresling.model.pattern_model import FOLD_FAMILIES as pattern_fold_families
-    from kresling.simulate.actuation import _FOLD_FAMILIES
+    from kresling.simulate.fold_plan import _FOLD_FAMILIES
     from kresling.simulate.outputs import _ASSIGNMENT
-    from kresling.simulate.problem_actuation import ACTUATION_FAMILIES
+    from kresling.simulate.problem_keys.actuation import ACTUATION_FAMILIES
     from kresling.view.fold import ASSIGNMENT_FAMILIES
     assert FOLD_FAMILIES == tuple(FAMILY_OF_FOLD.values()) == pattern_fold_families
     assert FAMILY_OF_ASSIGNMENT is FAMILY_OF_FOLD
@@ -109,13 +109,19 @@ def test_the_shared_literals_come_from_the_core():
     # them (or, where it must repeat one, is held to it here).
     from kresling.cli._specimen import add_specimen_arguments
     import argparse
-    from kresling.simulate import problem
+    from kresling.simulate import load_problem
     parser = argparse.ArgumentParser()
     add_specimen_arguments(parser)
     assert parser.get_default("kf") == _core.model.SpecimenParameters().kf == \
         SpecimenParameters().kf
     mgdcm = _core.solvers.MgdcmOptions()
-    assert problem._MGDCM.initial_load_factor == mgdcm.initial_load_factor
+    read = load_problem({"pattern": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]],
+                                     "panels": [[0, 1, 2]]},
+                         "material": {"calibration": "manual", "bar_modulus": 1e3,
+                                      "bar_area": 1.0},
+                         "load": [{"node": 2, "force": [0.0, 0.0, 1.0]}],
+                         "analysis": {"method": "mgdcm"}})
+    assert read.analysis.initial_load_factor == mgdcm.initial_load_factor
     assert Analysis(method="mgdcm").initial_load_factor == mgdcm.initial_load_factor
     for function, options in ((solve_displacement_control,
                                _core.solvers.DisplacementControlOptions),
@@ -152,7 +158,9 @@ def test_the_analysis_tables_defaults_and_bounds_are_the_codes():
         f"integer in [1, {_core.solvers.MAX_STEPS}]"
     assert rows["increments"][2] == f"`\"{analysis.increments}\"`"
     assert rows["predictor"][2] == f"`\"{analysis.predictor}\"`"
-    from kresling.simulate.problem import INCREMENTS, METHODS, PREDICTORS
+    from kresling.simulate.methods import method_names
+    from kresling.simulate.methods.path_settings import INCREMENTS, PREDICTORS
+    METHODS = method_names()
     for key, choices in (("increments", INCREMENTS), ("predictor", PREDICTORS),
                          ("method", METHODS)):
         named = [c.strip('"') for c in rows[key][1].replace(" or ", ", ").split(", ")]

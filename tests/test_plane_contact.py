@@ -14,7 +14,7 @@ import pytest
 from kresling.assembly import assemble
 from kresling.model import Model
 from kresling.simulate import load_problem, simulate
-from kresling.simulate.problem_contact import auto_barrier_stiffness
+from kresling.simulate.problem_keys.contact import auto_barrier_stiffness
 from kresling.solvers import solve_dynamics, solve_force_control
 
 FLOOR = {"origin": [[0.0, 0.0, 0.0]], "normal": [[0.0, 0.0, 1.0]]}

@@ -14,7 +14,7 @@ from cli_helpers import run_kresling
 from kresling.analyses.modes import vibration_modes
 from kresling.assembly import assemble
 from kresling.simulate import build_problem_model, load_problem, simulate
-from kresling.simulate.problem_mass import problem_masses
+from kresling.simulate.problem_keys.mass import problem_masses
 from kresling.solvers import solve_dynamics, solve_force_control
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "kresling_snap_in_time"

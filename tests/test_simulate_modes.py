@@ -89,7 +89,7 @@ def test_modes_about_a_loaded_state_are_the_library_s(tmp_path):
     """[analysis.about]: force control to the loaded equilibrium, then the modes of the
     tangent there (its stress stiffness included), bit for bit as from Python."""
     from kresling.simulate import build_problem_model
-    from kresling.simulate.problem_mass import problem_masses
+    from kresling.simulate.problem_keys.mass import problem_masses
     from kresling.solvers import solve_force_control
 
     run = simulate(LOADED)

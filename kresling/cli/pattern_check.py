@@ -25,7 +25,7 @@ def check(args) -> int:
     the pattern, its creases driven to the file's fold angles); exit 0 if ``simulate``
     would take it, 1 (with the reason) if it would refuse it."""
     from kresling.simulate import build_problem_model, load_problem
-    from kresling.simulate.actuation import fold_plan
+    from kresling.simulate.fold_plan import fold_plan
 
     pattern_keys = {"file": str(args.check), "split": args.split}
     if args.snap_tolerance is not None:

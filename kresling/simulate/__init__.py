@@ -11,7 +11,9 @@ key.
 
 from kresling.simulate.element_histories import ElementHistories, element_histories
 from kresling.simulate.problem import Analysis, Load, MonitorStop, Problem, Support, load_problem
-from kresling.simulate.run import PathState, Simulation, build_problem_model, simulate
+from kresling.simulate.problem_model import build_problem_model
+from kresling.simulate.run import simulate
+from kresling.simulate.simulation import PathState, Simulation
 
 __all__ = ["simulate", "load_problem", "build_problem_model", "Simulation", "PathState",
            "Problem", "Analysis", "Load", "Support", "MonitorStop", "ElementHistories",

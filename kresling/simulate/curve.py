@@ -20,7 +20,7 @@ import re
 
 import numpy as np
 
-__all__ = ["path_curve", "quantity"]
+__all__ = ["path_curve", "quantity", "moving_dof"]
 
 _AXES = "xyz"
 _DISPLACEMENT = re.compile(r"u_(\d+)_([xyz])")
@@ -51,28 +51,6 @@ def quantity(simulation, name, columns) -> tuple:
     return np.asarray(columns[name], dtype=float), f"{name} [{unit}]"
 
 
-def _drive(simulation):
-    """Driven displacement of the largest prescribed component [mm] and the reaction that
-    does the drive's work over it [N], with labels."""
-    path = simulation.path
-    dofs = np.asarray(path.constraint_dofs, dtype=np.int64)
-    motion = np.zeros(3 * simulation.model.num_nodes)
-    for load in simulation.problem.loads:
-        for node in load.nodes:
-            motion[3 * node:3 * node + 3] += load.vector
-    share = motion[dofs]
-    lead = int(np.argmax(np.abs(share)))
-    node, axis = divmod(int(dofs[lead]), 3)
-    x = np.asarray(path.displacement)[:, dofs[lead]]
-    reactions = np.asarray(path.constraint_force, dtype=float).reshape(len(x), len(dofs))
-    if len(dofs) == 1:
-        return x, reactions[:, 0], f"u{_AXES[axis]} of node {node} [mm]", \
-            f"reaction_{node}_{_AXES[axis]} [N]"
-    y = reactions @ (share / share[lead])  # work-conjugate to x: sum r_k du_k = y dx
-    return x, y, f"u{_AXES[axis]} of node {node} [mm]", \
-        f"drive's reaction over {len(dofs)} driven DOFs [N]"
-
-
 def path_curve(simulation, columns) -> tuple:
     """``(x, y, x_label, y_label)`` of the view's curve, one value per increment.
 
@@ -86,22 +64,10 @@ def path_curve(simulation, columns) -> tuple:
     if named is not None:
         (x, x_label), (y, y_label) = (quantity(simulation, n, columns) for n in named)
         return x, y, x_label, y_label
-    analysis = simulation.problem.analysis
-    if analysis.method == "displacement_control":
-        return _drive(simulation)
-    if analysis.method == "fold":  # load_factor runs over (k - 1, k] in stage k
-        return (100.0 * np.asarray(simulation.path.load_factor, dtype=float),
-                np.asarray(columns["energy_total"], dtype=float), "fold [%]",
-                "energy_total [N*mm]")
-    load_factor = np.asarray(simulation.path.load_factor, dtype=float)
-    if analysis.method == "dynamic":   # the motion in time: the monitored or busiest DOF
-        u, label = _moving(simulation, analysis.stop)
-        return load_factor, u, "time [s]", label
-    u, label = _moving(simulation, analysis.stop)
-    return u, load_factor, label, "load factor [-]"
+    return simulation.problem.method.curve(simulation, columns)
 
 
-def _moving(simulation, stop):
+def moving_dof(simulation, stop):
     """The monitored DOF's displacement (or, without a monitor, the DOF that moves most)
     [mm] and its label."""
     if stop is not None:

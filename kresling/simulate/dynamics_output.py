@@ -1,7 +1,7 @@
 """``method = "dynamic"``: a problem's motion in time, and its files.
 
 A dynamic run builds the problem's model with its supports and node masses (the sheet's
-density and ``[[mass]]``, :mod:`kresling.simulate.problem_mass`), and integrates it over
+density and ``[[mass]]``, :mod:`kresling.simulate.problem_keys.mass`), and integrates it over
 ``[dynamics] duration`` (:func:`kresling.solvers.solve_dynamics`) under its ``[[load]]``
 forces, each with its time function, and gravity. It writes what a path writes
 (:func:`kresling.simulate.outputs.write_outputs`: history.csv, displacements.csv,
@@ -21,9 +21,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from kresling.simulate.outputs import _write_csv, kept_rows
-from kresling.simulate.problem_mass import problem_masses
-from kresling.simulate.run import Simulation
+from kresling.simulate.outputs import kept_rows, write_csv
+from kresling.simulate.problem_keys.mass import problem_masses
+from kresling.simulate.simulation import Simulation
 from kresling.solvers import solve_dynamics
 
 __all__ = ["DynamicRun", "run_dynamics", "PLAYBACK_SECONDS"]
@@ -96,7 +96,7 @@ class DynamicRun(Simulation):
         rows = kept_rows(self.path.num_steps, every)
         header = [f"{axis}{node}" for node in range(self.model.num_nodes) for axis in "xyz"]
         written["velocities"] = Path(directory) / "velocities.csv"
-        _write_csv(written["velocities"], header, np.asarray(self.history.velocity)[rows].tolist())
+        write_csv(written["velocities"], header, np.asarray(self.history.velocity)[rows].tolist())
         return written
 
 

@@ -2,7 +2,7 @@
 equilibrium an ``[analysis.about]`` table names), and their files.
 
 A modes run builds the problem's model with its supports, its node masses (the sheet's
-density and ``[[mass]]``, :mod:`kresling.simulate.problem_mass`) and the lowest
+density and ``[[mass]]``, :mod:`kresling.simulate.problem_keys.mass`) and the lowest
 ``[analysis] modes`` modes (:func:`kresling.analyses.modes.vibration_modes`). It writes
 
 - ``modes.csv``: one row per mode: ``mode`` (1-based), ``frequency_hz``, ``participation_x``,
@@ -25,8 +25,8 @@ import numpy as np
 
 from kresling.analyses.modes import Modes, vibration_modes
 from kresling.io import write_fold
-from kresling.simulate.outputs import _write_csv, path_fold_edges
-from kresling.simulate.problem_mass import problem_masses
+from kresling.simulate.outputs import path_fold_edges, write_csv
+from kresling.simulate.problem_keys.mass import problem_masses
 from kresling.solvers import solve_force_control
 
 __all__ = ["ModesRun", "run_modes", "SHAPE_SCALE"]
@@ -86,7 +86,7 @@ class ModesRun:
                  *m.effective_mass_fraction[j].tolist(), int(m.rigid[j])]
                 for j in range(m.count)]
         written = {"modes": directory / "modes.csv"}
-        _write_csv(written["modes"], header, rows)
+        write_csv(written["modes"], header, rows)
         written["fold"] = directory / "path.fold"
         self._write_fold(written["fold"])
         written["summary"] = directory / "summary.json"

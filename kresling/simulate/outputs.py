@@ -14,9 +14,10 @@ from kresling._validation import as_integer
 from kresling.io import write_fold
 from kresling.io.frame_angles import fold_angle_frames
 from kresling.model.pattern_model import FAMILY_OF_ASSIGNMENT
+from kresling.simulate.problem_keys import problem_keys
 
 __all__ = ["write_outputs", "path_fold_edges", "oriented_triangles", "kept_rows", "view_title",
-           "LARGE_OUTPUT"]
+           "write_csv", "LARGE_OUTPUT"]
 
 logger = logging.getLogger(__name__)
 
@@ -25,7 +26,8 @@ logger = logging.getLogger(__name__)
 _ASSIGNMENT = {family: letter for letter, family in FAMILY_OF_ASSIGNMENT.items()} | {"bend": "J"}
 
 
-def _write_csv(path: Path, header, rows):
+def write_csv(path: Path, header, rows):
+    """A CSV file of ``header`` and ``rows``, written whole under a temporary name first."""
     tmp = path.with_name(path.name + ".part")
     with tmp.open("w", newline="") as handle:
         writer = csv.writer(handle)
@@ -154,13 +156,13 @@ def write_outputs(simulation, directory, *, view=True, every=None) -> dict:
     names = list(columns)
     kept = {n: np.asarray(columns[n])[rows] for n in names}
     written["history"] = directory / "history.csv"
-    _write_csv(written["history"], names, zip(*(kept[n].tolist() for n in names)))
+    write_csv(written["history"], names, zip(*(kept[n].tolist() for n in names)))
 
     model = simulation.model
     displacement = np.asarray(path.displacement)[rows]
     header = [f"{axis}{node}" for node in range(model.num_nodes) for axis in "xyz"]
     written["displacements"] = directory / "displacements.csv"
-    _write_csv(written["displacements"], header, displacement.tolist())
+    write_csv(written["displacements"], header, displacement.tolist())
 
     edges, assignment = path_fold_edges(simulation.pattern_model)
     frames = list(model.nodes[None] + displacement.reshape(len(rows), model.num_nodes, 3))
@@ -178,6 +180,9 @@ def write_outputs(simulation, directory, *, view=True, every=None) -> dict:
     written["summary"].write_text(json.dumps(simulation.summary(), indent=2) + "\n")
     if path.num_steps:
         written.update(_write_end_state(simulation, directory, triangles, frames[-1]))
+    for key in problem_keys():  # the files of keys such as [sensitivity]
+        if key.outputs is not None:
+            written.update(key.outputs(simulation, directory, rows))
 
     if view and not path.num_steps:  # no increment converged: no path to show
         logger.warning("view.html not written: the path has no converged increment")

@@ -9,7 +9,6 @@ not a guess.
 
 from __future__ import annotations
 
-import dataclasses
 import logging
 
 from kresling.model.material_presets import preset_material
@@ -19,7 +18,7 @@ __all__ = ["preset_goes_past"]
 PRESET = "origami_simulator"
 
 
-def preset_goes_past(problem, load_factor: float) -> float | None:
+def preset_goes_past(problem, load_factor: float, simulate) -> float | None:
     """Fold ``problem`` again with Origami Simulator's material to one increment past
     ``load_factor`` (where the first fold stopped).
 
@@ -29,6 +28,9 @@ def preset_goes_past(problem, load_factor: float) -> float | None:
         A fold (``method = "fold"``) with a material of its own.
     load_factor : float
         Where its path stopped (stages count 1 each).
+    simulate : callable
+        The run (:func:`kresling.simulate.simulate`; passed in by the run that asks, which
+        this module does not import).
 
     Returns
     -------
@@ -36,11 +38,9 @@ def preset_goes_past(problem, load_factor: float) -> float | None:
         The load factor the preset's fold reached, if past ``load_factor``; None if it
         stopped at or before it too.
     """
-    from kresling.simulate.run import simulate
-
     beyond = load_factor + 1.0 / problem.analysis.steps
-    trial = dataclasses.replace(problem, material=preset_material(PRESET, problem.pattern.vertices),
-                                preset=PRESET, merlin2_compat=False)
+    trial = problem.replace(material=preset_material(PRESET, problem.pattern.vertices),
+                            preset=PRESET, merlin2_compat=False)
     quiet = logging.getLogger("kresling.simulate.run")
     level = quiet.level
     quiet.setLevel(logging.ERROR)  # the trial's own lines would read as the run's

@@ -1,14 +1,15 @@
-"""The problem file's crease actuation (``[[actuation]]``) and elastic supports
-(``[[spring]]``), read as :mod:`kresling.simulate.problem` reads every table: a ValueError
-naming the file, the line, the table and the key for anything wrong."""
+"""``[[actuation]]``: creases driven to fold angles, by edge or by family, in stages one
+after another (``method = "fold"``)."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
 from kresling.model.crease_kinds import FOLD_FAMILIES
+from kresling.simulate.problem_keys import ProblemKey
+from kresling.simulate.problem_table import integer, number, raw, string
 
-__all__ = ["Actuation", "Spring", "ACTUATION_FAMILIES", "read_actuations", "read_springs"]
+__all__ = ["KEY", "Actuation", "ACTUATION_FAMILIES"]
 
 #: The families an actuation may name: a fold family, or "fold" for every fold hinge.
 ACTUATION_FAMILIES = FOLD_FAMILIES + ("join", "fold")
@@ -37,28 +38,17 @@ class Actuation:
     stage: int = 1
 
 
-@dataclass(frozen=True)
-class Spring:
-    """A zero-length spring tying ``node`` to ``anchor`` [mm] with ``stiffness`` [N/mm] per
-    axis (x, y, z)."""
-
-    node: int
-    stiffness: tuple
-    anchor: tuple
-
-
-def read_actuations(entries, table, number, integer, string, num_vertices):
-    """The ``[[actuation]]`` entries; ``table(entry, i)`` makes the reader of entry i and
-    ``number``, ``integer``, ``string`` read values as the problem reader does."""
+def read_actuations(entries, context) -> dict:
+    """The ``[[actuation]]`` entries."""
+    num_vertices = context.pattern.num_vertices
     out = []
-    for i, entry in enumerate(entries):
-        t = table(entry, i)
+    for i, t in enumerate(entries):
         if t.has("edges") == t.has("family"):
             t.fail(None, f"(entry {i}) needs exactly one of 'edges' (creases by their end "
                          "vertices) or 'family' (one of " + ", ".join(ACTUATION_FAMILIES) + ")")
         edges = family = None
         if t.has("edges"):
-            value = t.get("edges", lambda t_, k, v, a: v)
+            value = t.get("edges", raw)
             if not isinstance(value, list) or not value:
                 t.fail("edges", f"= {value!r} is invalid: must be a non-empty list of [u, v] "
                                 "vertex pairs")
@@ -80,14 +70,14 @@ def read_actuations(entries, table, number, integer, string, num_vertices):
         if not t.has("fold_angle_deg"):
             t.fail("fold_angle_deg", "is missing: must be a target fold angle in [-180, 180] "
                                      "deg, or \"file\" for the pattern's edges_foldAngle")
-        raw = t.get("fold_angle_deg", lambda t_, k, v, a: v)
-        if raw == "file":
+        given = t.get("fold_angle_deg", raw)
+        if given == "file":
             angle = None
         else:
-            if isinstance(raw, str):
-                t.fail("fold_angle_deg", f"= {raw!r} is invalid: must be a number of degrees "
+            if isinstance(given, str):
+                t.fail("fold_angle_deg", f"= {given!r} is invalid: must be a number of degrees "
                                          "or \"file\"")
-            angle = number(t, "fold_angle_deg", raw)
+            angle = number(t, "fold_angle_deg", given)
             if not -180.0 <= angle <= 180.0:
                 t.fail("fold_angle_deg", f"= {angle!r} is invalid: must be in [-180, 180] deg "
                                          "(+ valley, - mountain)")
@@ -96,24 +86,15 @@ def read_actuations(entries, table, number, integer, string, num_vertices):
             t.fail("stage", f"= {stage!r} is invalid: must be an integer in [1, 1000]")
         t.finish()
         out.append(Actuation(edges, family, angle, stage))
-    return tuple(out)
+    return {"actuations": tuple(out)}
 
 
-def read_springs(entries, table, number, node_list, vector3):
-    """The ``[[spring]]`` entries (each ``node`` or ``nodes``, ``stiffness`` [kx, ky, kz]
-    N/mm >= 0 or one number for all three, ``anchor`` [x, y, z] mm, default: the node's own
-    position, given as None here)."""
-    out = []
-    for i, entry in enumerate(entries):
-        t = table(entry, i)
-        nodes = node_list(t)
-        value = t.get("stiffness", lambda t_, k, v, a: v, required=True,
-                      allowed="[kx, ky, kz] N/mm, or one number for every axis")
-        k = vector3(t, "stiffness", value) if isinstance(value, list) else \
-            (number(t, "stiffness", value),) * 3
-        if min(k) < 0:
-            t.fail("stiffness", f"= {value!r} is invalid: must be >= 0 [N/mm]")
-        anchor = t.get("anchor", vector3)
-        t.finish()
-        out.extend(Spring(node, tuple(k), anchor) for node in nodes)
-    return tuple(out)
+def check_actuations(problem):
+    """Creases are driven by a method that drives them."""
+    if problem.actuations and not problem.method.drives_creases:
+        raise ValueError(f"{problem.source}: [[actuation]] drives creases only with "
+                         f"[analysis] method = 'fold' (given: {problem.analysis.method!r})")
+
+
+KEY = ProblemKey("actuation", rank=80, read=read_actuations, array=True,
+                 check=check_actuations)

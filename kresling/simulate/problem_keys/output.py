@@ -12,7 +12,10 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-__all__ = ["Output", "read_output", "FORMATS"]
+from kresling.simulate.problem_keys import ProblemKey
+from kresling.simulate.problem_table import raw
+
+__all__ = ["KEY", "Output", "FORMATS"]
 
 #: The formats the end state may be written in: ``folded.stl``, ``folded.obj``.
 FORMATS = ("stl", "obj")
@@ -36,21 +39,16 @@ class Output:
     formats: tuple = ()
 
 
-def read_output(table, num_nodes, method, driven) -> Output:
-    """The ``[output]`` table (a problem reader's table, see kresling.simulate.problem).
-
-    Parameters
-    ----------
-    table : the problem reader's table of ``[output]``
-    num_nodes : int
-    method : str
-        The analysis method (reaction columns exist under displacement control only).
-    driven : set of (int, str)
-        The driven (node, axis) pairs.
-    """
+def read_output(table, context) -> dict:
+    """The ``[output]`` table: a curve's quantities are checked against the model's node
+    count, the method (a reaction is a column of a driven DOF under displacement control, a
+    time and the kinetic energy belong to a motion in time) and the driven DOFs."""
+    num_nodes, method = context.num_nodes, context.method  # read and checked (rank 60)
+    driven = {(node, axis) for load in context.loads if load.kind == "displacement"
+              for node in load.nodes for axis, value in zip("xyz", load.vector) if value}
     every = table.get("every", _every, 1)
     formats = table.get("formats", _formats, ())
-    curve = table.get("curve", lambda t, k, v, a: v)
+    curve = table.get("curve", raw)
     if curve is not None:
         if not isinstance(curve, dict) or set(curve) != {"x", "y"}:
             table.fail("curve", f"= {curve!r} is invalid: must be a table with exactly the "
@@ -59,7 +57,7 @@ def read_output(table, num_nodes, method, driven) -> Output:
             _check_quantity(table, axis, curve[axis], num_nodes, method, driven)
         curve = (curve["x"], curve["y"])
     table.finish()
-    return Output(every=every, curve=curve, formats=formats)
+    return {"output": Output(every=every, curve=curve, formats=formats)}
 
 
 def _check_quantity(table, axis, name, num_nodes, method, driven):
@@ -71,7 +69,7 @@ def _check_quantity(table, axis, name, num_nodes, method, driven):
     if match is None:
         table.fail("curve", f"{axis} = {name!r} is invalid: {allowed}")
     if match.group(1) is None:
-        if method != "dynamic" and name in _IN_TIME:
+        if not method.in_time and name in _IN_TIME:
             table.fail("curve", f"{axis} = {name!r} is a quantity of a motion in time: "
                                 "[analysis] method = 'dynamic' only")
         return
@@ -79,7 +77,7 @@ def _check_quantity(table, axis, name, num_nodes, method, driven):
     if node >= num_nodes:
         table.fail("curve", f"{axis} = {name!r} names node {node}, out of range: nodes are "
                             f"numbered 0 to {num_nodes - 1}")
-    if match.group(1) == "reaction" and (method != "displacement_control" or
+    if match.group(1) == "reaction" and (not method.drives_displacements or
                                          where not in driven):
         table.fail("curve", f"{axis} = {name!r} is invalid: a reaction is a column of a "
                             "driven DOF under displacement control (driven: "
@@ -99,3 +97,6 @@ def _every(table, key, value, allowed=None):
         table.fail(key, f"= {value!r} is invalid: must be an integer >= 1 (keep every k-th "
                         "increment, the last always)")
     return value
+
+
+KEY = ProblemKey("output", rank=70, read=read_output, default={})

@@ -8,12 +8,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling.model.fold_angles import hinge_fold_signs, rest_angles_for
-from kresling.simulate.problem_actuation import ACTUATION_FAMILIES
+from kresling.model.crease_kinds import FOLD_FAMILIES
 
 __all__ = ["FoldPlan", "fold_plan"]
 
-#: What family = "fold" drives: every family an actuation may name.
-_FOLD_FAMILIES = tuple(f for f in ACTUATION_FAMILIES if f != "fold")
+#: What family = "fold" drives: every fold family and the joins.
+_FOLD_FAMILIES = FOLD_FAMILIES + ("join",)
 
 
 @dataclass(frozen=True)

@@ -1,4 +1,4 @@
-"""The problem file's masses: ``[material] density`` (with the sheet's thickness) and the
+"""``[[mass]]`` and the sheet's mass: the problem file's masses: ``[material] density`` (with the sheet's thickness) and the
 ``[[mass]]`` entries, and the node masses they give (see docs/dynamics.md).
 
 ``density`` [t/mm^3] spreads each triangle's mass ``density * thickness * area`` equally over
@@ -14,8 +14,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling.model.masses import lumped_masses
+from kresling.simulate.problem_keys import ProblemKey
+from kresling.simulate.problem_table import node_list, number, quantity
 
-__all__ = ["NodeMass", "SheetMass", "read_sheet_mass", "read_masses", "problem_masses"]
+__all__ = ["KEY", "NodeMass", "SheetMass", "read_sheet_mass", "problem_masses"]
 
 
 @dataclass(frozen=True)
@@ -34,7 +36,7 @@ class SheetMass:
     thickness: float | None = None
 
 
-def read_sheet_mass(t, material, quantity) -> SheetMass:
+def read_sheet_mass(t, material) -> SheetMass:
     """``density`` (and, beside a manual calibration, ``thickness``) of ``[material]``."""
     density = t.get("density", quantity, None)
     thickness = getattr(material, "thickness", None)
@@ -48,18 +50,17 @@ def read_sheet_mass(t, material, quantity) -> SheetMass:
     return SheetMass(density, thickness)
 
 
-def read_masses(entries, table, number, node_list) -> tuple:
+def read_masses(entries, context) -> dict:
     """The ``[[mass]]`` entries (``node`` or ``nodes``, ``mass`` [t] >= 0 per node)."""
     out = []
-    for i, entry in enumerate(entries):
-        t = table(entry, i)
-        nodes = node_list(t)
+    for t in entries:
+        nodes = node_list(t, context.num_nodes)
         mass = t.get("mass", number, required=True, allowed="a mass per node [t] (>= 0)")
         if mass < 0:
             t.fail("mass", f"= {mass!r} is invalid: must be >= 0 [t]")
         t.finish()
         out.extend(NodeMass(node, mass) for node in nodes)
-    return tuple(out)
+    return {"masses": tuple(out)}
 
 
 def problem_masses(problem, pattern_model) -> np.ndarray:
@@ -72,3 +73,6 @@ def problem_masses(problem, pattern_model) -> np.ndarray:
     if sheet.density is None:
         return extra
     return lumped_masses(pattern_model, sheet.thickness, sheet.density, extra=extra)
+
+
+KEY = ProblemKey("mass", rank=90, read=read_masses, array=True)

@@ -15,7 +15,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["Dynamics", "LoadTime", "read_dynamics", "read_load_time", "SCHEMES", "TIME_KINDS"]
+from kresling.simulate.problem_keys import ProblemKey
+from kresling.simulate.problem_table import number, positive, raw, vector3
+
+__all__ = ["KEY", "Dynamics", "LoadTime", "read_load_time", "SCHEMES", "TIME_KINDS"]
 
 #: The schemes of ``[dynamics] scheme``.
 SCHEMES = ("newmark", "hht", "explicit")
@@ -64,19 +67,19 @@ class LoadTime:
         return {"harmonic": (self.amplitude, self.frequency_hz)}
 
 
-def read_dynamics(t, number, positive, vector3) -> Dynamics:
+def read_dynamics(t, context) -> dict:
     """The ``[dynamics]`` table ``t`` (a reader of the problem's tables)."""
     scheme = t.get("scheme", _choice, "newmark", choices=SCHEMES)
     time_step = t.get("time_step", positive, required=True, allowed="the time step [s] (> 0)")
     duration = t.get("duration", positive, required=True, allowed="the time to integrate [s]")
     alpha = beta = 0.0
     if t.has("damping"):
-        damping = t.get("damping", lambda t_, k, v, a: v)
+        damping = t.get("damping", raw)
         if not isinstance(damping, dict) or not damping or set(damping) - {"alpha", "beta"}:
             t.fail("damping", f"= {damping!r} is invalid: must be {{ alpha = ..., beta = ... }} "
                               "(Rayleigh: C = alpha M + beta K, alpha [1/s], beta [s])")
-        alpha = _non_negative(t, "damping", "alpha", damping.get("alpha", 0.0), number)
-        beta = _non_negative(t, "damping", "beta", damping.get("beta", 0.0), number)
+        alpha = _non_negative(t, "damping", "alpha", damping.get("alpha", 0.0))
+        beta = _non_negative(t, "damping", "beta", damping.get("beta", 0.0))
     gravity = t.get("gravity", vector3, None)
     if scheme != "hht" and t.has("hht_alpha"):
         t.fail("hht_alpha", f"applies only with scheme = 'hht' (given: {scheme!r})")
@@ -87,12 +90,13 @@ def read_dynamics(t, number, positive, vector3) -> Dynamics:
         t.fail("record_every", f"applies only with scheme = 'explicit' (given: {scheme!r})")
     record_every = t.get("record_every", _whole, 1)
     t.finish()
-    return Dynamics(scheme, time_step, duration, alpha, beta, gravity, hht_alpha, record_every)
+    return {"dynamics": Dynamics(scheme, time_step, duration, alpha, beta, gravity, hht_alpha,
+                                 record_every)}
 
 
-def read_load_time(t, number, positive) -> LoadTime | None:
+def read_load_time(t) -> LoadTime | None:
     """A ``[[load]]`` entry's ``time`` and ``ramp_time`` (None when it names neither)."""
-    value = t.get("time", lambda t_, k, v, a: v, None)
+    value = t.get("time", raw, None)
     ramp_time = t.get("ramp_time", positive, None)
     if (value == "ramp") != (ramp_time is not None):
         if value == "ramp":
@@ -105,14 +109,14 @@ def read_load_time(t, number, positive) -> LoadTime | None:
     if value == "step":
         return LoadTime("step")
     if isinstance(value, dict):
-        return _harmonic(t, value, number)
+        return _harmonic(t, value)
     if isinstance(value, list):
-        return LoadTime("table", table=_table(t, value, number))
+        return LoadTime("table", table=_table(t, value))
     t.fail("time", f"= {value!r} is invalid: must be \"step\", \"ramp\" (with ramp_time), "
                    "[[t, factor], ...] or { harmonic = [amplitude, frequency_hz] }")
 
 
-def _harmonic(t, value, number):
+def _harmonic(t, value):
     pair = value.get("harmonic") if set(value) == {"harmonic"} else None
     if not isinstance(pair, list) or len(pair) != 2:
         t.fail("time", f"= {value!r} is invalid: must be {{ harmonic = [amplitude, "
@@ -123,7 +127,7 @@ def _harmonic(t, value, number):
     return LoadTime("harmonic", amplitude=amplitude, frequency_hz=frequency)
 
 
-def _table(t, rows, number):
+def _table(t, rows):
     if not rows:
         t.fail("time", "= [] is invalid: a table needs at least one row [t, factor]")
     table = []
@@ -137,7 +141,7 @@ def _table(t, rows, number):
     return tuple(table)
 
 
-def _non_negative(t, key, name, value, number):
+def _non_negative(t, key, name, value):
     value = number(t, key, value)
     if value < 0:
         t.fail(key, f"{name} = {value!r} is invalid: must be >= 0")
@@ -154,3 +158,20 @@ def _whole(t, key, value, allowed=None):
     if isinstance(value, bool) or not isinstance(value, int) or value < 1:
         t.fail(key, f"= {value!r} is invalid: must be an integer >= 1")
     return value
+
+
+def check_dynamics(problem):
+    """``[dynamics]`` and the loads' ``time`` belong to a motion in time."""
+    if problem.method.in_time:
+        return
+    if problem.dynamics is not None:
+        raise ValueError(f"{problem.source}: [dynamics] applies only with [analysis] method = "
+                         f"'dynamic' (given: {problem.analysis.method!r})")
+    timed = [i for i, load in enumerate(problem.loads) if load.time is not None]
+    if timed:
+        raise ValueError(f"{problem.source}: load[{timed[0]}] key 'time' applies only with "
+                         f"[analysis] method = 'dynamic' (given: {problem.analysis.method!r})")
+
+
+KEY = ProblemKey("dynamics", rank=100, read=read_dynamics, absent={"dynamics": None},
+                 check=check_dynamics)
