@@ -97,7 +97,9 @@ def _model_core(model):
     return core
 
 
-def _displacement(model, u):
+def displacement_vector(model, u):
+    """``u`` as the model's flat vector of 3N displacements [mm] (zeros for None); a
+    ValueError for another size."""
     if u is None:
         return np.zeros(model.num_dofs)
     u = as_float_array("u", u).ravel()
@@ -133,7 +135,7 @@ def assemble(model, u=None, *, stiffness=True, shift=0.0, workspace=None) -> Ass
         for a ``workspace`` that is not a :class:`Workspace` or was built for a model of
         another connectivity.
     """
-    u = _displacement(model, u)
+    u = displacement_vector(model, u)
     if workspace is not None and not isinstance(workspace, Workspace):
         raise ValueError(f"workspace = {workspace!r} is invalid: must be a "
                          "kresling.assembly.Workspace or None")

@@ -377,10 +377,10 @@ def test_io_imports_nothing_from_the_package_but_validation():
                         (module.name, name)
 
 
-def test_fabrication_fold_keeps_its_names():
-    from kresling.fabrication import fold
+def test_fabrication_takes_the_fold_format_s_own_functions():
+    from kresling import fabrication
     from kresling.io import fold_format
 
-    assert fold.fold_document is fold_format.fold_document
-    assert fold.fold_angles is fold_format.fold_angles
-    assert fold.ASSIGNMENTS == ASSIGNMENTS
+    assert fabrication.fold_document is fold_format.fold_document
+    assert fabrication.fold_angles is fold_format.fold_angles
+    assert fabrication.write_fold_document is fold_format.write_fold_document

@@ -91,7 +91,7 @@ def test_the_fold_assignment_tables_derive_from_one():
     from kresling.simulate.fold_plan import _FOLD_FAMILIES
     from kresling.simulate.outputs import _ASSIGNMENT
     from kresling.simulate.problem_keys.actuation import ACTUATION_FAMILIES
-    from kresling.view.fold import ASSIGNMENT_FAMILIES
+    from kresling.view.pattern_file import ASSIGNMENT_FAMILIES
     assert FOLD_FAMILIES == tuple(FAMILY_OF_FOLD.values()) == pattern_fold_families
     assert FAMILY_OF_ASSIGNMENT is FAMILY_OF_FOLD
     assert ASSIGNMENT_FAMILIES is FAMILY_OF_LETTER

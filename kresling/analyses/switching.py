@@ -152,7 +152,7 @@ class SwitchingResult:
         return min(switches, key=lambda s: abs(getattr(s, by))).group if switches else ""
 
 
-def _degrees(name, value, low, high) -> float:
+def angle_in_radians(name, value, low, high) -> float:
     """``value`` [deg] in (low, high], in radians; else a ValueError naming ``name``."""
     value = as_finite_real(name, value)
     if not low < value <= high:
@@ -197,10 +197,10 @@ def switching(design: Design, *, parameters=None, snap_through_steps=DEFAULT_STE
     design = as_design(design)
     parameters = parameters or SpecimenParameters()
     steps = as_integer("snap_through_steps", snap_through_steps, minimum=1)
-    max_change = _degrees("max_change_deg", max_change_deg, 0.0, 171.0)
-    scan_step = _degrees("scan_step_deg", scan_step_deg, 0.0, max_change_deg)
-    resolution = _degrees("resolution_deg", resolution_deg, 0.0, scan_step_deg)
-    overshoot = _degrees("overshoot_deg", overshoot_deg, 0.0, scan_step_deg)
+    max_change = angle_in_radians("max_change_deg", max_change_deg, 0.0, 171.0)
+    scan_step = angle_in_radians("scan_step_deg", scan_step_deg, 0.0, max_change_deg)
+    resolution = angle_in_radians("resolution_deg", resolution_deg, 0.0, scan_step_deg)
+    overshoot = angle_in_radians("overshoot_deg", overshoot_deg, 0.0, scan_step_deg)
     core = _core.analyses.switching(
         design._core, parameters.to_core(), steps, scan_step, max_change, resolution, overshoot,
         as_finite_real("tolerance", tolerance),

@@ -29,7 +29,7 @@ import numpy as np
 
 from kresling import _core
 from kresling._validation import as_finite_real, as_integer, show
-from kresling.analyses.switching import GROUPS, _degrees
+from kresling.analyses.switching import GROUPS, angle_in_radians
 from kresling.arm.analyses import ArmSolver, ArmState, SnapResult, pull_until_snap
 from kresling.arm.structure import Arm
 
@@ -234,10 +234,10 @@ def crease_switch(arm: Arm, module: int, *, group: str = "fold", start: ArmState
                                   and start.displacement.shape == (arm.model.num_dofs,)):
         raise ValueError(f"start = {show(start)} is invalid: must be an ArmState of the arm "
                          f"({arm.model.num_dofs} displacements)")
-    max_change = _degrees("max_change_deg", max_change_deg, 0.0, 171.0)
-    scan = (_degrees("scan_step_deg", scan_step_deg, 0.0, max_change_deg), max_change,
-            _degrees("resolution_deg", resolution_deg, 0.0, scan_step_deg),
-            _degrees("overshoot_deg", overshoot_deg, 0.0, scan_step_deg),
+    max_change = angle_in_radians("max_change_deg", max_change_deg, 0.0, 171.0)
+    scan = (angle_in_radians("scan_step_deg", scan_step_deg, 0.0, max_change_deg), max_change,
+            angle_in_radians("resolution_deg", resolution_deg, 0.0, scan_step_deg),
+            angle_in_radians("overshoot_deg", overshoot_deg, 0.0, scan_step_deg),
             as_finite_real("tolerance", tolerance),
             as_integer("max_iterations", max_iterations, minimum=1))
     solver = ArmSolver(arm)

@@ -11,7 +11,7 @@ from __future__ import annotations
 import sys
 
 from kresling.arm.structure import THESIS_DESIGN
-from kresling.cli import _arm_creases
+from kresling.cli import arm_creases
 from kresling.cli import arm_dynamics
 from kresling.cli._output import check_output_file, print_json, print_table
 from kresling.cli.design import add_design_arguments
@@ -76,7 +76,7 @@ def register(subparsers) -> None:
     analysis.add_argument("--switching", action="store_true",
                           help="pull all tendons, or one, from every configuration until a "
                                "module snaps: which configurations the pulls reach")
-    _arm_creases.add_arguments(parser, analysis)
+    arm_creases.add_arguments(parser, analysis)
     arm_dynamics.add_arguments(analysis, parser)
     parser.add_argument("--plot", metavar="FILE.png",
                         help="with --table: write the load-capacity figure; with --protocol: "
@@ -179,7 +179,7 @@ def run(args) -> int:
     arm = build_arm(configuration, n=args.n, lam=args.lam, Lc=args.Lc, R=args.R,
                     parameters=parameters)
     if args.crease_switch is not None:
-        return _arm_creases.run(args, arm)
+        return arm_creases.run(args, arm)
     solver = ArmSolver(arm)
     out = {"design": {"n": args.n, "lam": args.lam, "Lc": args.Lc, "R": args.R},
            "modules": arm.modules}

@@ -8,7 +8,7 @@ Thesis section 2.2 (paper cells), section 4.1 and Appendix C (PET laminate cells
   stable state;
 - :class:`Paper` and :class:`Laminate` turn it into cut passes (:class:`CutSheet`);
   :func:`cut_sheet` and :func:`module_sheet` do both steps for one cell or a two-cell module;
-- :func:`write_svg`, :func:`write_dxf`, :func:`write_fold` (with
+- :func:`write_svg`, :func:`write_dxf`, :func:`write_fold_document` (with
   :func:`pattern_fold_document`) and :func:`render_png` write files; :func:`write_pattern`
   picks the format from the file's extension.
 
@@ -25,7 +25,7 @@ Examples
 
 from kresling.fabrication.dxf import dxf_document, write_dxf
 from kresling.fabrication.export import FORMATS, pattern_fold_document, write_pattern
-from kresling.fabrication.fold import fold_angles, fold_document, write_fold
+from kresling.io.fold_format import fold_angles, fold_document, write_fold_document
 from kresling.fabrication.layers import CutLayer, CutPath, CutSheet
 from kresling.fabrication.pattern import CREASE_KINDS, CreasePattern, crease_pattern
 from kresling.fabrication.processes import PROCESSES, Laminate, Paper, make_process
@@ -37,6 +37,6 @@ __all__ = [
     "PROCESSES", "Paper", "Laminate", "make_process",
     "CutPath", "CutLayer", "CutSheet", "cut_sheet", "module_sheet",
     "svg_document", "write_svg", "render_png", "dxf_document", "write_dxf",
-    "fold_angles", "fold_document", "write_fold", "pattern_fold_document",
+    "fold_angles", "fold_document", "write_fold_document", "pattern_fold_document",
     "FORMATS", "write_pattern",
 ]

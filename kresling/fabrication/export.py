@@ -10,7 +10,7 @@ import numpy as np
 from kresling.fabrication._checks import png_pixels
 from kresling.fabrication.dxf import write_dxf
 from kresling.fabrication.layers import CutSheet
-from kresling.fabrication.fold import fold_angles, fold_document, write_fold
+from kresling.io.fold_format import fold_angles, fold_document, write_fold_document
 from kresling.fabrication.pattern import CreasePattern, crease_pattern
 from kresling.fabrication.processes import make_process
 from kresling.fabrication.sheet import cut_sheet, module_sheet, split_parameters
@@ -146,4 +146,4 @@ def write_pattern(path, design: Design, process="laminate", *, module: bool = Fa
     pattern_parameters, process_parameters = split_parameters(parameters)
     process = make_process(process, **process_parameters)
     pattern = crease_pattern(design, **pattern_parameters)
-    return write_fold(path, pattern_fold_document(pattern, process))
+    return write_fold_document(path, pattern_fold_document(pattern, process))

@@ -6,7 +6,7 @@ import numpy as np
 
 from kresling import _core
 from kresling._validation import as_integer, show
-from kresling.assembly import _displacement
+from kresling.assembly import displacement_vector
 
 
 def condensed_stiffness(model, dofs, u=None) -> np.ndarray:
@@ -37,7 +37,7 @@ def condensed_stiffness(model, dofs, u=None) -> np.ndarray:
         raise ValueError(f"dofs = {show(dofs)} is invalid: must be a sequence of DOF indices")
     dofs = [as_integer(f"dofs[{k}]", d, minimum=0, maximum=model.num_dofs - 1)
             for k, d in enumerate(dofs)]
-    S, singular = _core.solvers.condensed_stiffness(model._core, _displacement(model, u), dofs)
+    S, singular = _core.solvers.condensed_stiffness(model._core, displacement_vector(model, u), dofs)
     if singular:
         raise ValueError("condensed_stiffness: the free DOFs form a mechanism (K_ff is "
                          "singular); add supports")

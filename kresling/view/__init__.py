@@ -43,7 +43,7 @@ __all__ = ["view_model", "view_path", "view_bending", "view_snap_through", "view
 #: Where each name lives. The modules are imported when a name is first used, so that a
 #: writer that needs no plotly objects (write_path_page) does not import plotly's.
 _HOME = {"ExplorerWidget": "explorer_widget", "FIELDS": "fields", "element_energy": "fields",
-         "view_model": "figure", "view_path": "figure", "view_fold": "fold",
+         "view_model": "figure", "view_path": "figure", "view_fold": "pattern_file",
          "check_writable": "html", "write_html": "html", "write_path_page": "path_page",
          "view_bending": "specimens", "view_snap_through": "specimens",
          "FAMILY_STYLES": "surface"}

@@ -53,13 +53,13 @@ DIV_ID = "kresling-explorer"
 _DECIMALS = 3
 
 #: Line style of the cells' edges and the pattern's lines: (colour, width, dash).
-_STYLES = {"mountain": ("#d62728", 4, "solid"), "valley": ("#1f77b4", 4, "solid"),
+LINE_STYLES = {"mountain": ("#d62728", 4, "solid"), "valley": ("#1f77b4", 4, "solid"),
            "polygon_edge": ("#6a3d9a", 4, "solid"), "tab": ("#6a3d9a", 2, "solid"),
            "seam": ("#8c8c8c", 2, "dash"), "boundary": ("#3b3b3b", 2, "solid")}
-_STATES = ((1, "extended"), (0, "contracted"))
+CELL_STATES = ((1, "extended"), (0, "contracted"))
 
 
-def _cell_topology(n: int) -> dict:
+def cell_topology(n: int) -> dict:
     """Triangles and edge families of a cell whose points are ``B_0..B_(n-1), T_0..T_(n-1)``
     (:meth:`Design.vertices` flattened): facets ``(B_i, B_(i+1), T_(i+1))`` and
     ``(B_i, T_(i+1), T_i)``, valley ``B_i T_(i+1)``, mountain ``B_i T_i`` (as the flat
@@ -159,9 +159,9 @@ def explorer_data(n=THESIS_N, size=DEFAULT_SIZE, *, Lc=None, lam=THESIS_LAM, R=3
             _, _, values = table.grid(metric, k)
             data["maps"][metric][str(k)] = _grid_values(values)
         designs = [Design(k, a, c, data["R"]) for c in Lc_values for a in lam_values]
-        cell = _cell_topology(k)
+        cell = cell_topology(k)
         cell["states"] = {}
-        for state, _ in _STATES:
+        for state, _ in CELL_STATES:
             vertices = [d.vertices(state).reshape(-1, 3) for d in designs]
             tallest = max(tallest, max(float(v[:, 2].max()) for v in vertices))
             cell["states"][str(state)] = [_rounded(v) for v in vertices]
@@ -230,7 +230,7 @@ def explorer_figure(data, n=None, lam=None, Lc=None) -> go.Figure:
     index = c * len(data["lam"]) + a
     cell = data["cells"][str(n)]
     fig = go.Figure()
-    for scene, (state, name) in zip(("scene", "scene2"), _STATES):
+    for scene, (state, name) in zip(("scene", "scene2"), CELL_STATES):
         flat = cell["states"][str(state)][index]
         x, y, z = _xyz(flat, range(len(flat) // 3))
         fig.add_trace(go.Mesh3d(x=x, y=y, z=z, i=cell["i"], j=cell["j"], k=cell["k"],
@@ -240,14 +240,14 @@ def explorer_figure(data, n=None, lam=None, Lc=None) -> go.Figure:
                                               roughness=0.9, fresnel=0.05),
                                 lightposition=dict(x=25000, y=50000, z=100000)))
         for family, order in cell["lines"].items():
-            colour, width, dash = _STYLES[family]
+            colour, width, dash = LINE_STYLES[family]
             x, y, z = _xyz(flat, order)
             fig.add_trace(go.Scatter3d(x=x, y=y, z=z, mode="lines", name=family, scene=scene,
                                        line=dict(color=colour, width=width, dash=dash),
                                        hoverinfo="name", showlegend=False))
     pattern = data["patterns"].get(str(n))
     for kind in (pattern or {"lines": {}})["lines"]:
-        colour, width, dash = _STYLES.get(kind, ("#8c8c8c", 2, "solid"))
+        colour, width, dash = LINE_STYLES.get(kind, ("#8c8c8c", 2, "solid"))
         x, y = _xyz(pattern["points"][index], pattern["lines"][kind], dims=2)
         fig.add_trace(go.Scatter(x=x, y=y, mode="lines", name=kind, xaxis="x", yaxis="y",
                                  line=dict(color=colour, width=width / 2 + 0.5, dash=dash),
@@ -432,7 +432,7 @@ def _trace_map(fig) -> dict:
     """Which trace of :func:`explorer_figure` is which, for the page's script."""
     names = [trace.name for trace in fig.data]
     cells = []
-    for state, name in _STATES:
+    for state, name in CELL_STATES:
         mesh = names.index(f"{name} cell")
         scene = fig.data[mesh].scene
         lines = [{"family": t.name, "trace": i} for i, t in enumerate(fig.data)

@@ -18,7 +18,7 @@ import plotly.graph_objects as go
 
 from kresling.analyses import BendingTester, SnapThroughTester
 from kresling.geometry import Design
-from kresling.view.explorer import _STATES, _STYLES, _cell_topology
+from kresling.view.explorer import CELL_STATES, LINE_STYLES, cell_topology
 
 __all__ = ["ExplorerWidget"]
 
@@ -73,17 +73,17 @@ class ExplorerWidget:
     # -- the figure ------------------------------------------------------------------------
     def _build_traces(self, n):
         """One mesh and one line trace per edge family in each scene, for an n-gon cell."""
-        topology = _cell_topology(n)
+        topology = cell_topology(n)
         self._topology = topology
         with self.figure.batch_update():
             self.figure.data = []
-            for scene, (_, name) in zip(("scene", "scene2"), _STATES):
+            for scene, (_, name) in zip(("scene", "scene2"), CELL_STATES):
                 self.figure.add_trace(go.Mesh3d(
                     x=[], y=[], z=[], i=topology["i"], j=topology["j"], k=topology["k"],
                     color="#e9dcc0", flatshading=True, name=f"{name} cell", scene=scene,
                     hoverinfo="skip"))
                 for family in topology["lines"]:
-                    colour, width, dash = _STYLES[family]
+                    colour, width, dash = LINE_STYLES[family]
                     self.figure.add_trace(go.Scatter3d(
                         x=[], y=[], z=[], mode="lines", name=family, scene=scene,
                         line=dict(color=colour, width=width, dash=dash), showlegend=False))
@@ -94,7 +94,7 @@ class ExplorerWidget:
                 scene2=dict(domain=dict(x=[0.5, 1]), aspectmode="data",
                             xaxis_title="x [mm]", yaxis_title="y [mm]", zaxis_title="z [mm]"),
                 annotations=[dict(text=name, x=x, y=1.0, xref="paper", yref="paper",
-                                  showarrow=False) for (_, name), x in zip(_STATES, (0.25, 0.75))])
+                                  showarrow=False) for (_, name), x in zip(CELL_STATES, (0.25, 0.75))])
 
     def design(self) -> Design:
         """The design the sliders show."""
@@ -117,7 +117,7 @@ class ExplorerWidget:
         design = self.design()
         traces = iter(self.figure.data)
         with self.figure.batch_update():
-            for state, _ in _STATES:
+            for state, _ in CELL_STATES:
                 points = self.cell_points(state)
                 mesh = next(traces)
                 mesh.x, mesh.y, mesh.z = points[:, 0], points[:, 1], points[:, 2]

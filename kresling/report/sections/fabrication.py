@@ -16,7 +16,7 @@ import numpy as np
 
 from kresling.fabrication.accuracy import closure_error, edge_length_errors, isometry_error
 from kresling.fabrication.export import pattern_fold_document, write_sheet
-from kresling.fabrication.fold import fold_angles, write_fold
+from kresling.io.fold_format import fold_angles, write_fold_document
 from kresling.fabrication.pattern import CreasePattern, crease_pattern
 from kresling.fabrication.plot import plot_sheet
 from kresling.fabrication.processes import Laminate, Paper
@@ -121,7 +121,8 @@ def reproduce(out_dir, quick: bool = True) -> Section:
     section.checks.append(Check("laminate valley gap width", _gap_width(gap), LAMINATE_GAP,
                                 "thesis 4.1, Appendix C step 2", atol=1e-9, unit="mm"))
     if not quick:
-        write_fold(out_dir / "cell_n10.fold", pattern_fold_document(pattern, "laminate"))
+        write_fold_document(out_dir / "cell_n10.fold",
+                            pattern_fold_document(pattern, "laminate"))
         for name in ("laminate", "paper"):
             sheet = module_sheet(design, name)
             write_sheet(sheet, out_dir / f"module_n10_{name}.svg")
