@@ -62,12 +62,11 @@ def time_case(path: str, repeat: int) -> dict:
 
 
 def timed_elsewhere(python: str, path: Path, repeat: int, timeout: float) -> dict:
-    code = (f"import json, sys; sys.path.insert(0, {str(Path(__file__).parent)!r}); "
-            f"from large_patterns import time_case; "
-            f"print(json.dumps(time_case({str(path)!r}, {repeat})))")
+    # This script under the other interpreter, timing the one case (--case).
+    command = [python, str(Path(__file__).resolve()), "--case", str(path), "--repeat",
+               str(repeat)]
     try:
-        done = subprocess.run([python, "-c", code], capture_output=True, text=True,
-                              timeout=timeout)
+        done = subprocess.run(command, capture_output=True, text=True, timeout=timeout)
     except subprocess.TimeoutExpired:
         return {"read": math.nan, "build": math.nan, "over": timeout}
     if done.returncode:
@@ -89,7 +88,11 @@ def main() -> None:
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--python", help="another checkout's interpreter, timed beside")
     parser.add_argument("--timeout", type=float, default=120.0)
+    parser.add_argument("--case", help="time this one problem file and print its JSON")
     args = parser.parse_args()
+    if args.case:
+        print(json.dumps(time_case(args.case, args.repeat)))
+        return
     cases = [(f"{m}-gon, N5B8", polygon_problem(m)) for m in POLYGONS[:2 if args.quick else 3]]
     cases += [(f"{n} x {n} grid inline", grid_problem(n)) for n in GRIDS[:2 if args.quick else 3]]
     header = f"{'case':<24} {'nodes':>7} {'read [s]':>9} {'build [s]':>10}"

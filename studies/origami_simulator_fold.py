@@ -1,5 +1,5 @@
 """Rabbit Ear's crane and Origami Simulator's flapping bird folded by Origami Simulator's model
-(tests/origami_simulator_model.py: its equations written again), every target applied at
+(kresling/testing/origami_simulator.py: its equations written again), every target applied at
 once from the flat sheet as the simulator does when it opens a pattern, and with its
 ingredients switched one at a time (docs/folding.md, 'Folding from flat').
 
@@ -28,20 +28,17 @@ from __future__ import annotations
 
 import argparse
 import json
-import sys
 import tempfile
 from pathlib import Path
 
 import numpy as np
 
-TESTS = Path(__file__).resolve().parent.parent / "tests"
-sys.path.insert(0, str(TESTS))
-import origami_simulator_model as osm  # noqa: E402
-from origami_simulator_page import simulators_triangles  # noqa: E402
+from kresling.io import fold_angles, read_fold, read_pattern
+from kresling.testing import origami_simulator as osm
+from kresling.testing.origami_simulator_page import simulators_triangles
 
-from kresling.io import fold_angles, read_fold, read_pattern  # noqa: E402
-
-PUBLIC = TESTS / "data" / "public"
+#: The public crease patterns the repository's tests use (and their licences).
+PUBLIC = Path(__file__).resolve().parent.parent / "tests" / "data" / "public"
 
 
 def crane():

@@ -1,5 +1,5 @@
 """Springs on the triangles' interior angles (the ``face_angles`` family): against the
-independent implementation of tests/origami_simulator_model.py, through build_pattern_model
+independent implementation of kresling/testing/origami_simulator.py, through build_pattern_model
 and through problem files ([material] face_stiffness).
 
 Tolerances: the two implementations evaluate the same closed form in different orders
@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-import origami_simulator_model as osm
+from kresling.testing import origami_simulator as osm
 from kresling.assembly import assemble
 from kresling.io import read_pattern
 from kresling.model import ManualProperties, Model, build_pattern_model, family_kinds

@@ -14,7 +14,8 @@ from scipy.spatial import cKDTree
 
 from kresling.io import read_fold, read_svg, separate_cuts, write_fold
 from kresling.simulate import simulate
-from origami_simulator_page import import_svg, needs_browser, open_fold
+from browser import needs_browser
+from kresling.testing.origami_simulator_page import import_svg, open_fold
 
 PUBLIC = Path(__file__).resolve().parent / "data" / "public"
 DRAWINGS = PUBLIC / "origami_simulator"

@@ -14,9 +14,10 @@ import pytest
 from kresling.io import fold_angles, read_fold, read_pattern
 from kresling.model import build_pattern_model
 from kresling.simulate import simulate
-import origami_simulator_model as osm
+from kresling.testing import origami_simulator as osm
 from kresling.io.fold_format import fold_document
-from origami_simulator_page import needs_browser, simulators_triangles
+from browser import needs_browser
+from kresling.testing.origami_simulator_page import simulators_triangles
 from public_files import (MANUAL, ORIGAMI_SIMULATOR, RABBIT_EAR, SHEET, SPEC, STIFF,
                           held_and_far, read)
 
@@ -173,7 +174,7 @@ def _on_simulators_triangles(pattern, triangles, targets, folder):
 def test_the_crane_folds_as_origami_simulators_model_on_its_triangles_with_its_bars(tmp_path):
     """Rabbit Ear's crane at a tenth of its +-180 deg, folded here on the triangles Origami
     Simulator splits it into, with its bars' stiffness against the creases', and by the
-    simulator's own model (tests/origami_simulator_model.py, from Ghassaei, Demaine and
+    simulator's own model (kresling/testing/origami_simulator.py, from Ghassaei, Demaine and
     Gershenfeld 2018: bars of stiffness 20 / L0, hinges 0.7 L0 towards their targets times
     the crease percent, face-angle springs 0.2, damped explicit dynamics from flat with
     every target at once): both take the same creases the other way, and every crease to
@@ -207,7 +208,7 @@ def test_the_crane_folds_as_origami_simulators_model_on_its_triangles_with_its_b
 @needs_browser
 def test_the_flapping_bird_folds_as_origami_simulators_model_on_its_triangles(tmp_path):
     """Origami Simulator's flapping bird at its opening 60 %, by the simulator's own model
-    (tests/origami_simulator_model.py, from Ghassaei, Demaine and Gershenfeld 2018: bars of
+    (kresling/testing/origami_simulator.py, from Ghassaei, Demaine and Gershenfeld 2018: bars of
     stiffness 20 / L0, hinges 0.7 L0 towards their targets times the crease percent,
     face-angle springs 0.2, damped explicit dynamics from flat with every target at once)
     on its own triangles: every crease's hinge in its sense. Folded here on those triangles

@@ -1,4 +1,4 @@
-"""The reference written from Origami Simulator's equations (tests/origami_simulator_model.py):
+"""The reference written from Origami Simulator's equations (kresling/testing/origami_simulator.py):
 its forces are its energy's gradient, its hinge angles are the faces' fold angles, and its
 damped dynamics comes to rest where the forces vanish."""
 
@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-import origami_simulator_model as osm
+from kresling.testing import origami_simulator as osm
 from kresling.io import fold_angles, read_fold, read_pattern
 from public_files import ORIGAMI_SIMULATOR, SHEET, SPEC
 

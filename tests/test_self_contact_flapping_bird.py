@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-import origami_simulator_model as osm
+from kresling.testing import origami_simulator as osm
 from kresling.io import fold_angles, read_pattern
 from kresling.simulate import simulate
 from public_files import ORIGAMI_SIMULATOR, STIFF

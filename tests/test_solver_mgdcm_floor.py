@@ -13,40 +13,8 @@ import numpy as np
 import pytest
 
 from kresling.assembly import assemble
-from kresling.model import Model
 from kresling.solvers import solve_mgdcm
-
-SIDES = 6
-
-
-def one_layer_kresling():
-    """The model and the reference load (-0.4 N down on each top node)."""
-    angles = 2 * np.pi * np.arange(SIDES) / SIDES
-    bottom = np.c_[50 * np.cos(angles), 50 * np.sin(angles), np.zeros(SIDES)]
-    turned = angles + np.radians(30.0)
-    top = np.c_[50 * np.cos(turned), 50 * np.sin(turned), np.full(SIDES, 50.0)]
-    nodes = np.vstack([bottom, top])
-    triangles = []
-    for i in range(SIDES):
-        j = (i + 1) % SIDES
-        triangles += [(i, j, SIDES + j), (i, SIDES + j, SIDES + i)]
-    wings = {}
-    for t in triangles:
-        for k in range(3):
-            edge = tuple(sorted((t[k], t[(k + 1) % 3])))
-            wings.setdefault(edge, []).append(t[(k + 2) % 3])
-    hinges = [(a, b, *w) for (a, b), w in wings.items() if len(w) == 2]
-    length = np.array([np.linalg.norm(nodes[a] - nodes[b]) for a, b, _, _ in hinges])
-    fixed = np.zeros((2 * SIDES, 3), bool)
-    fixed[:SIDES] = True
-    model = Model(nodes, list(wings), hinges, bar_modulus=10.0, bar_area=19.7,
-                  bar_law="linear", hinge_stiffness=1e-3 / length,
-                  hinge_law="enhanced_linear", hinge_limits=np.radians([18.0, 342.0]),
-                  fixed=fixed)
-    forces = np.zeros((2 * SIDES, 3))
-    forces[SIDES:, 2] = -0.4
-    return model, forces
-
+from kresling.testing.one_layer_kresling import SIDES, one_layer_kresling
 
 @pytest.fixture(scope="module")
 def kresling():

@@ -1,4 +1,5 @@
-"""Origami Simulator's own importer, run in headless Chromium: the test helper.
+"""Origami Simulator's own importer, run in headless Chromium: what that simulator reads
+and builds from a file, for tests and studies to compare with.
 
 The page loads the copy of Origami Simulator's pattern and importer code (and the libraries
 they use) in tests/data/public/origami_simulator/js/ (MIT; see tests/data/public/README.md),
@@ -23,17 +24,17 @@ import subprocess
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from kresling.io.fold_format import fold_document
 
-JS = Path(__file__).resolve().parent / "data" / "public" / "origami_simulator" / "js"
+#: Origami Simulator's code (MIT), vendored with the repository's test data: the page runs
+#: from a checkout of the repository.
+JS = (Path(__file__).resolve().parents[2] / "tests" / "data" / "public" / "origami_simulator"
+      / "js")
 SCRIPTS = ("jquery-3.2.1.min.js", "underscore-min.js", "three.min.js", "SVGLoader.js",
            "path-data-polyfill.js", "earcut.js", "fold.js", "pattern.js", "importer.js")
 CHROMIUM = next(filter(None, map(shutil.which, ("chromium", "chromium-browser",
                                                   "google-chrome"))), None)
-needs_browser = pytest.mark.skipif(CHROMIUM is None,
-                                   reason="no chromium (make test installs Debian's package)")
 
 _PAGE = """<!DOCTYPE html>
 <html><head><meta charset="utf-8">
@@ -75,6 +76,9 @@ setTimeout(report, 3000);
 
 def _run(action: str, folder: Path) -> dict:
     """Open the page with ``action`` in Chromium; what the simulator built and said."""
+    if CHROMIUM is None or not JS.is_dir():
+        raise RuntimeError("Origami Simulator's page needs Chromium (Debian's chromium) and "
+                           f"the repository's copy of its code ({JS})")
     scripts = "\n".join(f'<script src="{(JS / name).as_uri()}"></script>' for name in SCRIPTS)
     page = folder / "origami_simulator.html"
     page.write_text(_PAGE.format(scripts=scripts, action=action), encoding="utf-8")
