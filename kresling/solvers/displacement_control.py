@@ -8,13 +8,18 @@ from kresling._validation import as_bool, as_integer, as_positive_real, as_real
 from kresling.solvers.path import PathResult
 
 #: The core's defaults (the options struct declares them once).
+#: The defaults, as the core declares them (not restated here).
 _DEFAULTS = _core.solvers.DisplacementControlOptions()
 
 
-def solve_displacement_control(model, prescribed, steps, *, tolerance=1e-6, max_iterations=50,
-                               reject_iterations=25, max_bisections=10, shift=_DEFAULTS.shift,
-                               extrapolation=0, initial=None, merlin2_steps=False,
-                               adaptive=False, adaptive_tolerance=1e-9,
+def solve_displacement_control(model, prescribed, steps, *, tolerance=_DEFAULTS.tolerance,
+                               max_iterations=_DEFAULTS.max_iterations,
+                               reject_iterations=_DEFAULTS.reject_iterations,
+                               max_bisections=_DEFAULTS.max_bisections, shift=_DEFAULTS.shift,
+                               extrapolation=_DEFAULTS.extrapolation, initial=None,
+                               merlin2_steps=_DEFAULTS.merlin2_steps,
+                               adaptive=_DEFAULTS.adaptive,
+                               adaptive_tolerance=_DEFAULTS.adaptive_tolerance,
                                cholesky="auto", stop=None) -> PathResult:
     """Impose a displacement in equal increments and follow the equilibrium path.
 

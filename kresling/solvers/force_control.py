@@ -2,17 +2,21 @@
 
 from __future__ import annotations
 
-import math
-
 from kresling import _core
 from kresling.solvers._inputs import cholesky_choice, dof_vector
 from kresling._validation import as_integer, as_positive_real, as_real
 from kresling.solvers.path import PathResult
 
 
-def solve_force_control(model, forces, steps, *, tolerance=1e-6, max_iterations=50,
-                        max_bisections=10, shift=1e-8, initial=None, stop=None,
-                        cholesky="auto") -> PathResult:
+#: The defaults, as the core declares them (not restated here).
+_FORCE = _core.solvers.ForceControlOptions()
+_MGDCM = _core.solvers.MgdcmOptions()
+
+
+def solve_force_control(model, forces, steps, *, tolerance=_FORCE.tolerance,
+                        max_iterations=_FORCE.max_iterations,
+                        max_bisections=_FORCE.max_bisections, shift=_FORCE.shift, initial=None,
+                        stop=None, cholesky="auto") -> PathResult:
     """Newton equilibrium under ``lambda * forces`` for lambda = 1/steps, ..., 1.
 
     A failed load step is halved up to ``max_bisections`` times. Past a limit point there is
@@ -48,10 +52,12 @@ def solve_force_control(model, forces, steps, *, tolerance=1e-6, max_iterations=
     return PathResult._from_core(core)
 
 
-def solve_mgdcm(model, forces, *, initial_load_factor=0.01, max_increments=100,
-                max_load_factor=math.inf, monitor_dof=None, max_displacement=math.inf,
-                max_step_factor=math.inf, tolerance=1e-6, max_iterations=50, shift=1e-8,
-                initial=None, stop=None, cholesky="auto") -> PathResult:
+def solve_mgdcm(model, forces, *, initial_load_factor=_MGDCM.initial_load_factor,
+                max_increments=_MGDCM.max_increments, max_load_factor=_MGDCM.max_load_factor,
+                monitor_dof=None, max_displacement=_MGDCM.max_displacement,
+                max_step_factor=_MGDCM.max_step_factor, tolerance=_MGDCM.tolerance,
+                max_iterations=_MGDCM.max_iterations, shift=_MGDCM.shift, initial=None,
+                stop=None, cholesky="auto") -> PathResult:
     """Modified generalized displacement control (Leon, Paulino et al. 2011).
 
     Follows the equilibrium path of ``lambda * forces`` through limit points and

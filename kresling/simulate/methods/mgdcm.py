@@ -3,8 +3,6 @@ control method, past limit points, to a largest load factor or a monitored displ
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from kresling import _core
@@ -29,8 +27,8 @@ class Mgdcm(PathMethod):
             t.fail("initial_load_factor", "= 0 is invalid: must be non-zero (its sign sets "
                                           "the loading direction)")
         return {"initial_load_factor": initial,
-                "max_increments": t.get("max_increments", count, 100),
-                "max_load_factor": t.get("max_load_factor", positive, math.inf)}
+                "max_increments": t.get("max_increments", count, _MGDCM.max_increments),
+                "max_load_factor": t.get("max_load_factor", positive, _MGDCM.max_load_factor)}
 
     def check(self, problem, t):
         check_load_kind(problem, t, "force")

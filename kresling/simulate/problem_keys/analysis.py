@@ -5,7 +5,6 @@ a fold, vibration modes, or a motion in time) and its settings, and an optional 
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -18,7 +17,7 @@ from kresling.simulate.problem_table import AXES, count, node_list, positive, qu
 __all__ = ["KEY", "Analysis", "MonitorStop", "default_tolerance", "RELATIVE_TOLERANCE",
            "MERLIN2_TOLERANCE"]
 
-#: MGDCM's defaults, as the core declares them.
+#: The solvers' defaults, as the core declares them (MGDCM's hold every one of these).
 _MGDCM = _core.solvers.MgdcmOptions()
 #: Newton's default tolerance on the correction's 2-norm, as a fraction of the model's size
 #: (the diagonal of the pattern's bounding box, in mm): 1e-6 mm on a 100 mm pattern, the
@@ -49,11 +48,11 @@ class Analysis:
     method: str
     steps: int | None = None
     initial_load_factor: float = _MGDCM.initial_load_factor
-    max_increments: int = 100
-    max_load_factor: float = math.inf
+    max_increments: int = _MGDCM.max_increments
+    max_load_factor: float = _MGDCM.max_load_factor
     stop: MonitorStop | None = None
-    tolerance: float = 1e-6
-    max_iterations: int = 50
+    tolerance: float = _MGDCM.tolerance
+    max_iterations: int = _MGDCM.max_iterations
     #: Displacement control and fold: "fixed" (equal increments, MERLIN2's step control
     #: under merlin2_compat) or "adaptive" (the same samples, increments by an error
     #: estimate).
@@ -79,7 +78,7 @@ def read_analysis(t, context) -> dict:
     method = method_named(name)
     settings = {"method": name,
                 "tolerance": t.get("tolerance", positive, None),
-                "max_iterations": t.get("max_iterations", count, 50)}
+                "max_iterations": t.get("max_iterations", count, _MGDCM.max_iterations)}
     settings.update(method.read_settings(t))
     if method.monitors and t.has("stop"):
         sub = t.table("stop")
