@@ -108,13 +108,13 @@ $(VENV)/.installed: $(VENV)/.venv-ready $(CORE_SOURCES) | system-deps
 	  -e ".[test,docs]"
 	touch $@
 
-# The fuzz suite (tests/fuzz/, run by tests/test_fuzz.py) runs in `make test` with a few
+# The fuzz suite (tests/fuzz/, run by tests/fuzz/test_fuzz.py) runs in `make test` with a few
 # derandomized examples per target; here with FUZZ_SCALE times as many, from random seeds
 # (a failure prints the failing example and a @reproduce_failure line that replays it).
 FUZZ_SCALE ?= 50
 # (KRESLING_SLOW_LIMIT=0: no check of the tests' time, which is FUZZ_SCALE times the usual.)
 fuzz: install
-	KRESLING_FUZZ_SCALE=$(FUZZ_SCALE) KRESLING_SLOW_LIMIT=0 $(PY) -m pytest -q tests/test_fuzz.py
+	KRESLING_FUZZ_SCALE=$(FUZZ_SCALE) KRESLING_SLOW_LIMIT=0 $(PY) -m pytest -q tests/fuzz/test_fuzz.py
 
 # The core under AddressSanitizer and UndefinedBehaviorSanitizer (build/sanitize): the
 # GoogleTest suite, and a pytest subset through the extension built the same way.

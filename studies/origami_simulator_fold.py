@@ -14,7 +14,7 @@ targets (the simulator's opening crease percent). Columns:
   targets raised linearly over ``--ramp`` steps instead of at once;
 - ``hinges``: driven hinges more than 1 deg the other way from their target, by the
   hinge's two triangles; ``faces``: creases more than 1 deg the other way by the
-  pattern's polygon faces' normals (as tests/test_io_public_folds.py measures a fold);
+  pattern's polygon faces' normals (as tests/io/test_io_public_folds.py measures a fold);
 - ``which``: those creases' pattern edges (by the faces);
 - ``past 180``: hinges whose angle, followed from step to step, turned past +-180 deg
   (faces through each other);

@@ -43,9 +43,9 @@ LD_PRELOAD="$PRELOAD" PYTHONPATH="$SITE:$PACKAGES" \
   "$PY" -S -P -c 'import kresling._core as c, sys; assert c.__file__.startswith(sys.argv[1]), c.__file__' "$SITE"
 LD_PRELOAD="$PRELOAD" PYTHONPATH="$SITE:$PACKAGES" \
   "$PY" -S -P -m pytest -q -p no:cacheprovider \
-  tests/test_hardening.py tests/test_solver_errors.py tests/test_model.py \
-  tests/test_geometry_errors.py tests/test_analyses_snap_through.py tests/test_solver_golden.py \
-  tests/test_solver_factorization.py \
+  tests/*/test_*_bad_input.py tests/solvers/test_solver_errors.py tests/model/test_model.py \
+  tests/geometry/test_geometry_errors.py tests/analyses/test_analyses_snap_through.py tests/solvers/test_solver_golden.py \
+  tests/solvers/test_solver_factorization.py \
   tests/fuzz/fuzz_geometry.py tests/fuzz/fuzz_model.py tests/fuzz/fuzz_solvers.py \
   tests/fuzz/fuzz_analyses.py tests/fuzz/fuzz_manipulator.py
 echo "sanitize: clean"
