@@ -206,3 +206,13 @@ def test_a_cut_separates_its_faces_and_a_slit_keeps_its_ends_joined():
     assert not others & set(cut.faces[1])
     assert cut.edges_assignment.count("C") == 6
     assert separate_cuts(cut) is cut                       # nothing left to separate
+
+
+def test_faces_derived_from_edges_that_touch_themselves_are_refused_naming_the_file(tmp_path):
+    # A triangle hanging inside the square from its corner 0: the region between them has
+    # an outline through vertex 0 twice, which no panel can be.
+    points = SQUARE + [[5.0, 2.0], [2.0, 5.0]]
+    edges = [[0, 1], [1, 2], [2, 3], [3, 0], [0, 4], [4, 5], [5, 0]]
+    with pytest.raises(ValueError, match=r"sheet\.fold: key 'edges_vertices' encloses a region "
+                                         r"whose outline touches itself at vertex 0"):
+        read_fold(_write(tmp_path, {"vertices_coords": points, "edges_vertices": edges}))

@@ -98,8 +98,12 @@ def separate_cuts(pattern):
     vertices = np.vstack([pattern.vertices, pattern.vertices[originals]])
     frames = tuple(np.vstack([frame, frame[originals]]) for frame in pattern.frames)
     edges, letters, angles = _split_edges(pattern, faces, originals)
-    return Pattern(vertices, tuple(tuple(f) for f in faces), edges, letters, angles, frames,
-                   pattern.source)
+    try:
+        return Pattern(vertices, tuple(tuple(f) for f in faces), edges, letters, angles, frames,
+                       pattern.source)
+    except ValueError as error:   # what separating made of the file's faces: name the file
+        raise ValueError(f"{pattern.source or 'pattern'}: separating the faces along its cut "
+                         f"(C) edges: {error}") from None
 
 
 def _split_edges(pattern, faces, originals):

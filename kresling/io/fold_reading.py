@@ -235,6 +235,13 @@ def _derived_faces(vertices, edges, source) -> tuple:
     if not faces:
         raise key_error(source, "faces_vertices", "is missing and edges_vertices encloses "
                         "no face: give faces_vertices")
+    for index, face in enumerate(faces):
+        twice = [v for v in face if face.count(v) > 1]
+        if twice:
+            raise key_error(source, "edges_vertices", f"encloses a region whose outline "
+                            f"touches itself at vertex {twice[0]} (face {index} derived from "
+                            "the edges): a panel must be a simple polygon; add an edge that "
+                            "splits it, or give faces_vertices")
     return tuple(tuple(face) for face in faces)
 
 
