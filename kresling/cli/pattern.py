@@ -101,8 +101,6 @@ def convert(args) -> int:
         raise ValueError(f"--output = {args.output!r} is invalid with --from: a pattern file "
                          "is converted to FOLD (.fold)")
     check_output_file("--output", args.output)
-    pattern = read_pattern(args.source, unit=args.unit, scale=args.scale, frame=args.frame,
-                           snap_tolerance=args.snap_tolerance)
     # What simulate would refuse is not converted: the same reading, the same message.
     from kresling.cli.pattern_check import examine, refuse
 
@@ -110,6 +108,8 @@ def convert(args) -> int:
                             unit=args.unit, scale=args.scale, frame=args.frame)
     if refusal is not None:
         return refuse(refusal)
+    pattern = read_pattern(args.source, unit=args.unit, scale=args.scale, frame=args.frame,
+                           snap_tolerance=args.snap_tolerance)
     if Path(args.source).suffix.lower() == ".svg":
         pattern = as_fold_assignments(pattern)
     write_fold(args.output, pattern, frame_title=Path(args.source).name,

@@ -259,7 +259,13 @@ def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", la
     if assignments not in CONVENTIONS:
         raise ValueError(f"assignments = {assignments!r} is invalid: must be one of "
                          f"{list(CONVENTIONS)}")
-    elements = build_panel_elements(vertices, panels, split=split, centre=centre)
+    try:
+        elements = build_panel_elements(vertices, panels, split=split, centre=centre)
+    except ValueError as error:   # a panel of the file: name the file
+        source = getattr(pattern, "source", "")
+        if not source or str(error).startswith(("split", "centre")):
+            raise
+        raise ValueError(f"{source}: {error}") from None
     _check_every_vertex_held(pattern, len(vertices), panels, fixed)
     letters = _fold_assignments(pattern, elements)
     kinds = [crease_kind(letter, assignments) for letter in letters]
