@@ -38,7 +38,9 @@ def register(subparsers) -> None:
                     "as the plotter sees the sheet. With --from FILE (.fold, .svg in Origami "
                     "Simulator's colours, or .obj) no design is needed: the pattern is "
                     "converted to a FOLD file (-o FILE.fold) in mm, with FOLD's "
-                    "assignments (an SVG's facet creases become joins, J).",
+                    "assignments (an SVG's facet creases become joins, J), after the checks "
+                    "'kresling simulate' makes: a pattern it would refuse is not converted "
+                    "(exit 1, with its reason, as --check says it).",
     )
     add_design_arguments(parser)
     # With --from the design is not needed: the three design variables are checked in run.
@@ -59,7 +61,8 @@ def register(subparsers) -> None:
                              "angles) and print what it repaired, or why it would refuse it "
                              "(exit 1); nothing is written")
     parser.add_argument("--split", default="N5B8", choices=("N5B8", "N4B5"),
-                        help="with --check: how panels become triangles (default N5B8)")
+                        help="with --check or --from: how panels become triangles, as "
+                             "simulate would build them (default N5B8)")
     parser.add_argument("--snap-tolerance", type=float, dest="snap_tolerance", metavar="PX",
                         help="with --check or --from an SVG drawing: merge points closer than "
                              "PX [its units, CSS px] (default 3, or 1/200 of its size if "
@@ -98,6 +101,13 @@ def convert(args) -> int:
         raise ValueError(f"--output = {args.output!r} is invalid with --from: a pattern file "
                          "is converted to FOLD (.fold)")
     check_output_file("--output", args.output)
+    # What simulate would refuse is not converted: the same reading, the same message.
+    from kresling.cli.pattern_check import examine, refuse
+
+    _, _, refusal = examine(args.source, split=args.split, snap_tolerance=args.snap_tolerance,
+                            unit=args.unit, scale=args.scale, frame=args.frame)
+    if refusal is not None:
+        return refuse(refusal)
     pattern = read_pattern(args.source, unit=args.unit, scale=args.scale, frame=args.frame,
                            snap_tolerance=args.snap_tolerance)
     if Path(args.source).suffix.lower() == ".svg":

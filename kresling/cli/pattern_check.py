@@ -20,23 +20,36 @@ class _Repairs(logging.Handler):
         self.messages.append(record.getMessage())
 
 
-def check(args) -> int:
-    """Read ``args.check`` and build its model for a fold (the problem a new user writes:
-    the pattern, its creases driven to the file's fold angles); exit 0 if ``simulate``
-    would take it, 1 (with the reason) if it would refuse it."""
+def examine(file, *, split="N5B8", snap_tolerance=None, unit=None, scale=None,
+            frame=0) -> tuple:
+    """Read ``file`` and build its model as ``kresling simulate`` would fold it (the
+    problem a new user writes: the pattern, its creases driven to the file's fold angles).
+
+    Returns
+    -------
+    summary : dict
+        The file and split; the counts read and built, as far as it got.
+    repairs : list of str
+        The readers' and builders' warnings: what they changed in the pattern.
+    refusal : str or None
+        Why ``simulate`` would refuse it (its own message), or None.
+    """
     from kresling.simulate import build_problem_model, load_problem
     from kresling.simulate.fold_plan import fold_plan
 
-    pattern_keys = {"file": str(args.check), "split": args.split}
-    if args.snap_tolerance is not None:
-        pattern_keys["snap_tolerance"] = args.snap_tolerance
+    pattern_keys = {"file": str(file), "split": split}
+    for key, value in (("snap_tolerance", snap_tolerance), ("unit", unit), ("scale", scale)):
+        if value is not None:
+            pattern_keys[key] = value
+    if frame:
+        pattern_keys["frame"] = frame
     problem = {"pattern": pattern_keys,
                "actuation": [{"family": "fold", "fold_angle_deg": "file"}],
                "analysis": {"method": "fold"}}
     repairs = _Repairs()
     logger = logging.getLogger("kresling")
     logger.addHandler(repairs)
-    refusal, summary = None, {"file": str(args.check), "split": args.split}
+    refusal, summary = None, {"file": str(file), "split": split}
     try:
         loaded = load_problem(problem)
         pattern = loaded.pattern
@@ -54,7 +67,21 @@ def check(args) -> int:
         refusal = str(error)
     finally:
         logger.removeHandler(repairs)
-    summary["repairs"] = repairs.messages
+    return summary, repairs.messages, refusal
+
+
+def refuse(refusal: str) -> int:
+    """Say why ``simulate`` would refuse the pattern; the exit status (1)."""
+    print(f"kresling pattern: simulate would refuse it: {refusal}", file=sys.stderr)
+    return 1
+
+
+def check(args) -> int:
+    """``--check``: :func:`examine` ``args.check``, print what it found; exit 0 if
+    ``simulate`` would take it, 1 (with the reason) if it would refuse it."""
+    summary, repairs, refusal = examine(args.check, split=args.split,
+                                        snap_tolerance=args.snap_tolerance)
+    summary["repairs"] = repairs
     summary["refused"] = refusal
     if args.json:
         print_json(summary)
@@ -63,11 +90,8 @@ def check(args) -> int:
                                                 "nodes", "bars", "hinges",
                                                 "creases_with_targets") if key in summary]
         print_table(rows, ("quantity", "value"))
-        for message in repairs.messages:
+        for message in repairs:
             print(f"repaired: {message}")
         if "note" in summary:
             print(f"note: {summary['note']}")
-    if refusal is not None:
-        print(f"kresling pattern: simulate would refuse it: {refusal}", file=sys.stderr)
-        return 1
-    return 0
+    return 0 if refusal is None else refuse(refusal)

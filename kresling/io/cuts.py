@@ -9,7 +9,9 @@ the rest of the sheet (its end vertices' faces still connected round them) dupli
 vertex: its faces share only the slit's end points, so the model keeps the edge's bar and
 drops its hinge. :func:`check_duplicate_vertices` refuses two vertices of a flat pattern at
 one point unless both lie on cut edges (the two sides of a cut, as :func:`separate_cuts`
-writes them).
+writes them): a pattern written in a problem file, whose node numbers the problem uses. The
+file readers merge a vertex written twice instead, and keep cuts drawn as two boundaries
+(:mod:`kresling.io.coincident_vertices`).
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ import numpy as np
 from kresling.io.pattern import Pattern
 from kresling.io.planar_graph import merge_points, plane_coordinates
 
-__all__ = ["DUPLICATE_TOLERANCE", "separate_cuts", "check_duplicate_vertices"]
+__all__ = ["DUPLICATE_TOLERANCE", "separate_cuts", "coincident_twins", "check_duplicate_vertices"]
 
 #: Two vertices closer than this fraction of the pattern's size (the diagonal of its
 #: bounding box) are at one point.
@@ -96,8 +98,12 @@ def separate_cuts(pattern):
     vertices = np.vstack([pattern.vertices, pattern.vertices[originals]])
     frames = tuple(np.vstack([frame, frame[originals]]) for frame in pattern.frames)
     edges, letters, angles = _split_edges(pattern, faces, originals)
-    return Pattern(vertices, tuple(tuple(f) for f in faces), edges, letters, angles, frames,
-                   pattern.source)
+    try:
+        return Pattern(vertices, tuple(tuple(f) for f in faces), edges, letters, angles, frames,
+                       pattern.source)
+    except ValueError as error:   # what separating made of the file's faces: name the file
+        raise ValueError(f"{pattern.source or 'pattern'}: separating the faces along its cut "
+                         f"(C) edges: {error}") from None
 
 
 def _split_edges(pattern, faces, originals):
@@ -133,10 +139,48 @@ def _unfolded(vertices, faces) -> bool:
     if flat is None:
         return False
     signs = set()
+    by_size = {}
     for face in faces:
-        x, y = flat[list(face), 0], flat[list(face), 1]
-        signs.add(np.sign(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y)))
+        by_size.setdefault(len(face), []).append(face)
+    for group in by_size.values():                   # in bulk: one array per face size
+        corners = flat[np.array(group)]              # (F, k, 2)
+        x, y = corners[..., 0], corners[..., 1]
+        twice_area = (x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y).sum(axis=1)
+        signs.update(np.sign(twice_area).tolist())
     return len(signs - {0.0}) <= 1
+
+
+def coincident_twins(vertices, faces, tolerance=DUPLICATE_TOLERANCE) -> list:
+    """The vertices of an unfolded pattern's faces that lie at another's point.
+
+    Parameters
+    ----------
+    vertices : ndarray, shape (N, 3)
+        Coordinates [mm].
+    faces : sequence of sequence of int
+    tolerance : float
+        As a fraction of the size (bounding-box diagonal) of the faces' vertices.
+
+    Returns
+    -------
+    list of (int, int, float)
+        ``(one, other, gap)`` for every vertex ``other`` within ``tolerance`` of a
+        lower-numbered ``one`` (the lowest of its cluster), with their distance [mm], by
+        ``other``; empty for a folded pattern (not flat, or a face turned over): folding,
+        and folding flat, bring vertices together.
+    """
+    used = np.unique(np.fromiter((v for face in faces for v in face), dtype=np.int64))
+    if len(used) < 2:
+        return []
+    points = np.asarray(vertices, dtype=float)[used]
+    size = float(np.linalg.norm(np.ptp(points, axis=0)))
+    if size == 0.0 or not _unfolded(np.asarray(vertices, dtype=float), faces):
+        return []
+    representative = merge_points(points, tolerance * size)
+    twins = np.flatnonzero(representative != np.arange(len(used)))
+    return [(int(used[representative[k]]), int(used[k]),
+             float(np.linalg.norm(points[k] - points[representative[k]])))
+            for k in twins.tolist()]
 
 
 def check_duplicate_vertices(vertices, faces, edges, assignments, fail, *,
@@ -163,25 +207,17 @@ def check_duplicate_vertices(vertices, faces, edges, assignments, fail, *,
     ValueError
         From ``fail``, naming the first pair (lowest indices) and their distance.
     """
-    used = np.unique(np.fromiter((v for face in faces for v in face), dtype=np.int64))
-    if len(used) < 2:
-        return
-    points = np.asarray(vertices, dtype=float)[used]
-    size = float(np.linalg.norm(np.ptp(points, axis=0)))
-    if size == 0.0 or not _unfolded(np.asarray(vertices, dtype=float), faces):
-        return
-    representative = merge_points(points, tolerance * size)
-    twins = np.flatnonzero(representative != np.arange(len(used)))
-    if not twins.size:
+    twins = coincident_twins(vertices, faces, tolerance)
+    if not twins:
         return
     on_cut = {v for (u, w), a in zip(np.asarray(edges).tolist(), assignments) if a == "C"
               for v in (u, w)}
-    for k in twins.tolist():
-        one, other = int(used[representative[k]]), int(used[k])
+    for one, other, gap in twins:
         if one in on_cut and other in on_cut:
             continue
-        gap = float(np.linalg.norm(points[k] - points[representative[k]]))
-        raise fail(f"vertices {one + first} and {other + first} coincide ({gap:.3g} mm apart, within "
-                   f"{tolerance:g} of the pattern's {size:.3g} mm size): two vertices at one "
-                   "point leave a slit between their faces; use one vertex for both (or, "
-                   "for a slit, assign the edges along it 'C')")
+        used = np.unique(np.fromiter((v for face in faces for v in face), dtype=np.int64))
+        size = float(np.linalg.norm(np.ptp(np.asarray(vertices, dtype=float)[used], axis=0)))
+        raise fail(f"vertices {one + first} and {other + first} coincide ({gap:.3g} mm apart, "
+                   f"within {tolerance:g} of the pattern's {size:.3g} mm size): two vertices "
+                   "at one point leave a slit between their faces; use one vertex for both "
+                   "(or, for a slit, assign the edges along it 'C')")

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from kresling._validation import read_input_file
-from kresling.io.cuts import check_duplicate_vertices
+from kresling.io.coincident_vertices import merge_coincident_vertices
 from kresling.io.errors import (MISSING, PatternFileError, describe, file_error, key_error,
                                line_error)
 from kresling.io.pattern import (Pattern, _as_assignments, _as_edges, _as_faces,
@@ -68,7 +68,9 @@ def read_fold(path, *, planarity_tolerance=1e-3, frame=0, unit=None, scale=None)
         ...``, ``FILE: key 'vertices_coords'[4] = [1, 'a'] is invalid: must be 2 or 3
         numbers``, ``FILE: key 'faces_vertices'[3]: face 3 has vertex 40 out of range [0,
         39]``, ``FILE: face 7 is not planar: ...``, ``FILE: vertices 3 and 17 coincide
-        ...``, an unknown ``frame_unit`` or a frame that does not exist.
+        ...`` (where merging them would not leave a sheet; a vertex written twice is merged
+        with a warning, a cut drawn as two boundaries kept:
+        :mod:`kresling.io.coincident_vertices`), an unknown ``frame_unit`` or a frame that does not exist.
     OSError
         If the file cannot be read (the message names it).
     """
@@ -124,13 +126,15 @@ def pattern_from_fold(document, *, source: str = "", planarity_tolerance=1e-3, f
         faces = _derived_faces(vertices, edges, source)
     moving = _moving_frames(frames, frame, owner, count, source)
     vertices *= factor
+    declared = len(edges) if assignments is not None else 0
     edges, assignments, angles = complete_edges(faces, edges, assignments, angles)
     check_panels(vertices, faces, planarity_tolerance,
                  lambda index, message: _face_error(source, index, message))
-    check_duplicate_vertices(vertices, faces, edges, assignments,
-                             lambda message: file_error(source, message))
-    return Pattern(vertices, faces, edges, assignments, angles,
-                   tuple(f * factor for f in moving), source)
+    merged = merge_coincident_vertices(vertices, faces, edges, assignments, angles,
+                                       tuple(f * factor for f in moving),
+                                       lambda message: file_error(source, message),
+                                       declared=declared, source=source)
+    return Pattern(*merged, source)
 
 
 def _frames(document, source) -> list:
@@ -231,6 +235,13 @@ def _derived_faces(vertices, edges, source) -> tuple:
     if not faces:
         raise key_error(source, "faces_vertices", "is missing and edges_vertices encloses "
                         "no face: give faces_vertices")
+    for index, face in enumerate(faces):
+        twice = [v for v in face if face.count(v) > 1]
+        if twice:
+            raise key_error(source, "edges_vertices", f"encloses a region whose outline "
+                            f"touches itself at vertex {twice[0]} (face {index} derived from "
+                            "the edges): a panel must be a simple polygon; add an edge that "
+                            "splits it, or give faces_vertices")
     return tuple(tuple(face) for face in faces)
 
 

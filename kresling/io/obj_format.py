@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from kresling._validation import read_input_file
-from kresling.io.cuts import check_duplicate_vertices
+from kresling.io.coincident_vertices import merge_coincident_vertices
 from kresling.io.errors import PatternFileError, file_error, line_error
 from kresling.io.pattern import (Pattern, _as_coordinates, _as_faces, argument_fail,
                                  check_panels, complete_edges)
@@ -78,9 +78,10 @@ def read_obj(path, *, planarity_tolerance=1e-3) -> Pattern:
 
     check_panels(coordinates, resolved, planarity_tolerance, fail, first=1)
     edges, assignments, angles = complete_edges(resolved, np.zeros((0, 2), dtype=np.int64))
-    check_duplicate_vertices(coordinates, resolved, edges, assignments,
-                             lambda message: file_error(source, message), first=1)
-    return Pattern(coordinates, tuple(resolved), edges, assignments, angles, (), source)
+    merged = merge_coincident_vertices(coordinates, tuple(resolved), edges, assignments, angles,
+                                       (), lambda message: file_error(source, message),
+                                       declared=0, source=source, first=1)
+    return Pattern(*merged, source)
 
 
 def _statements(text: str):

@@ -282,11 +282,12 @@ def _as_coordinates(values, name: str, *, count: int | None = None) -> np.ndarra
 
 def check_face(face, count: int, fail: Fail, index: int) -> tuple:
     """One face as a tuple of int: integer entries in ``[0, count)``, distinct, >= 3."""
-    # The readers' faces (Python ints, valid): accepted in bulk; anything else entry by
+    # The readers' faces (Python ints, valid): accepted at once; anything else entry by
     # entry below, which names the first bad one.
-    if type(face) is tuple and len(face) >= 3 and all(type(v) is int for v in face) and \
-            min(face) >= 0 and max(face) < count and len(set(face)) == len(face):
-        return face
+    # (A problem file's inline panels are lists of ints: the same bulk path, as a tuple.)
+    if type(face) in (tuple, list) and len(face) >= 3 and all(type(v) is int for v in face) \
+            and min(face) >= 0 and max(face) < count and len(set(face)) == len(face):
+        return tuple(face)
     if not _is_sequence(face):
         raise fail(index, "must be a list of vertex indices", value=face)
     vertices = []

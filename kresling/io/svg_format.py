@@ -128,8 +128,10 @@ def read_svg(path, *, planarity_tolerance=1e-3, unit=None, scale=None,
     points, edges, origin = planarize(segments, snap_tolerance * factor)
     faces, edges, origin = _panels(source, points, edges, origin, letters)
     if not faces:
-        raise file_error(source, f"the {len(segments)} strokes enclose no face: a crease "
-                                 "pattern needs a closed boundary (black strokes)")
+        raise file_error(source, f"the {len(segments)} strokes enclose no face with points "
+                                 f"closer than snap_tolerance = {snap_tolerance:.3g} px merged: "
+                                 "a crease pattern needs a closed boundary (black strokes), "
+                                 "and a tolerance below its panels' size")
     vertices = np.column_stack([points, np.zeros(len(points))])
     letters = _boundary_between_panels(
         source, faces, edges, [letters[k] for k in origin])

@@ -259,7 +259,14 @@ def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", la
     if assignments not in CONVENTIONS:
         raise ValueError(f"assignments = {assignments!r} is invalid: must be one of "
                          f"{list(CONVENTIONS)}")
-    elements = build_panel_elements(vertices, panels, split=split, centre=centre)
+    try:
+        elements = build_panel_elements(vertices, panels, split=split, centre=centre)
+    except ValueError as error:   # a panel of the file: name the file
+        source = getattr(pattern, "source", "")
+        if not source or str(error).startswith(("split", "centre")):
+            raise
+        raise ValueError(f"{source}: {error}") from None
+    _check_every_vertex_held(pattern, len(vertices), panels, fixed)
     letters = _fold_assignments(pattern, elements)
     kinds = [crease_kind(letter, assignments) for letter in letters]
     bar_area, fold_k, bend_k, bar_modulus, stiffness = _material_values(
@@ -295,6 +302,25 @@ def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", la
                       source=getattr(pattern, "source", "") or "pattern")
     return PatternModel(model, elements, tuple(family), np.asarray(element, dtype=np.int64),
                         tuple(bar_family), stiffness, on_edge)
+
+
+def _check_every_vertex_held(pattern, count, panels, fixed) -> None:
+    """A vertex on no panel has no bar: its DOFs have no stiffness unless all are supported
+    (the solvers refuse such a node; here the pattern's file is named, and the vertex)."""
+    on_panel = np.zeros(count, dtype=bool)
+    on_panel[[v for panel in panels for v in panel]] = True
+    if on_panel.all():
+        return
+    held = (np.zeros((count, 3), dtype=bool) if fixed is None
+            else np.asarray(fixed, dtype=bool).reshape(-1, 3)[:count])
+    loose = np.flatnonzero(~on_panel & ~held.all(axis=1))
+    if loose.size:
+        source = getattr(pattern, "source", "") or "pattern"
+        more = f" (and {loose.size - 1} more)" if loose.size > 1 else ""
+        raise ValueError(f"{source}: vertex {loose[0]}{more} is a corner of no panel: no bar "
+                         "holds it (an edge of it that bounds no face makes no element); "
+                         "remove it from the pattern, make it a panel's corner, or support "
+                         "it in x, y and z")
 
 
 def _face_angle_family(material, elements) -> dict | None:

@@ -7,20 +7,46 @@ Increments are numbered from 1: frame ``"K"`` shows row ``K - 1`` of a path's ar
 
 from __future__ import annotations
 
+import html
+import textwrap
+
 import numpy as np
 
 from kresling._validation import as_integer
 
 __all__ = ["select_rows", "default_curve", "check_curve", "slider", "play_buttons",
-           "frame_name", "FRAME_DURATION_MS"]
+           "frame_name", "partial_line", "FRAME_DURATION_MS"]
 
 #: Colour of a title's line that says a run stopped before the end of its travel.
 PARTIAL_COLOUR = "#c00000"
+
+#: Characters on one line of a title: plotly does not wrap titles, and a longer line is cut
+#: off at the page's edge (about 110 characters fit a 1,200 px wide page at 14 px).
+TITLE_LINE = 100
 
 #: Time each frame is shown when playing [ms].
 FRAME_DURATION_MS = 60
 
 _AXES = "xyz"
+
+
+def partial_line(increments: int, reason: str) -> str:
+    """The red title lines of a path that stopped early: "PARTIAL: the solver stopped after
+    ``increments`` increments" and ``reason`` (HTML-escaped), broken into lines of at most
+    :data:`TITLE_LINE` characters (a word longer than that is broken too), each starting
+    with ``<br>``, so that a long message is shown whole."""
+    text = (f"PARTIAL: the solver stopped after {increments} increments "
+            f"({reason.strip() or 'no reason given'})")
+    lines = textwrap.wrap(text, TITLE_LINE, break_long_words=True, break_on_hyphens=False)
+    head = len(f"PARTIAL: the solver stopped after {increments} increments")
+    shown = []
+    for k, line in enumerate(lines):
+        if k == 0 and len(line) >= head:   # the statement in bold, the reason plain
+            line = f"<b>{html.escape(line[:head])}</b>{html.escape(line[head:])}"
+        else:
+            line = html.escape(line)
+        shown.append(f'<br><span style="color:{PARTIAL_COLOUR}">{line}</span>')
+    return "".join(shown)
 
 
 def frame_name(row: int) -> str:

@@ -4,7 +4,6 @@ its load-displacement curve (:func:`view_path`)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from html import escape
 
 import numpy as np
 import plotly.graph_objects as go
@@ -12,7 +11,7 @@ import plotly.graph_objects as go
 from kresling._validation import as_float_array
 
 from kresling.view.animation import (PARTIAL_COLOUR, check_curve, default_curve, frame_name,
-                                     play_buttons, select_rows, slider)
+                                     partial_line, play_buttons, select_rows, slider)
 from kresling.view.fields import FIELDS, check_field, edge_values, field_edges, \
     significant_decimals
 from kresling.view.inputs import view_inputs
@@ -249,9 +248,7 @@ def view_path(model, path, *, triangles=None, hinge_family=None, field=None, cur
     shown = title or default
     if getattr(path, "completed", True) is False:
         # A solver that stopped early: the page says so below any title, with the reason.
-        reason = getattr(path, "message", "") or "no reason given"
-        shown += (f'<br><span style="color:{PARTIAL_COLOUR}"><b>PARTIAL: the solver stopped '
-                  f'after {num_steps} increments</b> ({escape(reason)})</span>')
+        shown += partial_line(num_steps, getattr(path, "message", ""))
     return animated_figure([PathPanel(inputs, displacement)], rows,
                            [frame_name(r) for r in rows], curves=curves, x_label=x_label,
                            y_label=y_label, field=field, title=shown, total=num_steps)

@@ -25,8 +25,8 @@ from pathlib import Path
 import numpy as np
 
 from kresling._validation import as_integer, as_positive_real
-from kresling.view.animation import (FRAME_DURATION_MS, PARTIAL_COLOUR, check_curve,
-                                     default_curve, play_buttons, select_rows, slider)
+from kresling.view.animation import (FRAME_DURATION_MS, check_curve, default_curve,
+                                     partial_line, play_buttons, select_rows, slider)
 from kresling.view.fields import significant_decimals
 from kresling.view.inputs import view_inputs
 from kresling.view.page_script import PAGE_SCRIPT
@@ -213,9 +213,7 @@ def write_path_page(model, path, file, *, triangles=None, hinge_family=None, cur
     shown = subscripted(title or f"Equilibrium path of a bar-and-hinge model "
                                  f"({describe(model)}), {total} increments")
     if getattr(path, "completed", True) is False:
-        reason = getattr(path, "message", "") or "no reason given"
-        shown += (f'<br><span style="color:{PARTIAL_COLOUR}"><b>PARTIAL: the solver stopped '
-                  f"after {total} increments</b> ({_html.escape(reason)})</span>")
+        shown += partial_line(total, getattr(path, "message", ""))
     spec = dict(data=_traces(inputs, lines, low, high, shown_curve),
                 layout=_layout(shown, list(points), names, total, shown_curve),
                 config=dict(responsive=True, displaylogo=False),

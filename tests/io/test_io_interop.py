@@ -121,12 +121,18 @@ def test_a_folded_flat_key_frame_is_named_up_front_and_its_crease_pattern_frame_
 
 # -- coincident vertices ---------------------------------------------------------------------
 
-def test_coincident_vertices_are_refused_with_their_indices(tmp_path):
+def test_a_vertex_written_twice_is_merged_and_a_cut_marked_c_kept(tmp_path, caplog):
     points = SQUARE + [[20.0, 0.0], [20.0, 10.0], [10.0, 0.0]]     # 6 repeats vertex 1
     document = {"vertices_coords": points, "faces_vertices": [[0, 1, 2, 3], [6, 4, 5, 2]]}
-    with pytest.raises(ValueError, match=r"sheet\.fold: vertices 1 and 6 coincide \(0 mm apart"):
-        read_fold(_write(tmp_path, document))
-    # Marked as the two sides of a cut, the same file is read.
+    merged = read_fold(_write(tmp_path, document))
+    # The same sheet written with one vertex there (an independent reading).
+    joined = read_fold(_write(tmp_path, {"vertices_coords": points[:6],
+                                         "faces_vertices": [[0, 1, 2, 3], [1, 4, 5, 2]]},
+                              name="joined.fold"))
+    assert merged == joined
+    assert "sheet.fold: 1 coincident vertex merged" in caplog.text
+    assert "6 into 1 (0 mm apart)" in caplog.text
+    # Marked as the two sides of a cut, the same file keeps both.
     document["edges_vertices"] = [[1, 2], [6, 2]]
     document["edges_assignment"] = ["C", "C"]
     assert read_fold(_write(tmp_path, document)).num_vertices == 7
@@ -200,3 +206,13 @@ def test_a_cut_separates_its_faces_and_a_slit_keeps_its_ends_joined():
     assert not others & set(cut.faces[1])
     assert cut.edges_assignment.count("C") == 6
     assert separate_cuts(cut) is cut                       # nothing left to separate
+
+
+def test_faces_derived_from_edges_that_touch_themselves_are_refused_naming_the_file(tmp_path):
+    # A triangle hanging inside the square from its corner 0: the region between them has
+    # an outline through vertex 0 twice, which no panel can be.
+    points = SQUARE + [[5.0, 2.0], [2.0, 5.0]]
+    edges = [[0, 1], [1, 2], [2, 3], [3, 0], [0, 4], [4, 5], [5, 0]]
+    with pytest.raises(ValueError, match=r"sheet\.fold: key 'edges_vertices' encloses a region "
+                                         r"whose outline touches itself at vertex 0"):
+        read_fold(_write(tmp_path, {"vertices_coords": points, "edges_vertices": edges}))

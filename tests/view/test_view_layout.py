@@ -76,3 +76,25 @@ def test_the_manipulators_table_has_no_noise():
     assert result.returncode == 0, result.stderr
     assert "e-16" not in result.stdout and "e-15" not in result.stdout
     assert re.search(r"^3\s+9.375\s+0\s+140.1364663$", result.stdout, re.M)
+
+
+def test_a_long_failure_message_is_shown_whole_in_lines_that_fit_the_page():
+    import re
+
+    from kresling.view.animation import TITLE_LINE, partial_line
+
+    reason = ("Newton did not converge at load factor 0.4375 after 50 iterations "
+              "(correction 3.1e-04 mm > tolerance 1.0e-06 mm); the increment was halved "
+              "12 times down to 1.2e-05 of the first <and> the path was left there " * 3
+              + "x" * 250)
+    lines = partial_line(17, reason).split("<br>")[1:]
+    texts = [re.sub(r"<[^>]+>", "", line) for line in lines]
+    import html
+    texts = [html.unescape(t) for t in texts]
+    assert len(texts) > 1 and all(len(t) <= TITLE_LINE for t in texts)
+    # Every character of the message is there, in order (lines broken at spaces).
+    whole = "".join(texts).replace(" ", "")
+    assert whole == (f"PARTIAL: the solver stopped after 17 increments ({reason})").replace(
+        " ", "")
+    assert "<b>PARTIAL: the solver stopped after 17 increments</b>" in lines[0]
+    assert "&lt;and&gt;" in partial_line(17, reason)
