@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from kresling.io.fold_reading import pattern_from_fold, read_fold
-from kresling.io.pattern import (ASSIGNMENTS, Pattern, _as_coordinates, argument_fail,
+from kresling.io.pattern import (ASSIGNMENTS, Pattern, checked_coordinates, argument_fail,
                                  pattern_from_arrays)
 from kresling.io.units import mm_per_unit
 from kresling.io.vertex_neighbours import vertices_neighbours
@@ -123,7 +123,7 @@ def write_fold(path, pattern_or_vertices, faces=None, *, edges=None, edges_assig
         fail = argument_fail("frames")
         if isinstance(frames, (str, bytes)) or not hasattr(frames, "__len__"):
             raise fail(None, "must be a sequence of (N, 3) arrays", value=frames)
-        frames = [_as_coordinates(frame, f"frames[{k}]", count=pattern.num_vertices)
+        frames = [checked_coordinates(frame, f"frames[{k}]", count=pattern.num_vertices)
                   for k, frame in enumerate(frames)]
     titles = _titles(frame_title, len(frames))
     metadata = _metadata(metadata)

@@ -21,8 +21,8 @@ from kresling._validation import read_input_file
 from kresling.io.coincident_vertices import merge_coincident_vertices
 from kresling.io.errors import (MISSING, PatternFileError, describe, file_error, key_error,
                                line_error)
-from kresling.io.pattern import (Pattern, _as_assignments, _as_edges, _as_faces,
-                                 _as_fold_angles, check_panels, complete_edges, is_integer,
+from kresling.io.pattern import (Pattern, checked_assignments, checked_edges, checked_faces,
+                                 checked_fold_angles, check_panels, complete_edges, is_integer,
                                  is_number)
 from kresling.io.planar_graph import faces_from_edges, plane_coordinates
 from kresling.io.units import UNITS, mm_per_unit
@@ -115,13 +115,13 @@ def pattern_from_fold(document, *, source: str = "", planarity_tolerance=1e-3, f
     count = len(vertices)
     edges = np.zeros((0, 2), dtype=np.int64)
     if "edges_vertices" in chosen:
-        edges = _as_edges(_json_list(chosen["edges_vertices"],
+        edges = checked_edges(_json_list(chosen["edges_vertices"],
                                      _fail(source, owner["edges_vertices"], "edges_vertices")),
                           count, _fail(source, owner["edges_vertices"], "edges_vertices"))
     assignments, angles = _edge_values(chosen, owner, source, len(edges))
     if "faces_vertices" in chosen:
         fail = _fail(source, owner["faces_vertices"], "faces_vertices")
-        faces = _as_faces(_json_list(chosen["faces_vertices"], fail), count, fail)
+        faces = checked_faces(_json_list(chosen["faces_vertices"], fail), count, fail)
     else:
         faces = _derived_faces(vertices, edges, source)
     moving = _moving_frames(frames, frame, owner, count, source)
@@ -214,10 +214,10 @@ def _edge_values(chosen, owner, source, count):
                       "edges_vertices")
     if "edges_assignment" in chosen:
         fail = _fail(source, owner["edges_assignment"], "edges_assignment")
-        assignments = _as_assignments(_json_list(chosen["edges_assignment"], fail), count, fail)
+        assignments = checked_assignments(_json_list(chosen["edges_assignment"], fail), count, fail)
     if "edges_foldAngle" in chosen:
         fail = _fail(source, owner["edges_foldAngle"], "edges_foldAngle")
-        angles = _as_fold_angles(_json_list(chosen["edges_foldAngle"], fail), count, fail)
+        angles = checked_fold_angles(_json_list(chosen["edges_foldAngle"], fail), count, fail)
     return assignments, angles
 
 

@@ -19,7 +19,7 @@ import numpy as np
 from kresling._validation import read_input_file
 from kresling.io.coincident_vertices import merge_coincident_vertices
 from kresling.io.errors import PatternFileError, file_error, line_error
-from kresling.io.pattern import (Pattern, _as_coordinates, _as_faces, argument_fail,
+from kresling.io.pattern import (Pattern, checked_coordinates, checked_faces, argument_fail,
                                  check_panels, complete_edges)
 
 __all__ = ["read_obj", "write_obj"]
@@ -183,8 +183,8 @@ def write_obj(path, vertices, faces) -> Path:
         A non-finite coordinate, or a face with an index out of range, a repeated vertex or
         fewer than 3 vertices (naming the face). The geometry (planarity) is not checked.
     """
-    coordinates = _as_coordinates(vertices, "vertices")
-    faces = _as_faces(faces, len(coordinates), argument_fail("faces"))
+    coordinates = checked_coordinates(vertices, "vertices")
+    faces = checked_faces(faces, len(coordinates), argument_fail("faces"))
     lines = [f"# kresling: {len(coordinates)} vertices [mm], {len(faces)} faces"]
     lines += ["v " + " ".join(repr(x) for x in row) for row in coordinates.tolist()]
     lines += ["f " + " ".join(str(i + 1) for i in face) for face in faces]

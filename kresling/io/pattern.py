@@ -82,15 +82,15 @@ class Pattern:
     source: str = ""
 
     def __post_init__(self) -> None:
-        vertices = _as_coordinates(self.vertices, "vertices")
+        vertices = checked_coordinates(self.vertices, "vertices")
         count = len(vertices)
-        faces = _as_faces(self.faces, count, argument_fail("faces"))
-        edges = _as_edges(self.edges, count, argument_fail("edges"))
-        assignments = _as_assignments(self.edges_assignment, len(edges),
+        faces = checked_faces(self.faces, count, argument_fail("faces"))
+        edges = checked_edges(self.edges, count, argument_fail("edges"))
+        assignments = checked_assignments(self.edges_assignment, len(edges),
                                       argument_fail("edges_assignment"))
-        angles = _as_fold_angles(self.edges_fold_angle, len(edges),
+        angles = checked_fold_angles(self.edges_fold_angle, len(edges),
                                  argument_fail("edges_fold_angle"))
-        frames = tuple(_as_coordinates(frame, f"frames[{k}]", count=count)
+        frames = tuple(checked_coordinates(frame, f"frames[{k}]", count=count)
                        for k, frame in enumerate(_as_list(self.frames, argument_fail("frames"))))
         known = {(min(u, v), max(u, v)) for u, v in edges.tolist()}
         for index, face in enumerate(faces):
@@ -191,13 +191,13 @@ def pattern_from_arrays(vertices, faces, *, edges=None, edges_assignment=None,
         fewer than 3 in a face, a non-finite coordinate, an assignment list of the wrong
         length or an unknown letter, a degenerate or non-planar panel.
     """
-    coordinates = _as_coordinates(vertices, "vertices")
-    face_list = _as_faces(faces, len(coordinates), argument_fail("faces"))
+    coordinates = checked_coordinates(vertices, "vertices")
+    face_list = checked_faces(faces, len(coordinates), argument_fail("faces"))
     given = (np.zeros((0, 2), dtype=np.int64) if edges is None
-             else _as_edges(edges, len(coordinates), argument_fail("edges")))
-    assignments = (None if edges_assignment is None else _as_assignments(
+             else checked_edges(edges, len(coordinates), argument_fail("edges")))
+    assignments = (None if edges_assignment is None else checked_assignments(
         edges_assignment, len(given), argument_fail("edges_assignment")))
-    angles = (None if edges_fold_angle is None else _as_fold_angles(
+    angles = (None if edges_fold_angle is None else checked_fold_angles(
         edges_fold_angle, len(given), argument_fail("edges_fold_angle")))
     check_panels(coordinates, face_list, planarity_tolerance,
                  lambda index, message: PatternFileError(message, key="faces", index=index))
@@ -254,7 +254,7 @@ def is_integer(value) -> bool:
 MAX_COORDINATE = 1e30
 
 
-def _as_coordinates(values, name: str, *, count: int | None = None) -> np.ndarray:
+def checked_coordinates(values, name: str, *, count: int | None = None) -> np.ndarray:
     """(N, 3) float64 copy of 2D or 3D coordinates given in memory."""
     try:
         array = np.array(values, dtype=np.float64)
@@ -309,7 +309,7 @@ def check_face(face, count: int, fail: Fail, index: int) -> tuple:
     return tuple(vertices)
 
 
-def _as_faces(faces, count: int, fail: Fail) -> tuple:
+def checked_faces(faces, count: int, fail: Fail) -> tuple:
     faces = tuple(check_face(face, count, fail, index)
                   for index, face in enumerate(_as_list(faces, fail)))
     if not faces:
@@ -344,7 +344,7 @@ def check_unique_edges(edges: np.ndarray, fail: Fail) -> None:
         seen[key] = index
 
 
-def _as_edges(edges, count: int, fail: Fail) -> np.ndarray:
+def checked_edges(edges, count: int, fail: Fail) -> np.ndarray:
     # An integer array of valid pairs (what the readers build) is checked in bulk; anything
     # else pair by pair, which names the first bad one.
     if isinstance(edges, np.ndarray) and edges.dtype.kind in "iu" and edges.ndim == 2 and \
@@ -380,7 +380,7 @@ def check_assignment(value, fail: Fail, index: int) -> str:
     return letter
 
 
-def _as_assignments(values, count: int, fail: Fail) -> tuple:
+def checked_assignments(values, count: int, fail: Fail) -> tuple:
     values = list(values) if isinstance(values, str) else _as_list(values, fail)
     check_count(values, count, fail)
     return tuple(check_assignment(value, fail, index) for index, value in enumerate(values))
@@ -398,7 +398,7 @@ def check_fold_angle(value, fail: Fail, index: int) -> float:
     return angle
 
 
-def _as_fold_angles(values, count: int, fail: Fail) -> np.ndarray:
+def checked_fold_angles(values, count: int, fail: Fail) -> np.ndarray:
     values = _as_list(values, fail)
     check_count(values, count, fail)
     return np.array([check_fold_angle(v, fail, k) for k, v in enumerate(values)],

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
-from kresling.io.pattern import _as_coordinates, _as_faces, argument_fail
+from kresling.io.pattern import checked_coordinates, checked_faces, argument_fail
 
 __all__ = ["fan_triangles", "write_stl"]
 
@@ -65,8 +65,8 @@ def write_stl(path, vertices, faces, *, binary: bool = False, name: str = "kresl
         A non-finite coordinate; a face with an index out of range, a repeated vertex or
         fewer than 3 vertices; a face whose corners are collinear (no normal), naming it.
     """
-    coordinates = _as_coordinates(vertices, "vertices")
-    faces = _as_faces(faces, len(coordinates), argument_fail("faces"))
+    coordinates = checked_coordinates(vertices, "vertices")
+    faces = checked_faces(faces, len(coordinates), argument_fail("faces"))
     if not isinstance(name, str):
         raise ValueError(f"name = {name!r} is invalid: must be a str")
     triangles = fan_triangles(faces)

@@ -344,3 +344,50 @@ def test_no_two_modules_import_each_other_even_inside_a_function():
 def test_the_cycle_check_finds_a_loop_of_three_and_not_a_chain():
     assert import_cycles({"a": ["b"], "b": ["c"], "c": ["a"], "d": ["a"]}) == [["a", "b", "c"]]
     assert import_cycles({"a": ["b"], "b": ["c"], "c": []}) == []
+
+
+def private_imports() -> list:
+    """``file:line: name`` for every private name (``_x``, not a module) one module of the
+    package imports from another: what a module keeps to itself stays there."""
+    found = []
+    for path in files():
+        tree = ast.parse(path.read_text(encoding="utf-8"), filename=str(path))
+        for node in ast.walk(tree):
+            if not isinstance(node, ast.ImportFrom):
+                continue
+            if node.level:
+                base = _package_of(path)
+                module = base[:len(base) - (node.level - 1)] + (
+                    node.module.split(".") if node.module else [])
+            else:
+                module = (node.module or "").split(".")
+            if module[0] != "kresling":
+                continue
+            for alias in node.names:
+                name = alias.name
+                folder = PACKAGE.joinpath(*module[1:])
+                is_module = ((folder / name).is_dir() or (folder / f"{name}.py").is_file()
+                             or (module == ["kresling"] and _is_module(name)))
+                if name.startswith("_") and not name.startswith("__") and not is_module:
+                    found.append(f"{path.relative_to(PACKAGE.parent)}:{node.lineno}: "
+                                 f"{'.'.join(module)}.{name}")
+    return found
+
+
+def test_no_module_imports_another_modules_private_names():
+    found = private_imports()
+    assert not found, "private names imported across modules:\n" + "\n".join(found)
+
+
+@pytest.mark.parametrize("source, found", [
+    ("from kresling.io.pattern import _as_list\n", ["kresling.io.pattern._as_list"]),
+    ("from ..assembly import _private, public\n", ["kresling.assembly._private"]),
+    ("from kresling import _core\nfrom kresling.cli import _output\n", []),
+])
+def test_the_private_check_tells_names_from_modules(monkeypatch, source, found):
+    fake = PACKAGE / "analyses" / "_architecture_probe.py"
+    monkeypatch.setattr(sys.modules[__name__], "files", lambda: [fake])
+    original = Path.read_text
+    monkeypatch.setattr(Path, "read_text", lambda self, *a, **k: source if self == fake
+                        else original(self, *a, **k))
+    assert [line.split(": ", 1)[1] for line in private_imports()] == found
