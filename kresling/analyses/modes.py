@@ -92,7 +92,10 @@ def vibration_modes(model, masses, k=10, u=None, *, sigma=None) -> Modes:
         Number of modes; at most the free DOFs' count.
     u : array_like, shape (3N,) or (N, 3), optional
         The equilibrium the modes are about [mm] (the rest state, a loaded state, a point
-        of a path); zero by default. Its tangent includes the stress stiffness.
+        of a path); zero by default. Its tangent includes the stress stiffness. ``u`` must
+        be an equilibrium of ``model`` as given: a fold's step is one of the model with its
+        creases' rest angles there (:meth:`kresling.simulate.Simulation.model_at`;
+        :func:`kresling.simulate.modes_at` does both).
     sigma : float, optional
         Shift of the shift-invert solve [1/s^2]; the modes nearest it are found. Default:
         ``-1e-8`` times the mean eigenvalue ``trace(K) / trace(M)``, just below zero, so

@@ -14,7 +14,8 @@ from kresling.simulate.problem import Analysis, Load, MonitorStop, Problem, Supp
 from kresling.simulate.problem_model import build_problem_model
 from kresling.simulate.run import simulate
 from kresling.simulate.simulation import PathState, Simulation
+from kresling.simulate.state_modes import modes_at
 
 __all__ = ["simulate", "load_problem", "build_problem_model", "Simulation", "PathState",
            "Problem", "Analysis", "Load", "Support", "MonitorStop", "ElementHistories",
-           "element_histories"]
+           "element_histories", "modes_at"]

@@ -12,7 +12,7 @@ from kresling.model.fold_angles import fold_angles_deg
 from kresling.simulate.element_histories import ElementHistories, element_histories
 from kresling.simulate.fold_plan import FoldPlan
 from kresling.simulate.problem_keys import problem_keys
-from kresling.solvers import PathResult
+from kresling.solvers import PathResult, fold_model_at
 
 __all__ = ["Simulation", "PathState", "FOLD_TOLERANCE_DEG", "largest_bar_strain"]
 
@@ -75,6 +75,16 @@ class Simulation:
     @property
     def model(self):
         return self.pattern_model.model
+
+    def model_at(self, step: int = -1):
+        """The model the path's ``step`` (0-based, negative from the end) is an equilibrium
+        of: a fold's driven hinges at the rest angles reached there
+        (:func:`kresling.solvers.fold_model_at`), otherwise the model as built. Its tangent
+        at ``path.displacement[step]`` is the state's (vibration modes, stability)."""
+        load_factor = float(self.path.load_factor[step])  # an IndexError names a bad step
+        if self.fold is None:
+            return self.model
+        return fold_model_at(self.model, self.fold.stages, load_factor)
 
     @property
     def completed(self) -> bool:

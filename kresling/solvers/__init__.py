@@ -7,7 +7,7 @@ elements' parameters, and folding to a shape by those sensitivities. Each path s
 from kresling.solvers.displacement_control import solve_displacement_control
 from kresling.solvers.dynamics import StableStep, TimeHistory, solve_dynamics, stable_time_step
 from kresling.solvers.fold import FoldResult, fold, solve_fold
-from kresling.solvers.fold_sensitivity import fold_sensitivity
+from kresling.solvers.fold_sensitivity import fold_model_at, fold_sensitivity
 from kresling.solvers.fold_to_shape import ShapeFold, fold_to_shape
 from kresling.solvers.force_control import solve_force_control, solve_mgdcm
 from kresling.solvers.linear import condensed_stiffness
@@ -23,4 +23,4 @@ __all__ = ["PathResult", "solve_displacement_control", "solve_force_control", "s
            "stable_time_step", "StableStep", "Parameter", "parameter_names", "parameter_jacobian",
            "with_parameter", "EquilibriumSensitivity", "equilibrium_sensitivity",
            "equilibrium_gradient", "PathSensitivity", "path_sensitivity", "Direction",
-           "shape_jacobian", "fold_to_shape", "ShapeFold", "fold_sensitivity"]
+           "shape_jacobian", "fold_to_shape", "ShapeFold", "fold_sensitivity", "fold_model_at"]
