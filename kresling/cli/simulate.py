@@ -92,6 +92,9 @@ def run(args) -> int:
                 if key in summary]   # (a modes run has no path: no increments)
         rows += [(f"mode {j + 1} [Hz]", f"{f:.6g}")
                  for j, f in enumerate(summary.get("frequencies_hz", []))]
+        rows += [(f"stage {stage['name']}", f"{stage['method']}, "
+                  + ("completed" if stage["completed"] else "stopped"))
+                 for stage in summary.get("stages", [])]
         for key, value in summary.get("fold", {}).items():
             if key != "worst":
                 rows.append((f"fold: {key.replace('_', ' ')}", value))

@@ -100,10 +100,12 @@ class DynamicRun(Simulation):
         return written
 
 
-def run_dynamics(problem, pattern_model, *, stop=None) -> DynamicRun:
+def run_dynamics(problem, pattern_model, *, stop=None, start=None) -> DynamicRun:
     """Integrate the problem's model in time (``[dynamics]``, the loads' times, gravity).
 
-    ``stop(time, displacement) -> bool`` (optional) ends the motion early."""
+    ``stop(time, displacement) -> bool`` (optional) ends the motion early; ``start`` (a
+    :class:`~kresling.simulate.start_state.StartState`) is where the stage before ended:
+    the motion starts from its displacement and velocity, its loads held throughout."""
     masses = problem_masses(problem, pattern_model)
     model, d = pattern_model.model, problem.dynamics
     loads = []
@@ -112,13 +114,18 @@ def run_dynamics(problem, pattern_model, *, stop=None) -> DynamicRun:
         for node in load.nodes:
             vector[3 * node:3 * node + 3] += load.vector
         loads.append((vector, None if load.time is None else load.time.for_solver()))
+    initial = velocity = None
+    if start is not None:
+        initial, velocity = start.displacement, start.velocity
+        if start.loaded:
+            loads.append((start.forces, None))   # held: a factor of 1 at every time
     try:
         history = solve_dynamics(
             model, masses, d.time_step, d.duration, gravity=d.gravity, loads=loads,
             scheme=d.scheme, hht_alpha=d.hht_alpha, mass_damping=d.alpha,
             stiffness_damping=d.beta, tolerance=problem.analysis.tolerance,
             max_iterations=problem.analysis.max_iterations, record_every=d.record_every,
-            stop=stop)
+            initial=initial, initial_velocity=velocity, stop=stop)
     except ValueError as error:
         raise ValueError(f"{problem.source}: [dynamics]: {error}") from None
     driven = np.flatnonzero(sum((v for v, _ in loads), np.zeros(model.num_dofs)))

@@ -134,12 +134,14 @@ def _loaded_state(problem, model):
     return np.asarray(path.displacement[-1])
 
 
-def run_modes(problem, pattern_model) -> ModesRun:
-    """The lowest ``problem.analysis.modes`` modes of the problem's model at rest, or about
-    the loaded equilibrium its ``[analysis.about]`` names."""
+def run_modes(problem, pattern_model, *, state=None) -> ModesRun:
+    """The lowest ``problem.analysis.modes`` modes of the problem's model at rest, about the
+    loaded equilibrium its ``[analysis.about]`` names, or about ``state`` (a displacement
+    of every DOF [mm]: where the stage before ended)."""
     masses = problem_masses(problem, pattern_model)
     model = pattern_model.model
-    state = None if problem.analysis.about == "rest" else _loaded_state(problem, model)
+    if state is None and problem.analysis.about != "rest":
+        state = _loaded_state(problem, model)
     try:
         modes = vibration_modes(model, masses, k=problem.analysis.modes, u=state)
     except ValueError as error:

@@ -35,6 +35,7 @@ from kresling.simulate.problem_keys.mass import SheetMass
 from kresling.simulate.problem_keys.output import Output
 from kresling.simulate.problem_keys.support import Support
 from kresling.simulate.problem_table import ProblemTable, raw
+from kresling.simulate.stages import StagedProblem, read_stages
 
 __all__ = ["Problem", "Support", "Load", "MonitorStop", "Analysis", "load_problem"]
 
@@ -152,7 +153,7 @@ def _read_key(root, key, context):
     return key.read(table, context), table
 
 
-def load_problem(problem, *, overrides=None) -> Problem:
+def load_problem(problem, *, overrides=None, source=None):
     """Read and check a problem.
 
     Parameters
@@ -163,10 +164,13 @@ def load_problem(problem, *, overrides=None) -> Problem:
     overrides : dict, optional
         Keys that replace the problem's own, by table: ``{"pattern": {"snap_tolerance":
         2.0}, "analysis": {"fold_percent": 50}}`` (what the command line's options set).
+    source : str, optional
+        How messages name a dict problem (default "problem").
 
     Returns
     -------
-    Problem
+    Problem, or StagedProblem
+        A :class:`~kresling.simulate.stages.StagedProblem` for a problem in ``[[stage]]``s.
 
     Raises
     ------
@@ -175,14 +179,21 @@ def load_problem(problem, *, overrides=None) -> Problem:
         a node out of range, a DOF both supported and driven, or a pattern file that cannot
         be read; the message names the file, the table and the key.
     """
-    if isinstance(problem, Problem):
+    if isinstance(problem, (Problem, StagedProblem)):
         return problem
     if isinstance(problem, dict):
-        data, source, text, base = problem, "problem", None, Path.cwd()
+        data, source, text, base = problem, source or "problem", None, Path.cwd()
     else:
         path = Path(problem)
         source, base = str(path), path.parent
         data, text = read_toml(path)
+    if isinstance(data, dict) and "stage" in data:
+        if overrides and "analysis" in overrides:
+            raise ValueError(f"{source}: a problem in [[stage]]s takes its analysis settings "
+                             "per stage (set fold_percent in the stages it belongs to)")
+        if overrides:
+            data = _with_overrides(data, overrides, source)
+        return read_stages(data, source, base, load_problem)
     if overrides:
         data = _with_overrides(data, overrides, source)
     root = ProblemTable(data, "", source, text)

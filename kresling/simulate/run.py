@@ -18,6 +18,7 @@ from kresling.simulate.problem_keys.load import load_vector
 from kresling.simulate.problem_keys.support import held_in_words
 from kresling.simulate.progress_log import ProgressLog
 from kresling.simulate.simulation import PathState, Simulation
+from kresling.simulate.stages import StagedProblem, StagedRun, end_state
 from kresling.solvers import PathResult
 from kresling.solvers.tangent_shift import MERLIN2_SHIFT, scale_free_shift
 
@@ -91,11 +92,27 @@ def simulate(problem, *, stop=None, progress=None, stream=None, overrides=None) 
             problem if not isinstance(problem, dict) else "problem")
         lines = ProgressLog(source, "reading the problem and building its model")
     try:
-        return _simulate(load_problem(problem, overrides=overrides), stop, progress, stream,
-                         lines)
+        problem = load_problem(problem, overrides=overrides)
+        if isinstance(problem, StagedProblem):
+            return _run_stages(problem, stop, progress, lines)
+        return _simulate(problem, stop, progress, stream, lines)
     finally:
         if lines is not None:
             lines.close()
+
+
+def _run_stages(staged, stop, progress, lines) -> StagedRun:
+    """Each stage from where the one before ended, until one stops short."""
+    runs, start = [], None
+    for name, problem in staged.stages:
+        logger.info("%s: stage '%s': %s", staged.source, name, problem.analysis.method)
+        run = _simulate(problem, stop, progress, None, lines, start)
+        runs.append((name, run))
+        if not run.completed:
+            logger.warning("%s: stage '%s' stopped: %s", staged.source, name, run.message)
+            break
+        start = end_state(run, start)
+    return StagedRun(staged, runs)
 
 
 def _load_modules():
@@ -108,8 +125,9 @@ def _load_modules():
     problem_keys()
 
 
-def _simulate(problem, stop, progress, stream, lines) -> Simulation:
-    """:func:`simulate` with its progress lines running."""
+def _simulate(problem, stop, progress, stream, lines, start=None) -> Simulation:
+    """:func:`simulate` with its progress lines running; ``start`` (a
+    :class:`~kresling.simulate.start_state.StartState`): a stage's start, not the rest."""
     problem = load_problem(problem)
     if problem.preset is not None:
         logger.info("%s: material: preset %r", problem.source, problem.preset)
@@ -117,9 +135,15 @@ def _simulate(problem, stop, progress, stream, lines) -> Simulation:
         logger.info("%s: no [[support]]: holding the free sheet's rigid-body motions only, "
                     "at %s", problem.source, held_in_words(problem.held))
     pm = build_problem_model(problem)
+    if start is not None:
+        pm = start.applied_to(pm)
     method = problem.method
     if not method.follows_path:   # modes, a motion in time: a run of their own
-        return method.run(problem, pm, stop=stop)
+        return method.run(problem, pm, stop=stop, start=start)
+    if start is not None and start.loaded:
+        raise ValueError(f"{problem.source}: starts under the loads of the stages before, "
+                         "which a path cannot hold yet: give those loads in this stage, or "
+                         "follow a loaded stage with modes or a motion in time")
     model = pm.model
     analysis = problem.analysis
     vector = load_vector(problem, model.num_dofs)
@@ -180,6 +204,8 @@ def _simulate(problem, stop, progress, stream, lines) -> Simulation:
                   or writer is not None)
         common = {"tolerance": analysis.tolerance, "max_iterations": analysis.max_iterations,
                   "stop": rule if needed else None, "shift": shift}
+        if start is not None:
+            common["initial"] = start.displacement
         try:
             path = method.solve(problem, pm, vector, common, plan)
         except ValueError as error:

@@ -41,7 +41,7 @@ class Dynamic(Method):
                 "hht": f"time steps of HHT-alpha (alpha = {problem.dynamics.hht_alpha:g})",
                 "explicit": "explicit central-difference time steps"}[problem.dynamics.scheme]
 
-    def run(self, problem, pattern_model, *, stop=None):
+    def run(self, problem, pattern_model, *, stop=None, start=None):
         """The motion, ended early by the problem's monitor or by ``stop`` (which sees
         the time as the load factor)."""
         monitor, count = problem.analysis.stop, [0]
@@ -54,7 +54,7 @@ class Dynamic(Method):
                 stop(PathState(count[0], float(time), np.asarray(u).reshape(-1, 3))))
 
         run = run_dynamics(problem, pattern_model,
-                           stop=rule if monitor is not None or stop else None)
+                           stop=rule if monitor is not None or stop else None, start=start)
         if not run.path.completed:
             logger.warning("%s: the motion stopped after %d steps: %s", problem.source,
                            run.path.num_steps, run.path.message)

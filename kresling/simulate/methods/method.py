@@ -74,8 +74,9 @@ class Method:
             return {}
         return {f"u_{stop.node}_{stop.axis}": simulation.path.displacement[:, stop.dof]}
 
-    def run(self, problem, pattern_model, *, stop=None):
-        """Run a method that does not follow a path; returns its run object."""
+    def run(self, problem, pattern_model, *, stop=None, start=None):
+        """Run a method that does not follow a path; returns its run object (``start``: a
+        :class:`~kresling.simulate.start_state.StartState`, the stage before's end)."""
         raise NotImplementedError(f"method {self.name!r} follows a path")
 
 

@@ -50,8 +50,9 @@ class Modes(Method):
     def stepping(self, problem) -> str:
         return "none: the modes about one state"
 
-    def run(self, problem, pattern_model, *, stop=None):
-        return run_modes(problem, pattern_model)
+    def run(self, problem, pattern_model, *, stop=None, start=None):
+        return run_modes(problem, pattern_model,
+                         state=None if start is None else start.displacement)
 
 
 def _read_about(t):

@@ -15,6 +15,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from kresling.simulate.problem_keys import ProblemKey
 from kresling.simulate.problem_table import number, positive, raw, vector3
 
@@ -55,6 +57,15 @@ class LoadTime:
     table: tuple = ()
     amplitude: float = 0.0
     frequency_hz: float = 0.0
+
+    def factor_at(self, time: float) -> float:
+        """The factor at ``time`` [s]."""
+        if self.kind == "step":
+            return 1.0
+        if self.kind == "harmonic":
+            return float(self.amplitude * np.sin(2 * np.pi * self.frequency_hz * time))
+        times, factors = zip(*self.for_solver())
+        return float(np.interp(time, times, factors))
 
     def for_solver(self):
         """The time function as :func:`kresling.solvers.solve_dynamics` takes a load's."""
