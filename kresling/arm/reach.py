@@ -206,8 +206,14 @@ def reach(target, *, configurations=None, prefer="travel", tolerance=REACH_TOLER
     if configurations is None:
         configurations = all_configurations(modules)
     else:
+        given = (list(configurations) if hasattr(configurations, "__iter__")
+                 and not isinstance(configurations, (str, bytes)) else [])
+        if not given:
+            raise ValueError(f"configurations = {show(configurations)} is invalid: must be "
+                             "None (every configuration) or a non-empty list of "
+                             "configurations such as ['101', '111']")
         configurations = ["".join(str(s) for s in parse_configuration(c, modules))
-                          for c in configurations]
+                          for c in given]
     best, candidates = None, {}
     # Pulling only shortens an arm: one whose built tip is nearer the base than the target
     # cannot reach it (unless none is taller: then the tallest gives the nearest point). A

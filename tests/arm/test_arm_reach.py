@@ -119,3 +119,10 @@ def test_the_reach_view_shows_the_arm_moving_to_the_target(tmp_path, capsys):
     assert main(["arm", "--reach", "10", "-5", "320", "--closed-loop", "--view",
                  str(page)]) == 2
     assert "--view draws the planned reach" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("configurations", ["", [], float("nan"), "111"])
+def test_configurations_that_are_no_list_of_configurations_are_refused(configurations):
+    # (found by the fuzz target: an empty string fell through to an IndexError.)
+    with pytest.raises(ValueError, match=r"configurations = .* is invalid: must be None"):
+        reach([0.0, 0.0, 200.0], configurations=configurations)
