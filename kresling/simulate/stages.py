@@ -142,8 +142,9 @@ class StagedRun:
 
     @property
     def path(self):
-        """The last run stage's path (the one that stopped, if one did)."""
-        return next(run.path for _, run in reversed(self.runs) if hasattr(run, "path"))
+        """The last path stage's path (the one that stopped, if one did); None when every
+        stage is a modes stage."""
+        return next((run.path for _, run in reversed(self.runs) if hasattr(run, "path")), None)
 
     @property
     def message(self) -> str:

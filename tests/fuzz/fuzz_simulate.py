@@ -98,6 +98,18 @@ BASES = [
      "actuation": [{"edges": [[1, 4]], "fold_angle_deg": 178.0}],
      "contact": {"distance": 0.1, "stiffness": "auto", "self": True},
      "analysis": {"method": "fold", "steps": 3}},
+    # A fold, its modes, then shaken: stages from where the one before ended.
+    {"pattern": dict(SHEET),
+     "material": {"calibration": "manual", "bar_modulus": 1e3, "bar_area": 1.0,
+                  "fold_stiffness": 0.05},
+     "support": [{"nodes": [0, 1, 3], "fix": "xyz"}],
+     "mass": [{"nodes": [2, 4, 5], "mass": 1e-6}],
+     "stage": [{"name": "fold", "method": "fold", "steps": 3,
+                "actuation": [{"edges": [[1, 4]], "fold_angle_deg": 45.0}]},
+               {"name": "modes", "method": "modes", "modes": 2},
+               {"method": "dynamic", "dynamics": {"time_step": 1e-4, "duration": 5e-4},
+                "load": [{"node": 5, "force": [0.0, 0.0, 1e-4],
+                          "time": {"harmonic": [1.0, 50.0]}}]}]},
     # The history differentiated by a material key, a column and the shape.
     {"pattern": dict(SHEET, centre="mean"),
      "material": {"calibration": "auto", "E": 1000.0, "nu": 0.3, "thickness": 0.25},
@@ -118,7 +130,7 @@ KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices"
         "point", "normal", "self", "unit", "scale", "frame", "assignments", "dynamics",
         "scheme", "time_step", "duration", "damping", "gravity", "hht_alpha", "record_every",
         "time", "ramp_time", "alpha", "beta", "load_factor", "tangent", "preset", "fold_percent",
-        "snap_tolerance", "formats", "sensitivity", "parameters", "unknown_key"]
+        "snap_tolerance", "formats", "sensitivity", "parameters", "stage", "name", "unknown_key"]
 values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_001, 10**6]),
                    st.sampled_from(
     ["xyz", "z", "w", "N5B8", "N4B5", "auto", "manual", "linear", "mgdcm", "force_control",
@@ -138,7 +150,10 @@ values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_0
      "projected", "adaptive", {"distance": 0.1, "self": True, "tangent": "exact"},
      {"distance": 0.1, "self": True, "tangent": "adaptive"}, ["E"], ["thickness"],
      ["vertices", "vertices"], ["bars.modulus[999]"], ["springs.anchor"], [""],
-     {"parameters": ["fold_stiffness"]}]))
+     {"parameters": ["fold_stiffness"]}, "stage 2", "", [{"method": "modes"}],
+     [{"method": "force_control", "steps": 1, "load": [{"node": 2, "force": [0, 0, 1e-3]}]},
+      {"method": "force_control", "steps": 1, "load": [{"node": 2, "force": [0, 0, 1e-3]}]}],
+     [{"name": "a", "method": "fold"}, {"name": "a", "method": "fold"}]]))
 
 
 def mutate(problem, edits):
@@ -182,6 +197,13 @@ def run(problem):
         event("ValueError")
         return
     event("completed" if simulation.completed else "stopped")
+    if hasattr(simulation, "runs"):   # stages: each run as a run of its own, the files of all
+        for _, stage in simulation.runs:
+            if hasattr(stage, "path"):
+                path_ok(stage.path)
+        with tempfile.TemporaryDirectory() as folder:
+            assert simulation.write(folder, view=False)["history"].is_file()
+        return
     if not hasattr(simulation, "path"):  # a modes run: frequencies and shapes, no path
         finite(simulation.modes.frequencies_hz, simulation.modes.shapes, simulation.masses)
         with tempfile.TemporaryDirectory() as folder:
@@ -215,8 +237,11 @@ def test_load_problem_from_dicts(base, edits):
     except ValueError as error:
         named_key(error)
         return
-    assert loaded.analysis.method in ("displacement_control", "force_control", "mgdcm", "fold",
-                                      "modes", "dynamic")
+    problems = ([stage for _, stage in loaded.stages] if hasattr(loaded, "stages")
+                else [loaded])
+    for one in problems:
+        assert one.analysis.method in ("displacement_control", "force_control", "mgdcm", "fold",
+                                       "modes", "dynamic")
 
 
 @fuzz(40)
