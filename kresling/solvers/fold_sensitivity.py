@@ -60,17 +60,9 @@ def fold_model_at(model, stages, load_factor: float):
     """The model as a fold has made it at ``load_factor`` (stage k runs over (k - 1, k]):
     its driven hinges at the rest angles the stages have reached there, the rest as built.
     The equilibrium of a fold's step is this model's; its tangent, energies and vibration
-    modes are this model's at the step's displacement.
-
-    Parameters
-    ----------
-    model : kresling.model.Model
-        The model the fold started from.
-    stages : sequence of (hinges, targets)
-        As given to :func:`~kresling.solvers.solve_fold`.
-    load_factor : float
-        The step's load factor (``path.load_factor[k]``).
-    """
+    modes are this model's at the step's displacement. ``model`` is the one the fold
+    started from, ``stages`` as given to :func:`~kresling.solvers.solve_fold`,
+    ``load_factor`` the step's (``path.load_factor[k]``)."""
     rest, _, _ = _rest_angles_at(np.asarray(model.hinge_rest_angle, dtype=float),
                                  _stages(stages), float(load_factor))
     return with_parameter(model, "hinges.rest_angle", rest)
