@@ -1,5 +1,16 @@
 """Small models with closed-form answers, shared by the tests of several layers."""
 
+#: A 20 mm square creased along its diagonal 0-2, the triangle 0-1-2 held, 1 g on the free
+#: corner 3: a problem's shared tables (the panel turns about the crease, a rotational
+#: spring of 0.05 N*mm/rad per mm over 20 sqrt(2) mm, node 3 at 20 / sqrt(2) mm from it).
+CREASED_SQUARE = {
+    "pattern": {"vertices": [[0.0, 0.0, 0.0], [20.0, 0.0, 0.0], [20.0, 20.0, 0.0],
+                             [0.0, 20.0, 0.0]], "panels": [[0, 1, 2], [0, 2, 3]]},
+    "material": {"calibration": "manual", "bar_modulus": 1e3, "bar_area": 1.0,
+                 "fold_stiffness": 0.05},
+    "support": [{"nodes": [0, 1, 2], "fix": "xyz"}],
+    "mass": [{"node": 3, "mass": 1e-6}]}
+
 import numpy as np
 
 from kresling.model import Model

@@ -94,18 +94,23 @@ def imports(path: Path):
             for alias in node.names:
                 yield node.lineno, alias.name, _layer_of_name(alias.name.split("."))
         elif isinstance(node, ast.ImportFrom):
-            if node.level:
-                base = _package_of(path)
-                base = base[:len(base) - (node.level - 1)]
-                module = base + (node.module.split(".") if node.module else [])
-            else:
-                module = node.module.split(".")
+            module = _from_module(path, node)
             for alias in node.names:
                 if module == ["kresling"] and _is_module(alias.name):
                     target = ["kresling", alias.name]
                 else:
                     target = module
                 yield node.lineno, ".".join(module + [alias.name]), _layer_of_name(target)
+
+
+def _from_module(path: Path, node: ast.ImportFrom) -> list:
+    """The dotted parts of the module ``from ... import`` reads, a relative one resolved
+    from the file's package."""
+    if node.level:
+        base = _package_of(path)
+        return base[:len(base) - (node.level - 1)] + (node.module.split(".") if node.module
+                                                       else [])
+    return node.module.split(".")
 
 
 def _layer_of_name(parts: list):
@@ -355,12 +360,7 @@ def private_imports() -> list:
         for node in ast.walk(tree):
             if not isinstance(node, ast.ImportFrom):
                 continue
-            if node.level:
-                base = _package_of(path)
-                module = base[:len(base) - (node.level - 1)] + (
-                    node.module.split(".") if node.module else [])
-            else:
-                module = (node.module or "").split(".")
+            module = _from_module(path, node)
             if module[0] != "kresling":
                 continue
             for alias in node.names:

@@ -7,18 +7,13 @@ import json
 import numpy as np
 import pytest
 
+from small_models import CREASED_SQUARE
 from kresling.analyses.modes import vibration_modes
 from kresling.assembly import assemble
 from kresling.simulate import simulate
 from kresling.simulate.problem_keys.mass import problem_masses
 
-FLAT = [[0.0, 0.0, 0.0], [20.0, 0.0, 0.0], [20.0, 20.0, 0.0], [0.0, 20.0, 0.0]]
-SHARED = {
-    "pattern": {"vertices": FLAT, "panels": [[0, 1, 2], [0, 2, 3]]},
-    "material": {"calibration": "manual", "bar_modulus": 1e3, "bar_area": 1.0,
-                 "fold_stiffness": 0.05},
-    "support": [{"nodes": [0, 1, 2], "fix": "xyz"}],
-    "mass": [{"node": 3, "mass": 1e-6}]}
+SHARED = CREASED_SQUARE
 FOLD = {"name": "fold", "method": "fold", "steps": 10, "tolerance": 1e-12,
         "actuation": [{"edges": [[0, 2]], "fold_angle_deg": 90.0}]}
 PUSH = {"name": "push", "method": "force_control", "steps": 4, "tolerance": 1e-12,

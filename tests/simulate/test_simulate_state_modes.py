@@ -5,18 +5,14 @@ shape."""
 import numpy as np
 import pytest
 
+from small_models import CREASED_SQUARE
 from kresling.analyses.modes import vibration_modes
 from kresling.simulate import build_problem_model, load_problem, modes_at, simulate
 from kresling.simulate.problem_keys.mass import problem_masses
 
-FLAT = [[0.0, 0.0, 0.0], [20.0, 0.0, 0.0], [20.0, 20.0, 0.0], [0.0, 20.0, 0.0]]
-# One crease (the diagonal 0-2), one triangle held whole, a mass on the free corner.
+# The crease folded to 90 deg.
 SHEET = {
-    "pattern": {"vertices": FLAT, "panels": [[0, 1, 2], [0, 2, 3]]},
-    "material": {"calibration": "manual", "bar_modulus": 1e3, "bar_area": 1.0,
-                 "fold_stiffness": 0.05},
-    "support": [{"nodes": [0, 1, 2], "fix": "xyz"}],
-    "mass": [{"node": 3, "mass": 1e-6}],
+    **CREASED_SQUARE,
     "actuation": [{"edges": [[0, 2]], "fold_angle_deg": 90.0}],
     "analysis": {"method": "fold", "steps": 10, "tolerance": 1e-12}}
 
