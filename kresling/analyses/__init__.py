@@ -12,17 +12,22 @@ snap-through paths with every node at every increment, for views). The report's 
 :mod:`kresling.report.sections.analyses`.
 """
 
+from kresling._lazy import lazy_names
 from kresling.analyses.bending import (PROTOCOLS, BendingComparison, BendingResult, BendingTester,
                                        bending_stiffness, bending_test)
-from kresling.analyses.design_sensitivity import (DESIGN_VARIABLES, GRADIENT_QUANTITIES,
-                                               DesignGradient, bending_gradient, design_gradient,
-                                               snap_through_gradient)
+# facet_angle and snap_through are also modules' names: imported here, not when first used.
 from kresling.analyses.facet_angle import facet_angle, facet_angle_ratio, facet_angles
-from kresling.analyses.linear_bending import LinearBendingTester, linear_bending_stiffness
-from kresling.analyses.orientation import OrientationStudy, orientation_study
 from kresling.analyses.snap_through import SnapThroughResult, SnapThroughTester, snap_through
-from kresling.analyses.stiffness_fit import (BendingRecord, StiffnessFit, fit_bending_stiffnesses,
-                                             fit_specimen_stiffness)
+
+# Imported when first used (``kresling bend`` needs none of them).
+__getattr__, __dir__ = lazy_names(__name__, {
+    **dict.fromkeys(["DESIGN_VARIABLES", "GRADIENT_QUANTITIES", "DesignGradient",
+                     "bending_gradient", "design_gradient", "snap_through_gradient"],
+                    "design_sensitivity"),
+    **dict.fromkeys(["LinearBendingTester", "linear_bending_stiffness"], "linear_bending"),
+    **dict.fromkeys(["OrientationStudy", "orientation_study"], "orientation"),
+    **dict.fromkeys(["BendingRecord", "StiffnessFit", "fit_bending_stiffnesses",
+                     "fit_specimen_stiffness"], "stiffness_fit")})
 
 __all__ = ["PROTOCOLS", "BendingResult", "BendingComparison", "BendingTester", "bending_test",
            "bending_stiffness", "LinearBendingTester", "linear_bending_stiffness",

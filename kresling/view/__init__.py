@@ -34,7 +34,7 @@ Examples
 'data'
 """
 
-from importlib import import_module
+from kresling._lazy import lazy_names
 
 __all__ = ["view_model", "view_path", "view_bending", "view_snap_through", "view_fold",
            "write_html", "write_path_page", "check_writable", "FIELDS", "FAMILY_STYLES",
@@ -48,14 +48,4 @@ _HOME = {"ExplorerWidget": "explorer_widget", "FIELDS": "fields", "element_energ
          "view_bending": "specimens", "view_snap_through": "specimens",
          "FAMILY_STYLES": "surface"}
 
-
-def __getattr__(name):
-    if name not in _HOME:
-        raise AttributeError(f"module 'kresling.view' has no attribute {name!r}")
-    value = getattr(import_module(f"kresling.view.{_HOME[name]}"), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__():
-    return sorted(set(globals()) | set(__all__))
+__getattr__, __dir__ = lazy_names(__name__, _HOME)
