@@ -170,7 +170,8 @@ def load_problem(problem, *, overrides=None, source=None):
     Returns
     -------
     Problem, or StagedProblem
-        A :class:`~kresling.simulate.stages.StagedProblem` for a problem in ``[[stage]]``s.
+        A :class:`~kresling.simulate.stages.StagedProblem` for a problem in stages
+        (``[[stage]]``).
 
     Raises
     ------
