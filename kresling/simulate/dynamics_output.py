@@ -105,7 +105,7 @@ def run_dynamics(problem, pattern_model, *, stop=None, start=None) -> DynamicRun
 
     ``stop(time, displacement) -> bool`` (optional) ends the motion early; ``start`` (a
     :class:`~kresling.simulate.start_state.StartState`) is where the stage before ended:
-    the motion starts from its displacement and velocity, its loads held throughout."""
+    the motion starts from its displacement and velocity (its loads are the model's)."""
     masses = problem_masses(problem, pattern_model)
     model, d = pattern_model.model, problem.dynamics
     loads = []
@@ -115,10 +115,8 @@ def run_dynamics(problem, pattern_model, *, stop=None, start=None) -> DynamicRun
             vector[3 * node:3 * node + 3] += load.vector
         loads.append((vector, None if load.time is None else load.time.for_solver()))
     initial = velocity = None
-    if start is not None:
+    if start is not None:   # (its loads are held by the model's forces family)
         initial, velocity = start.displacement, start.velocity
-        if start.loaded:
-            loads.append((start.forces, None))   # held: a factor of 1 at every time
     try:
         history = solve_dynamics(
             model, masses, d.time_step, d.duration, gravity=d.gravity, loads=loads,

@@ -140,10 +140,6 @@ def _simulate(problem, stop, progress, stream, lines, start=None) -> Simulation:
     method = problem.method
     if not method.follows_path:   # modes, a motion in time: a run of their own
         return method.run(problem, pm, stop=stop, start=start)
-    if start is not None and start.loaded:
-        raise ValueError(f"{problem.source}: starts under the loads of the stages before, "
-                         "which a path cannot hold yet: give those loads in this stage, or "
-                         "follow a loaded stage with modes or a motion in time")
     model = pm.model
     analysis = problem.analysis
     vector = load_vector(problem, model.num_dofs)

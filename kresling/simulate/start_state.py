@@ -40,6 +40,13 @@ class StartState:
         return bool(np.any(self.forces))
 
     def applied_to(self, pattern_model):
-        """``pattern_model`` with its hinges at the rest angles this state holds."""
+        """``pattern_model`` with its hinges at the rest angles this state holds, and its
+        loads held on it (the model's ``forces`` family: constant forces, whatever the
+        stage's own method applies besides)."""
         model = with_parameter(pattern_model.model, "hinges.rest_angle", self.rest_angle)
+        if self.loaded:
+            per_node = self.forces.reshape(-1, 3)
+            nodes = np.flatnonzero(np.any(per_node != 0.0, axis=1))
+            model = model.with_families({"forces": {"nodes": nodes.astype(np.int64),
+                                                    "force": per_node[nodes]}})
         return dataclasses.replace(pattern_model, model=model)

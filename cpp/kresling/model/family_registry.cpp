@@ -5,6 +5,7 @@
 #include "kresling/model/bar_family.hpp"
 #include "kresling/model/cable_family.hpp"
 #include "kresling/model/face_angle_family.hpp"
+#include "kresling/model/force_family.hpp"
 #include "kresling/model/hinge_family.hpp"
 #include "kresling/model/plane_contact_family.hpp"
 #include "kresling/model/self_contact_family.hpp"
@@ -26,6 +27,7 @@ const std::vector<FamilyKind>& family_kinds() {
        "panels (triangles) kept off each other by a barrier"},
       {"face_angles", &FaceAngleFamily::from_table,
        "springs on the interior angles of triangles (the panels' in-plane shear)"},
+      {"forces", &ForceFamily::from_table, "forces held at nodes (dead loads)"},
   };
   return kinds;
 }
