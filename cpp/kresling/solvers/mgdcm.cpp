@@ -85,6 +85,31 @@ std::string stall_message(int increment, double lambda, double floor, double tol
          "; a tolerance of " + short_number(10.0 * floor) + " mm or more clears this floor";
 }
 
+// A correction orthogonal to the predictor, the load factor's change (returned) solved
+// with it: du = dl dup + dur, from the load and residual directions dup and dur.
+double orthogonal_correction(const TangentSolver& solver, const assembly::Assembler& assembler,
+                             const VectorX& F, const VectorX& force, double lambda,
+                             const VectorX& predictor, const VectorX& dup, VectorX& du) {
+  const VectorX dur = solver.solve(VectorX(lambda * F - gather_rows(assembler, force)));
+  const double dl = -predictor.dot(dur) / predictor.dot(dup);
+  du = dl * dup + dur;
+  return dl;
+}
+
+// The internal force and tangent at u assembled and the tangent factorised (its stability
+// into `outcome`); false, saying so, when it is singular.
+bool factorize_at(assembly::Assembler& assembler, TangentSolver& solver, const VectorX& u,
+                  VectorX& force, NewtonOutcome& outcome) {
+  assembler.assemble(u, force, /*with_matrix=*/true);
+  const FactorizeInfo info = factorize_tangent(assembler, solver, u, force);
+  if (!info.ok) {
+    outcome.failure = "the tangent stiffness is singular";
+    return false;
+  }
+  outcome.negative_eigenvalues = info.negative_eigenvalues;
+  return true;
+}
+
 }  // namespace
 
 MgdcmControl::MgdcmControl(const model::Model& model, VectorX forces,
@@ -126,26 +151,16 @@ NewtonOutcome MgdcmControl::correct(Increment& increment, assembly::Assembler& a
   while (outcome_.iterations < limit) {
     check_interrupt();
     ++outcome_.iterations;
-    assembler.assemble(u, force, /*with_matrix=*/true);
-    const FactorizeInfo info = factorize_tangent(assembler, solver, u, force);
-    if (!info.ok) {
-      outcome_.failure = "the tangent stiffness is singular";
-      break;
-    }
-    outcome_.negative_eigenvalues = info.negative_eigenvalues;
+    if (!factorize_at(assembler, solver, u, force, outcome_)) break;
     const VectorX dup = solver.solve(F);
     double dl;
     VectorX du;
-    if (outcome_.iterations == 1) {
-      // The predictor: the load increment along the path's direction.
+    if (outcome_.iterations == 1) {  // the predictor: along the path's direction
       dl = first_increment(dup, increment.size);
       trial_predictor_ = dup;
       du = dl * dup;
     } else {
-      // Corrections orthogonal to the predictor: the load factor solved with them.
-      const VectorX dur = solver.solve(VectorX(lambda * F - gather_rows(assembler, force)));
-      dl = -trial_predictor_.dot(dur) / trial_predictor_.dot(dup);
-      du = dl * dup + dur;
+      dl = orthogonal_correction(solver, assembler, F, force, lambda, trial_predictor_, dup, du);
     }
     if (!du.allFinite() || !std::isfinite(dl)) {
       outcome_.failure = "the iteration produced NaN";
