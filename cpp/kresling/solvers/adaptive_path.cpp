@@ -106,6 +106,7 @@ class AdaptiveFollower {
   int predictions_ = 0;           // aimed location steps towards the present event
   int next_ = 1;                  // the next sample to record
   std::string first_failure_;     // why the increment from a_ failed at full size
+  double first_length_ = 0.0;     // that size
 };
 
 AdaptiveFollower::AdaptiveFollower(PathControl& control, assembly::Assembler& assembler,
@@ -376,16 +377,19 @@ bool AdaptiveFollower::solved_sample(PathPoint& b, double ts, PathStep& step) {
 // A failed increment is halved; false when it falls below the smallest allowed, with the
 // path's message.
 bool AdaptiveFollower::halve(const PathPoint& b, double length) {
-  if (first_failure_.empty()) first_failure_ = why(b.outcome);
+  if (first_failure_.empty()) {
+    first_failure_ = why(b.outcome);
+    first_length_ = length;
+  }
   h_ = 0.5 * length;
   event_end_ = kInfinity;
   if (!(h_ < smallest_)) return true;
   result_.failed_increment = result_.attempted_increments;
   result_.message = "increment " + std::to_string(next_) + " (of " + std::to_string(steps_) +
-                    ", at " + format_number(a_.t) + " of " + control_.parameter_name() +
+                    ", at " + format_rounded(a_.t) + " of " + control_.parameter_name() +
                     ") failed: the adaptive increment fell below 1/2^" +
-                    std::to_string(options_.max_bisections) +
-                    " of a sample spacing; at full size: " + first_failure_;
+                    std::to_string(options_.max_bisections) + " of a sample spacing; at full size: " +
+                    failure_at_sizes(first_failure_, length, why(b.outcome), length < first_length_);
   return false;
 }
 

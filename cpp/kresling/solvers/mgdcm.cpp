@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -69,20 +67,14 @@ void check_options(const model::Model& model, const MgdcmOptions& options) {
   }
 }
 
-std::string short_number(double value) {
-  std::ostringstream out;
-  out << std::setprecision(3) << value;
-  return out.str();
-}
-
 // Why a stalled increment cannot go on, with the floor its corrections reached.
 std::string stall_message(int increment, double lambda, double floor, double tolerance,
                           const std::string& cause) {
   return "MGDCM increment " + std::to_string(increment) + " (from load factor " +
-         short_number(lambda) + "): Newton's corrections stall at " + short_number(floor) +
-         " mm, above the tolerance " + short_number(tolerance) +
+         format_rounded(lambda, 3) + "): Newton's corrections stall at " + format_rounded(floor, 3) +
+         " mm, above the tolerance " + format_rounded(tolerance, 3) +
          " mm (rounding near a singular tangent: a bifurcation or limit point), and " + cause +
-         "; a tolerance of " + short_number(10.0 * floor) + " mm or more clears this floor";
+         "; a tolerance of " + format_rounded(10.0 * floor, 3) + " mm or more clears this floor";
 }
 
 // A correction orthogonal to the predictor, the load factor's change (returned) solved
@@ -120,7 +112,7 @@ void MgdcmControl::apply(double t, VectorX&, VectorX& external) { external = t *
 
 std::string MgdcmControl::failure_message(int k, int, double t, int,
                                           const std::string& reason) const {
-  return "MGDCM increment " + std::to_string(k) + " (from load factor " + short_number(t) +
+  return "MGDCM increment " + std::to_string(k) + " (from load factor " + format_rounded(t, 3) +
          ") failed: " + reason;
 }
 
@@ -239,7 +231,7 @@ bool MgdcmSteps::rejected(const Increment&, const std::string& reason) {
     const double longer = std::abs(step_factor_) * kJumpFactor;
     std::string cause;
     if (jumps_ == kMaxJumps) {
-      cause = "steps up to " + short_number(std::pow(kJumpFactor, kMaxJumps)) +
+      cause = "steps up to " + format_rounded(std::pow(kJumpFactor, kMaxJumps), 3) +
               " times longer stall too";
     } else if (longer > options_.max_step_factor) {
       cause = "a longer step would exceed max_step_factor (" +

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "kresling/core/check.hpp"
 #include "kresling/core/interrupt.hpp"
 
 namespace kresling::solvers {
@@ -129,7 +130,7 @@ bool newton_step(assembly::Assembler& assembler, TangentSolver& solver, VectorX&
   // The 1e-8 diagonal shift keeps a zero-stiffness mode factorisable; it shows up as a
   // correction far larger than the structure.
   if (du.norm() > 1e6 * mechanism_scale(assembler)) {
-    out.failure = "the Newton correction is unbounded (" + std::to_string(du.norm()) +
+    out.failure = "the Newton correction is unbounded (" + format_rounded(du.norm(), 3) +
                   " mm): the free DOFs form a mechanism with no stiffness";
     return false;
   }
