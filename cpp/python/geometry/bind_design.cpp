@@ -1,15 +1,6 @@
-#include <pybind11/numpy.h>
-#include <pybind11/pybind11.h>
-#include <pybind11/stl.h>
-
-#include "bindings.hpp"
+// kresling._core.geometry: what kresling/geometry/design.hpp declares.
+#include "geometry/geometry_bindings.hpp"
 #include "kresling/geometry/design.hpp"
-#include "kresling/geometry/design_derivative.hpp"
-#include "kresling/geometry/design_table.hpp"
-
-namespace py = pybind11;
-using kresling::geometry::Design;
-using kresling::geometry::State;
 
 namespace kresling::python {
 
@@ -37,7 +28,7 @@ State to_state(int state) {
 
 }  // namespace
 
-void bind_geometry(py::module_& m) {
+void bind_design(py::module_& m) {
   py::class_<Design>(m, "Design")
       .def(py::init<int, double, double, double, int>(), py::arg("n"), py::arg("R"),
            py::arg("lam"), py::arg("Lc"), py::arg("chirality") = 1)
@@ -67,52 +58,11 @@ void bind_geometry(py::module_& m) {
         return map_alpha(d, a, &Design::facet_angle_at);
       });
 
-  m.def(
-      "state_derivative",
-      [](const Design& design, int state, const std::string& variable) {
-        if (state != 0 && state != 1) {
-          throw std::invalid_argument("state = " + std::to_string(state) +
-                                      " is invalid: must be 0 (contracted) or 1 (extended)");
-        }
-        const auto d = kresling::geometry::state_derivative(
-            design, static_cast<kresling::geometry::State>(state),
-            kresling::geometry::design_variable(variable));
-        return py::make_tuple(d.height, d.twist);
-      },
-      py::arg("design"), py::arg("state"), py::arg("variable"),
-      "(d height/dv [mm per unit], d twist/dv [rad per unit]) of a stable state by lam, Lc or R");
-
   py::tuple names(kresling::geometry::kDerivedNames.size());
   for (std::size_t k = 0; k < kresling::geometry::kDerivedNames.size(); ++k) {
     names[k] = kresling::geometry::kDerivedNames[k];
   }
   m.attr("DERIVED_NAMES") = names;
-
-  m.def(
-      "derive_table",
-      [](py::array_t<int, py::array::c_style | py::array::forcecast> n,
-         py::array_t<double, py::array::c_style | py::array::forcecast> R,
-         py::array_t<double, py::array::c_style | py::array::forcecast> lam,
-         py::array_t<double, py::array::c_style | py::array::forcecast> Lc) {
-        const py::ssize_t count = n.size();
-        if (R.size() != count || lam.size() != count || Lc.size() != count) {
-          throw std::invalid_argument("derive_table: n, R, lam and Lc must have equal sizes");
-        }
-        const auto width = static_cast<py::ssize_t>(kresling::geometry::kDerivedNames.size());
-        py::array_t<double> out({count, width});
-        const int* pn = n.data();
-        const double *pR = R.data(), *plam = lam.data(), *pLc = Lc.data();
-        double* po = out.mutable_data();
-        {
-          py::gil_scoped_release release;
-          kresling::geometry::derive_table(pn, pR, plam, pLc, static_cast<std::size_t>(count),
-                                           po);
-        }
-        return out;
-      },
-      py::arg("n"), py::arg("R"), py::arg("lam"), py::arg("Lc"),
-      "Derived quantities of many designs: 1-D inputs of equal length -> (count, "
-      "len(DERIVED_NAMES)) array.");
 }
 
 }  // namespace kresling::python
