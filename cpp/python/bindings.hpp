@@ -46,6 +46,8 @@ void bind_dihedral(pybind11::module_& m);
 void bind_corner_angle(pybind11::module_& m);
 void bind_bar(pybind11::module_& m);
 void bind_hinge(pybind11::module_& m);
+
+// kresling._core.contact
 void bind_contact_distance(pybind11::module_& m);
 void bind_contact_mollifier(pybind11::module_& m);
 void bind_contact_barrier(pybind11::module_& m);

@@ -24,12 +24,17 @@ void add_elements(py::module_& m) {
   kresling::python::bind_corner_angle(elements);
   kresling::python::bind_bar(elements);
   kresling::python::bind_hinge(elements);
-  kresling::python::bind_contact_distance(elements);
-  kresling::python::bind_contact_mollifier(elements);
-  kresling::python::bind_contact_barrier(elements);
-  kresling::python::bind_contact_barrier_stiffness(elements);
-  kresling::python::bind_contact_ccd(elements);
-  kresling::python::bind_contact_broad_phase(elements);
+}
+
+void add_contact(py::module_& m) {
+  auto contact = m.def_submodule(
+      "contact", "Contact kernels: distances, barriers, collision detection, the broad phase");
+  kresling::python::bind_contact_distance(contact);
+  kresling::python::bind_contact_mollifier(contact);
+  kresling::python::bind_contact_barrier(contact);
+  kresling::python::bind_contact_barrier_stiffness(contact);
+  kresling::python::bind_contact_ccd(contact);
+  kresling::python::bind_contact_broad_phase(contact);
 }
 
 void add_model(py::module_& m) {
@@ -105,6 +110,7 @@ PYBIND11_MODULE(_core, m) {
   // One submodule per folder of cpp/kresling (the folder `core` has nothing to bind).
   add_geometry(m);
   add_elements(m);
+  add_contact(m);
   add_model(m);
   add_assembly(m);
   add_solvers(m);

@@ -15,7 +15,7 @@
 #include <Eigen/Geometry>
 
 #include "kresling/core/types.hpp"
-#include "kresling/elements/contact_distance.hpp"
+#include "kresling/contact/contact_distance.hpp"
 
 namespace kresling::contact_test {
 
@@ -47,20 +47,20 @@ inline std::array<Vector3, 4> unstack(const Vector12& v) {
 // Squared distances of four stacked nodes (p, t0, t1, t2) and (ea0, ea1, eb0, eb1).
 inline double point_triangle_distance2(const Vector12& y) {
   const auto v = unstack(y);
-  return elements::point_triangle_distance(v[0], v[1], v[2], v[3], false).value;
+  return contact::point_triangle_distance(v[0], v[1], v[2], v[3], false).value;
 }
 
 inline double edge_edge_distance2(const Vector12& y) {
   const auto v = unstack(y);
-  return elements::edge_edge_distance(v[0], v[1], v[2], v[3], false).value;
+  return contact::edge_edge_distance(v[0], v[1], v[2], v[3], false).value;
 }
 
 // Central differences of f (returning ScalarDerivatives<N>) about x with step h: the
 // gradient from the values and the Hessian from the gradients.
 template <int N, typename F>
-elements::ScalarDerivatives<N> finite_differences(F&& f, const Eigen::Matrix<double, N, 1>& x,
+contact::ScalarDerivatives<N> finite_differences(F&& f, const Eigen::Matrix<double, N, 1>& x,
                                                   double h) {
-  elements::ScalarDerivatives<N> fd;
+  contact::ScalarDerivatives<N> fd;
   fd.value = f(x).value;
   for (int k = 0; k < N; ++k) {
     Eigen::Matrix<double, N, 1> p = x, q = x;

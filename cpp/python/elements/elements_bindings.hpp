@@ -14,12 +14,6 @@
 #include "bindings.hpp"
 #include "kresling/core/check.hpp"
 #include "kresling/elements/bar.hpp"
-#include "kresling/elements/contact_barrier.hpp"
-#include "kresling/elements/contact_barrier_stiffness.hpp"
-#include "kresling/elements/contact_broad_phase.hpp"
-#include "kresling/elements/contact_ccd.hpp"
-#include "kresling/elements/contact_distance.hpp"
-#include "kresling/elements/contact_mollifier.hpp"
 #include "kresling/elements/corner_angle.hpp"
 #include "kresling/elements/dihedral.hpp"
 #include "kresling/elements/hinge.hpp"
@@ -28,20 +22,3 @@
 
 namespace py = pybind11;
 using namespace kresling::elements;
-
-namespace kresling::python {
-
-namespace {
-
-// The contact kernels take positions as they are; from Python, check them first.
-void require_finite_points(std::initializer_list<std::pair<const char*, const Vector3*>> points) {
-  for (const auto& [name, p] : points) {
-    if (!p->allFinite()) {
-      throw std::invalid_argument(std::string(name) + ": every coordinate must be finite");
-    }
-  }
-}
-
-}  // namespace
-
-}  // namespace kresling::python

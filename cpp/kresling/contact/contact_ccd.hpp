@@ -19,7 +19,7 @@
 
 #include "kresling/core/types.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 /// How a collision check runs.
 struct CcdOptions {
@@ -66,4 +66,4 @@ TimeOfImpact point_plane_ccd(const Vector3& p_start, const Vector3& p_end,
 /// Throw std::invalid_argument naming the field unless the options are in their ranges.
 void check_ccd_options(const CcdOptions& options);
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

@@ -23,7 +23,7 @@
 
 #include "kresling/core/types.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 /// Triangles as rows of three node indices.
 using TriangleMatrix = Eigen::Matrix<Index, Eigen::Dynamic, 3, Eigen::RowMajor>;
@@ -65,4 +65,4 @@ void check_contact_mesh(const Eigen::Ref<const NodeMatrix>& nodes,
                         const Eigen::Ref<const TriangleMatrix>& triangles,
                         const Eigen::Ref<const EdgeMatrix>& edges, double distance);
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

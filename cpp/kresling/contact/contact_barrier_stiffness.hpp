@@ -23,7 +23,7 @@
 
 #include "kresling/core/types.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 /// The initial stiffness and the bounds it was clamped to [energy / length^4].
 struct BarrierStiffness {
@@ -41,4 +41,4 @@ BarrierStiffness initial_barrier_stiffness(double bbox_diagonal, double d_hat,
                                            const Eigen::Ref<const VectorX>& barrier_gradient,
                                            double min_stiffness_scale = 1e11);
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

@@ -1,12 +1,12 @@
 // A bounding-volume hierarchy of axis-aligned boxes (contact_box_tree.hpp).
 
-#include "kresling/elements/contact_box_tree.hpp"
+#include "kresling/contact/contact_box_tree.hpp"
 
 #include <algorithm>
 #include <limits>
 #include <numeric>
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 namespace {
 
@@ -69,4 +69,4 @@ Index BoxTree::build(Index begin, Index end, const std::vector<Vector3>& centres
   return id;
 }
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

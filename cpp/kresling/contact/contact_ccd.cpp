@@ -1,15 +1,15 @@
 // Continuous collision detection along a linear step (contact_ccd.hpp).
 
-#include "kresling/elements/contact_ccd.hpp"
+#include "kresling/contact/contact_ccd.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
 #include "kresling/core/check.hpp"
-#include "kresling/elements/contact_distance.hpp"
+#include "kresling/contact/contact_distance.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 namespace {
 
@@ -118,4 +118,4 @@ void check_ccd_options(const CcdOptions& options) {
   require_integer_in("max_iterations", options.max_iterations, 1, 1000000000);
 }
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

@@ -1,15 +1,15 @@
 // IPC's initial barrier stiffness (contact_barrier_stiffness.hpp).
 
-#include "kresling/elements/contact_barrier_stiffness.hpp"
+#include "kresling/contact/contact_barrier_stiffness.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
 #include "kresling/core/check.hpp"
-#include "kresling/elements/contact_barrier.hpp"
+#include "kresling/contact/contact_barrier.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 BarrierStiffness initial_barrier_stiffness(double bbox_diagonal, double d_hat,
                                            double average_mass,
@@ -41,4 +41,4 @@ BarrierStiffness initial_barrier_stiffness(double bbox_diagonal, double d_hat,
   return out;
 }
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

@@ -23,9 +23,9 @@
 #include <utility>
 #include <vector>
 
-#include "kresling/elements/contact_broad_phase.hpp"
+#include "kresling/contact/contact_broad_phase.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 /// A list as the cache keeps it: the candidates found within `reach` (distance + skin) at
 /// some positions, and each pair's distance there, in the list's order.
@@ -82,4 +82,4 @@ class ContactCandidateCache {
   mutable std::shared_ptr<const KeptCandidates> list_;
 };
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

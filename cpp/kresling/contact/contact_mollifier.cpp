@@ -1,8 +1,8 @@
 // The edge-edge mollifier of IPC (contact_mollifier.hpp).
 
-#include "kresling/elements/contact_mollifier.hpp"
+#include "kresling/contact/contact_mollifier.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 double edge_edge_mollifier_threshold(const Vector3& ea0_rest, const Vector3& ea1_rest,
                                      const Vector3& eb0_rest, const Vector3& eb1_rest) {
@@ -36,4 +36,4 @@ ScalarDerivatives<12> edge_edge_mollifier(const Vector3& ea0, const Vector3& ea1
   return m;
 }
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

@@ -1,14 +1,14 @@
 // The broad phase's candidates kept across evaluations (contact_candidate_cache.hpp).
 
-#include "kresling/elements/contact_candidate_cache.hpp"
+#include "kresling/contact/contact_candidate_cache.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "kresling/elements/contact_closest_points.hpp"
+#include "kresling/contact/contact_closest_points.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 namespace {
 
@@ -74,4 +74,4 @@ KeptView ContactCandidateCache::candidates(const Eigen::Ref<const NodeMatrix>& x
   return {list_, moved};
 }
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

@@ -15,9 +15,9 @@
 /// nearly parallel edges is carried by the point-triangle pairs of their panels. Vectors of
 /// 12 are ordered (ea0, ea1, eb0, eb1).
 
-#include "kresling/elements/contact_distance.hpp"
+#include "kresling/contact/contact_distance.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 /// eps_x = 1e-3 |ea1 - ea0|^2 |eb1 - eb0|^2 of the edges at rest (reference) positions:
 /// mollification acts when the sine of the edges' angle falls below about 0.03.
@@ -30,4 +30,4 @@ ScalarDerivatives<12> edge_edge_mollifier(const Vector3& ea0, const Vector3& ea1
                                           const Vector3& eb0, const Vector3& eb1, double eps_x,
                                           bool with_hessian = true);
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

@@ -1,6 +1,6 @@
 // IPC's log barrier and the pair contact energies (contact_barrier.hpp).
 
-#include "kresling/elements/contact_barrier.hpp"
+#include "kresling/contact/contact_barrier.hpp"
 
 #include <cmath>
 #include <limits>
@@ -8,9 +8,9 @@
 #include <Eigen/Eigenvalues>
 
 #include "kresling/core/check.hpp"
-#include "kresling/elements/contact_mollifier.hpp"
+#include "kresling/contact/contact_mollifier.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 BarrierValue log_barrier(double s, double s_hat) {
   BarrierValue b;
@@ -105,4 +105,4 @@ template ScalarDerivatives<3> barrier_energy<3>(const ScalarDerivatives<3>&, dou
 template ScalarDerivatives<12> barrier_energy<12>(const ScalarDerivatives<12>&, double, double,
                                                   BarrierHessian);
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

@@ -1,6 +1,6 @@
-// kresling._core.elements: what kresling/elements/contact_ccd.hpp declares.
-#include "elements/elements_bindings.hpp"
-#include "kresling/elements/contact_ccd.hpp"
+// kresling._core.contact: what kresling/contact/contact_ccd.hpp declares.
+#include "contact/contact_bindings.hpp"
+#include "kresling/contact/contact_ccd.hpp"
 
 namespace kresling::python {
 

@@ -1,15 +1,15 @@
 // Closest points of contact primitives (contact_closest_points.hpp).
 
-#include "kresling/elements/contact_closest_points.hpp"
+#include "kresling/contact/contact_closest_points.hpp"
 
 #include <algorithm>
 #include <array>
 
 #include <Eigen/Geometry>
 
-#include "kresling/elements/contact_distance.hpp"
+#include "kresling/contact/contact_distance.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 namespace {
 
@@ -47,4 +47,4 @@ std::pair<Vector3, Vector3> closest_points_of_edges(const Vector3& ea0, const Ve
   return {ea0 + s * a, eb0 + t * b};
 }
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

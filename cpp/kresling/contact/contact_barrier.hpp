@@ -24,9 +24,9 @@
 /// m(x) kappa b(s) (contact_mollifier.hpp).
 
 #include "kresling/core/types.hpp"
-#include "kresling/elements/contact_distance.hpp"
+#include "kresling/contact/contact_distance.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 /// b(s), b'(s), b''(s) at one squared distance.
 struct BarrierValue {
@@ -82,4 +82,4 @@ Eigen::Matrix<double, N, N> project_to_psd(const Eigen::Matrix<double, N, N>& ma
 /// checks a caller makes once before evaluating pairs.
 void check_barrier_parameters(double d_hat, double stiffness);
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

@@ -1,15 +1,15 @@
 // The contact broad phase (contact_broad_phase.hpp).
 
-#include "kresling/elements/contact_broad_phase.hpp"
+#include "kresling/contact/contact_broad_phase.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
 #include "kresling/core/check.hpp"
-#include "kresling/elements/contact_box_tree.hpp"
+#include "kresling/contact/contact_box_tree.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 namespace {
 
@@ -160,4 +160,4 @@ void check_contact_mesh(const Eigen::Ref<const NodeMatrix>& nodes,
   }
 }
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

@@ -1,7 +1,7 @@
-// kresling._core.elements: what kresling/elements/contact_barrier.hpp declares.
-#include "elements/elements_bindings.hpp"
-#include "kresling/elements/contact_barrier.hpp"
-#include "kresling/elements/contact_distance.hpp"
+// kresling._core.contact: what kresling/contact/contact_barrier.hpp declares.
+#include "contact/contact_bindings.hpp"
+#include "kresling/contact/contact_barrier.hpp"
+#include "kresling/contact/contact_distance.hpp"
 
 namespace kresling::python {
 

@@ -13,7 +13,7 @@
 
 #include "kresling/core/types.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 /// The point of the triangle (t0, t1, t2) nearest to p (its closest features as
 /// point_triangle_distance_type finds them).
@@ -24,4 +24,4 @@ Vector3 closest_point_on_triangle(const Vector3& p, const Vector3& t0, const Vec
 std::pair<Vector3, Vector3> closest_points_of_edges(const Vector3& ea0, const Vector3& ea1,
                                                     const Vector3& eb0, const Vector3& eb1);
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

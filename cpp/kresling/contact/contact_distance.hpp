@@ -22,7 +22,7 @@
 
 #include "kresling/core/types.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 using Vector9 = Eigen::Matrix<double, 9, 1>;
 using Matrix9 = Eigen::Matrix<double, 9, 9>;
@@ -125,4 +125,4 @@ ScalarDerivatives<3> point_rigid_plane_distance(const Vector3& p, const Vector3&
 ScalarDerivatives<6> cross_squared_norm(const Vector3& a, const Vector3& b,
                                         bool with_hessian = true);
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

@@ -5,9 +5,9 @@
 
 #include <Eigen/Geometry>
 
-#include "kresling/elements/contact_distance.hpp"
+#include "kresling/contact/contact_distance.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 namespace {
 
@@ -106,4 +106,4 @@ EdgeEdgeDistanceType edge_edge_distance_type(const Vector3& ea0, const Vector3& 
   return cases[best].types[feature];
 }
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

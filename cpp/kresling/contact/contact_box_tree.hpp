@@ -14,7 +14,7 @@
 
 #include "kresling/core/types.hpp"
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 /// An axis-aligned box [lo, hi] (lo <= hi componentwise).
 struct AxisBox {
@@ -75,4 +75,4 @@ void BoxTree::for_each_overlap(const AxisBox& query, Visit&& visit) const {
   }
 }
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact

@@ -1,6 +1,6 @@
-// kresling._core.elements: what kresling/elements/contact_distance.hpp declares.
-#include "elements/elements_bindings.hpp"
-#include "kresling/elements/contact_distance.hpp"
+// kresling._core.contact: what kresling/contact/contact_distance.hpp declares.
+#include "contact/contact_bindings.hpp"
+#include "kresling/contact/contact_distance.hpp"
 
 namespace kresling::python {
 

@@ -6,13 +6,13 @@
 // grad = A^T grad_y f and Hessian = A^T hess_y f A. The derivatives in y come from two
 // building blocks, |a x b|^2 and (r . (a x b))^2, combined by the quotient rule.
 
-#include "kresling/elements/contact_distance.hpp"
+#include "kresling/contact/contact_distance.hpp"
 
 #include <array>
 
 #include <Eigen/Geometry>
 
-namespace kresling::elements {
+namespace kresling::contact {
 
 namespace {
 
@@ -252,4 +252,4 @@ ScalarDerivatives<3> point_rigid_plane_distance(const Vector3& p, const Vector3&
   return f;
 }
 
-}  // namespace kresling::elements
+}  // namespace kresling::contact
