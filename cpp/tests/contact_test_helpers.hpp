@@ -15,6 +15,7 @@
 #include <Eigen/Geometry>
 
 #include "kresling/core/types.hpp"
+#include "finite_differences.hpp"
 #include "kresling/contact/contact_distance.hpp"
 
 namespace kresling::contact_test {
@@ -60,16 +61,16 @@ inline double edge_edge_distance2(const Vector12& y) {
 template <int N, typename F>
 contact::ScalarDerivatives<N> finite_differences(F&& f, const Eigen::Matrix<double, N, 1>& x,
                                                   double h) {
+  const auto d = test::central_differences(
+      [&](const Eigen::Matrix<double, N, 1>& y) {
+        const auto r = f(y);
+        return std::make_pair(r.value, r.gradient);
+      },
+      x, h);
   contact::ScalarDerivatives<N> fd;
   fd.value = f(x).value;
-  for (int k = 0; k < N; ++k) {
-    Eigen::Matrix<double, N, 1> p = x, q = x;
-    p[k] += h;
-    q[k] -= h;
-    const auto fp = f(p), fq = f(q);
-    fd.gradient[k] = (fp.value - fq.value) / (2 * h);
-    fd.hessian.col(k) = (fp.gradient - fq.gradient) / (2 * h);
-  }
+  fd.gradient = d.gradient;
+  fd.hessian = d.hessian;
   return fd;
 }
 
