@@ -1,4 +1,4 @@
-// Cost of the contact broad phase (kresling/elements/contact_broad_phase.hpp) from 1,000 to
+// Cost of the contact broad phase (kresling/contact/contact_broad_phase.hpp) from 1,000 to
 // 100,000 triangles: a crumpled square sheet of unit cells (two triangles each, nodes
 // jittered in the plane and out of it by 0.3), folded over on itself halfway so that half
 // of it lies 0.5 above the other half (so contact candidates exist across the fold), at the
@@ -15,10 +15,10 @@
 #include <cstdio>
 #include <random>
 
-#include "kresling/elements/contact_broad_phase.hpp"
+#include "kresling/contact/contact_broad_phase.hpp"
 
 using namespace kresling;
-using namespace kresling::elements;
+using namespace kresling::contact;
 
 namespace {
 

@@ -15,7 +15,8 @@
 #include <Eigen/Geometry>
 
 #include "kresling/core/types.hpp"
-#include "kresling/elements/contact_distance.hpp"
+#include "finite_differences.hpp"
+#include "kresling/contact/contact_distance.hpp"
 
 namespace kresling::contact_test {
 
@@ -47,29 +48,29 @@ inline std::array<Vector3, 4> unstack(const Vector12& v) {
 // Squared distances of four stacked nodes (p, t0, t1, t2) and (ea0, ea1, eb0, eb1).
 inline double point_triangle_distance2(const Vector12& y) {
   const auto v = unstack(y);
-  return elements::point_triangle_distance(v[0], v[1], v[2], v[3], false).value;
+  return contact::point_triangle_distance(v[0], v[1], v[2], v[3], false).value;
 }
 
 inline double edge_edge_distance2(const Vector12& y) {
   const auto v = unstack(y);
-  return elements::edge_edge_distance(v[0], v[1], v[2], v[3], false).value;
+  return contact::edge_edge_distance(v[0], v[1], v[2], v[3], false).value;
 }
 
 // Central differences of f (returning ScalarDerivatives<N>) about x with step h: the
 // gradient from the values and the Hessian from the gradients.
 template <int N, typename F>
-elements::ScalarDerivatives<N> finite_differences(F&& f, const Eigen::Matrix<double, N, 1>& x,
+contact::ScalarDerivatives<N> finite_differences(F&& f, const Eigen::Matrix<double, N, 1>& x,
                                                   double h) {
-  elements::ScalarDerivatives<N> fd;
+  const auto d = test::central_differences(
+      [&](const Eigen::Matrix<double, N, 1>& y) {
+        const auto r = f(y);
+        return std::make_pair(r.value, r.gradient);
+      },
+      x, h);
+  contact::ScalarDerivatives<N> fd;
   fd.value = f(x).value;
-  for (int k = 0; k < N; ++k) {
-    Eigen::Matrix<double, N, 1> p = x, q = x;
-    p[k] += h;
-    q[k] -= h;
-    const auto fp = f(p), fq = f(q);
-    fd.gradient[k] = (fp.value - fq.value) / (2 * h);
-    fd.hessian.col(k) = (fp.gradient - fq.gradient) / (2 * h);
-  }
+  fd.gradient = d.gradient;
+  fd.hessian = d.hessian;
   return fd;
 }
 

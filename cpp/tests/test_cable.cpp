@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include "finite_differences.hpp"
 #include "kresling/elements/bar.hpp"
 #include "kresling/elements/cable.hpp"
 
@@ -245,21 +246,19 @@ TEST(CableAssembly, ForceAndTangentMatchFiniteDifferences) {
   std::uniform_real_distribution<double> jitter(-0.2, 0.2);
   VectorX u(m.num_dofs());
   for (Index i = 0; i < u.size(); ++i) u[i] = jitter(rng);
-  VectorX f, fp, fm;
+  VectorX f;
   const auto e = a.assemble(u, f, true);
   EXPECT_GT(e[2], 0.0);
   EXPECT_NEAR(e.total(), e[0] + e[1] + e[2], 1e-15);
   const Eigen::MatrixXd K = Eigen::MatrixXd(a.matrix());
   const double h = 1e-6 * 10.0;
-  Eigen::MatrixXd K_fd(u.size(), u.size());
-  VectorX f_fd(u.size());
-  for (Index i = 0; i < u.size(); ++i) {
-    VectorX p = u, q = u;
-    p[i] += h, q[i] -= h;
-    const double ep = a.assemble(p, fp, false).total(), em = a.assemble(q, fm, false).total();
-    f_fd[i] = (ep - em) / (2 * h);
-    K_fd.col(i) = (fp - fm) / (2 * h);
-  }
+  const auto [f_fd, K_fd] = test::central_differences(
+      [&](const VectorX& y) {
+        VectorX fy;
+        const double energy = a.assemble(y, fy, false).total();
+        return std::make_pair(energy, fy);
+      },
+      u, h);
   EXPECT_LT((f - f_fd).norm(), kRelTol * f.norm());
   EXPECT_LT((K - K_fd).norm(), kRelTol * K.norm());
   // The cable's share of the force is the kernel's, scattered to its nodes.

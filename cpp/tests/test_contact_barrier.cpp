@@ -8,12 +8,12 @@
 #include <gtest/gtest.h>
 
 #include "contact_test_helpers.hpp"
-#include "kresling/elements/contact_barrier.hpp"
-#include "kresling/elements/contact_barrier_stiffness.hpp"
-#include "kresling/elements/contact_mollifier.hpp"
+#include "kresling/contact/contact_barrier.hpp"
+#include "kresling/contact/contact_barrier_stiffness.hpp"
+#include "kresling/contact/contact_mollifier.hpp"
 
 using namespace kresling;
-using namespace kresling::elements;
+using namespace kresling::contact;
 using namespace kresling::contact_test;
 
 namespace {

@@ -1,4 +1,4 @@
-// The broad phase's kept list (elements/contact_candidate_cache.hpp) against brute force:
+// The broad phase's kept list (contact/contact_candidate_cache.hpp) against brute force:
 // at positions moved from where the list was found, its clearance is below every pair's
 // distance, and its kept distances pass over no pair within the distance asked for.
 //
@@ -16,12 +16,12 @@
 #include <gtest/gtest.h>
 
 #include "contact_test_helpers.hpp"
-#include "kresling/elements/contact_broad_phase.hpp"
-#include "kresling/elements/contact_candidate_cache.hpp"
-#include "kresling/elements/contact_distance.hpp"
+#include "kresling/contact/contact_broad_phase.hpp"
+#include "kresling/contact/contact_candidate_cache.hpp"
+#include "kresling/contact/contact_distance.hpp"
 
 using namespace kresling;
-using namespace kresling::elements;
+using namespace kresling::contact;
 using namespace kresling::contact_test;
 
 namespace {

@@ -9,11 +9,11 @@
 #include <gtest/gtest.h>
 
 #include "contact_test_helpers.hpp"
-#include "kresling/elements/contact_ccd.hpp"
-#include "kresling/elements/contact_distance.hpp"
+#include "kresling/contact/contact_ccd.hpp"
+#include "kresling/contact/contact_distance.hpp"
 
 using namespace kresling;
-using namespace kresling::elements;
+using namespace kresling::contact;
 using namespace kresling::contact_test;
 
 namespace {

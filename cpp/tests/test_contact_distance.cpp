@@ -4,11 +4,11 @@
 #include <gtest/gtest.h>
 
 #include "contact_test_helpers.hpp"
-#include "kresling/elements/contact_distance.hpp"
-#include "kresling/elements/contact_mollifier.hpp"
+#include "kresling/contact/contact_distance.hpp"
+#include "kresling/contact/contact_mollifier.hpp"
 
 using namespace kresling;
-using namespace kresling::elements;
+using namespace kresling::contact;
 using namespace kresling::contact_test;
 
 namespace {

@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include "finite_differences.hpp"
 #include "kresling/elements/bar.hpp"
 #include "kresling/elements/dihedral.hpp"
 #include "kresling/elements/hinge.hpp"
@@ -59,24 +60,6 @@ double angle_of(const Vector12& v) {
 Vector12 gradient_of(const Vector12& v) {
   const auto x = unstack(v);
   return dihedral_angle_gradient(x[0], x[1], x[2], x[3]);
-}
-
-// Central differences of an element's energy and force about x with step h: the force
-// and the stiffness they imply.
-template <int D, typename Response>
-std::pair<Eigen::Matrix<double, D, 1>, Eigen::Matrix<double, D, D>> finite_differences(
-    Response&& at, const Eigen::Matrix<double, D, 1>& x, double h) {
-  Eigen::Matrix<double, D, 1> force;
-  Eigen::Matrix<double, D, D> stiffness;
-  for (int k = 0; k < D; ++k) {
-    Eigen::Matrix<double, D, 1> p = x, q = x;
-    p[k] += h;
-    q[k] -= h;
-    const auto rp = at(p), rq = at(q);
-    force[k] = (rp.energy - rq.energy) / (2 * h);
-    stiffness.col(k) = (rp.force - rq.force) / (2 * h);
-  }
-  return {force, stiffness};
 }
 
 Eigen::Matrix3d random_rotation(std::mt19937& rng) {
@@ -234,7 +217,7 @@ TEST(Bar, ForceAndStiffnessMatchFiniteDifferencesForBothLaws) {
       };
       const BarResponse r = at(x);
       const double h = kStep * 10.0;
-      const auto [f_fd, K_fd] = finite_differences<6>(at, x, h);
+      const auto [f_fd, K_fd] = test::energy_differences(at, x, h);
       // Near rest the force vanishes; the floor is the rounding of the energy differences,
       // relative to the force a perturbation h produces (|K| h).
       EXPECT_LE((r.force - f_fd).norm(), kRelTol * (r.force.norm() + r.stiffness.norm() * h));
@@ -322,7 +305,7 @@ TEST(Hinge, ForceAndStiffnessMatchFiniteDifferences) {
       return hinge_response(p[0], p[1], p[2], p[3], 0.047, 2.0, 30.0, law);
     };
     const HingeResponse r = at(x);
-    const auto [f_fd, K_fd] = finite_differences<12>(at, x, kStep * 20.0);
+    const auto [f_fd, K_fd] = test::energy_differences(at, x, kStep * 20.0);
     EXPECT_LE((r.force - f_fd).norm(), kRelTol * r.force.norm() + 1e-12);
     EXPECT_LE((r.stiffness - K_fd).norm(), kRelTol * r.stiffness.norm());
   }

@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include "finite_differences.hpp"
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/elements/corner_angle.hpp"
 #include "kresling/model/bar_family.hpp"
@@ -52,16 +53,8 @@ TEST(CornerAngles, GradientAndHessianMatchFiniteDifferences) {
     const std::array<double, 3> rest = {rest_angle(rng), rest_angle(rng), rest_angle(rng)};
     const double k = stiffness(rng);
     const auto r = response(x, rest, k);
-    elements::Vector9 g_fd;
-    elements::Matrix9 h_fd;
-    for (int i = 0; i < 9; ++i) {
-      elements::Vector9 xp = x, xm = x;
-      xp[i] += kStep;
-      xm[i] -= kStep;
-      const auto rp = response(xp, rest, k), rm = response(xm, rest, k);
-      g_fd[i] = (rp.energy - rm.energy) / (2 * kStep);
-      h_fd.col(i) = (rp.force - rm.force) / (2 * kStep);
-    }
+    const auto [g_fd, h_fd] = test::energy_differences(
+        [&](const elements::Vector9& y) { return response(y, rest, k); }, x, kStep);
     EXPECT_LE((r.force - g_fd).norm(), kRelTol * std::max(1.0, r.force.norm())) << trial;
     EXPECT_LE((r.stiffness - h_fd).norm(), kRelTol * std::max(1.0, r.stiffness.norm())) << trial;
     EXPECT_LE((r.stiffness - r.stiffness.transpose()).norm(), 1e-12 * r.stiffness.norm());

@@ -100,7 +100,7 @@ TEST(Hardening, ThirtyBisectionsStopAfterThirtyOneAttempts) {
     ++attempts;
     ++r.attempted_increments;
     smallest = increment.to - increment.from;
-    if (!policy.rejected(increment, "no")) break;
+    if (!policy.rejected(increment, attempts == 1 ? "first" : "later")) break;
   }
   policy.finish(control, r);
   EXPECT_FALSE(r.completed);
@@ -109,7 +109,15 @@ TEST(Hardening, ThirtyBisectionsStopAfterThirtyOneAttempts) {
   EXPECT_EQ(r.failed_increment, attempts);
   EXPECT_EQ(r.message,
             "no equilibrium found beyond load factor 0 (load step 1 of 1, 30 bisections; a "
-            "limit point? use MGDCM); at full size: no");
+            "limit point? use MGDCM); at full size: first; at the smallest size tried "
+            "(9.31e-10): later");
+}
+
+// Path fractions reached by bisections print to the digits that mean something.
+TEST(Hardening, FailureMessagesRoundThePathParameter) {
+  EXPECT_EQ(format_rounded(0.67128906250000009), "0.671289");
+  EXPECT_EQ(format_rounded(0.5), "0.5");
+  EXPECT_EQ(format_rounded(69.2871, 3), "69.3");
 }
 
 TEST(Hardening, StepCountsHaveAnUpperBound) {

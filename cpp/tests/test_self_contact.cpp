@@ -16,7 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "kresling/assembly/assembler.hpp"
-#include "kresling/elements/contact_closest_points.hpp"
+#include "kresling/contact/contact_closest_points.hpp"
 #include "kresling/model/self_contact_family.hpp"
 #include "kresling/solvers/tangent_solver.hpp"
 #include "two_triangles_model.hpp"
@@ -146,12 +146,12 @@ TEST(SelfContact, ClosestPointsAreAtTheKernelsDistance) {
   auto point = [&] { return Vector3(c(rng), c(rng), c(rng)); };
   for (int trial = 0; trial < 200; ++trial) {
     const Vector3 p = point(), a = point(), b = point(), d = point();
-    const Vector3 q = elements::closest_point_on_triangle(p, a, b, d);
-    EXPECT_NEAR((p - q).squaredNorm(), elements::point_triangle_distance(p, a, b, d, false).value,
+    const Vector3 q = contact::closest_point_on_triangle(p, a, b, d);
+    EXPECT_NEAR((p - q).squaredNorm(), contact::point_triangle_distance(p, a, b, d, false).value,
                 1e-12);
     const Vector3 e = point();
-    const auto [x, y] = elements::closest_points_of_edges(p, a, b, e);
-    EXPECT_NEAR((x - y).squaredNorm(), elements::edge_edge_distance(p, a, b, e, false).value,
+    const auto [x, y] = contact::closest_points_of_edges(p, a, b, e);
+    EXPECT_NEAR((x - y).squaredNorm(), contact::edge_edge_distance(p, a, b, e, false).value,
                 1e-12);
   }
 }

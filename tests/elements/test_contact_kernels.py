@@ -5,7 +5,7 @@ bindings) and against finite differences."""
 import numpy as np
 import pytest
 
-from kresling._core import elements as core
+from kresling._core import contact as core
 
 D_HAT = 0.3
 KAPPA = 7.0

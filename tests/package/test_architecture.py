@@ -217,29 +217,30 @@ def test_an_unknown_top_level_module_is_reported(monkeypatch):
                      "table: add it to the table of docs/architecture.md"]
 
 
-# The binding layer mirrors the C++ core: cpp/python/bind_<folder>.cpp binds what
-# cpp/kresling/<folder>/ declares, into the submodule kresling._core.<folder>.
+# The binding layer mirrors the C++ core: cpp/python/<folder>/bind_<header>.cpp binds what
+# cpp/kresling/<folder>/<header>.hpp declares, into the submodule kresling._core.<folder>.
 CPP = PACKAGE.parent / "cpp"
 
 
 def _declarations():
-    """Each class, struct or enum declared in a header of cpp/kresling -> its folder, and each
-    folder -> the text of its headers."""
+    """Each class, struct or enum declared in a header of cpp/kresling -> the headers
+    ('<folder>/<header>') declaring it, and each header -> its text."""
     types, text = {}, {}
     for header in sorted((CPP / "kresling").glob("*/*.hpp")):
         source = header.read_text(encoding="utf-8")
-        text[header.parent.name] = text.get(header.parent.name, "") + source
+        key = f"{header.parent.name}/{header.stem}"
+        text[key] = source
         for name in re.findall(r"^\s*(?:struct|class|enum class|enum)\s+(\w+)\b[^;]*$", source,
                                flags=re.MULTILINE):
-            types.setdefault(name, set()).add(header.parent.name)
+            types.setdefault(name, set()).add(key)
     return types, text
 
 
 def _bindings():
-    """Each binding file's folder -> (the types it binds, the free functions it binds by
-    address)."""
+    """Each binding file's '<folder>/<header>' -> (the types it binds, the free functions it
+    binds by address)."""
     out = {}
-    for path in sorted((CPP / "python").glob("bind_*.cpp")):
+    for path in sorted((CPP / "python").glob("*/bind_*.cpp")):
         source = path.read_text(encoding="utf-8")
         # An alias (`using R = analyses::BendingResult;`) stands for the type it names; a
         # template's parameter (`py::class_<Result>&` in a helper) is no type of its own.
@@ -248,44 +249,47 @@ def _bindings():
         types = [aliases.get(t, t).split("::")[-1]
                  for t in re.findall(r"py::(?:class_|enum_)<([\w:]+)", source)
                  if t not in parameters]
+        # A function bound by address, unless it is the binding file's own adapter.
         functions = [f.split("::")[-1]
-                     for f in re.findall(r"m\.def\(\s*\"\w+\",\s*&([\w:]+)", source)]
-        out[path.stem.removeprefix("bind_")] = (types, functions)
+                     for f in re.findall(r"m\.def\(\s*\"\w+\",\s*&([\w:]+)", source)
+                     if not re.search(rf"^[\w:<>, ]+\s{f}\(", source, flags=re.MULTILINE)]
+        out[f"{path.parent.name}/{path.stem.removeprefix('bind_')}"] = (types, functions)
     return out
 
 
-def test_the_binding_files_mirror_the_cpp_folders():
+def test_the_binding_files_mirror_the_cpp_headers():
     from kresling import _core
 
     folders = {p.name for p in (CPP / "kresling").iterdir() if p.is_dir()}
     bindings = _bindings()
-    assert set(bindings) <= folders, "a binding file for no folder of cpp/kresling"
+    bound_folders = {key.split("/")[0] for key in bindings}
+    assert bound_folders <= folders, "a binding folder for no folder of cpp/kresling"
     submodules = {name for name in dir(_core) if isinstance(getattr(_core, name), ModuleType)}
-    assert submodules == set(bindings), "kresling._core's submodules are not the binding files"
+    assert submodules == bound_folders, "kresling._core's submodules are not the binding folders"
     module = (CPP / "python" / "module.cpp").read_text(encoding="utf-8")
-    for folder in bindings:
-        assert re.search(rf'def_submodule\(\s*"{folder}",[^;]*;\s*kresling::python::'
-                         rf'bind_{folder}\({folder}\);', module), folder
+    for key in bindings:
+        folder, header = key.split("/")
+        assert re.search(rf'def_submodule\(\s*"{folder}",[^;]*;(\s*kresling::python::bind_\w+'
+                         rf'\({folder}\);)*\s*kresling::python::bind_{header}\({folder}\);',
+                         module), f"module.cpp does not call bind_{header}({folder})"
 
     types, text = _declarations()
-    bound_folders = set()
-    for folder, (bound_types, functions) in bindings.items():
-        assert bound_types, f"bind_{folder}.cpp binds no type"
+    for key, (bound_types, functions) in bindings.items():
+        file = "cpp/python/" + key.replace("/", "/bind_") + ".cpp"
+        assert key in text, f"{file}: there is no cpp/kresling/{key}.hpp"
         for name in bound_types:
-            assert folder in types.get(name, set()), \
-                f"bind_{folder}.cpp binds {name}, declared in {sorted(types.get(name, []))}"
-            bound_folders.add(folder)
+            assert key in types.get(name, set()), \
+                f"{file} binds {name}, declared in {sorted(types.get(name, []))}"
         for name in functions:
-            assert re.search(rf"\b{name}\(", text[folder]), \
-                f"bind_{folder}.cpp binds {name}(), not declared in cpp/kresling/{folder}"
-    # Every folder whose declarations are bound has its own binding file (so `core`, which
-    # has nothing to bind, has none).
-    assert bound_folders == set(bindings)
-    unbound = folders - set(bindings)
-    for folder in unbound:
+            assert re.search(rf"\b{name}\(", text[key]), \
+                f"{file} binds {name}(), not declared in cpp/kresling/{key}.hpp"
+    # A type of a folder without binding files (`core`, which has nothing to bind) is bound
+    # nowhere.
+    for folder in folders - bound_folders:
         for bound_types, _ in bindings.values():
-            assert not [t for t in bound_types if types.get(t) == {folder}], \
-                f"types of cpp/kresling/{folder} bound outside a bind_{folder}.cpp"
+            assert not [t for t in bound_types
+                        if types.get(t) and {k.split("/")[0] for k in types[t]} == {folder}], \
+                f"types of cpp/kresling/{folder} bound outside cpp/python/{folder}"
 
 
 def _module_name(path: Path) -> str:

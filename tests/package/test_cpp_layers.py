@@ -18,10 +18,11 @@ CPP_LAYERS = {
     "geometry": {"core"},
     "kinematics": {"core"},
     "elements": {"core"},
-    "model": {"core", "geometry", "elements"},
-    "assembly": {"core", "geometry", "elements", "model"},
-    "solvers": {"core", "geometry", "elements", "model", "assembly"},
-    "analyses": {"core", "geometry", "elements", "model", "assembly", "solvers"},
+    "contact": {"core"},
+    "model": {"core", "geometry", "elements", "contact"},
+    "assembly": {"core", "geometry", "elements", "contact", "model"},
+    "solvers": {"core", "geometry", "elements", "contact", "model", "assembly"},
+    "analyses": {"core", "geometry", "elements", "contact", "model", "assembly", "solvers"},
 }
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"kresling/(\w+)/[^"]*"', re.MULTILINE)
@@ -65,6 +66,8 @@ def test_the_table_is_the_one_in_docs():
     ("model", '#include "kresling/assembly/workspace.hpp"\n', "model may not include assembly"),
     ("assembly", '#include "kresling/solvers/newton.hpp"\n', "assembly may not include solvers"),
     ("kinematics", '#include "kresling/model/arm.hpp"\n', "kinematics may not include model"),
+    ("contact", '#include "kresling/elements/bar.hpp"\n', "contact may not include elements"),
+    ("elements", '#include "kresling/contact/contact_ccd.hpp"\n', "elements may not include contact"),
 ])
 def test_an_include_that_goes_up_is_caught(tmp_path, folder, include, message):
     # A file planted in `folder` (a copy of the tree's layout under tmp_path).

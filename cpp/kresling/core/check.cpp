@@ -34,6 +34,12 @@ std::string format_number(double value) {
   return out.str();
 }
 
+std::string format_rounded(double value, int digits) {
+  std::ostringstream out;
+  out << std::setprecision(digits) << value;
+  return out.str();
+}
+
 void throw_invalid(const std::string& name, double value, const std::string& allowed) {
   throw std::invalid_argument(name + " = " + format_number(value) + " is invalid: must be " +
                               allowed);

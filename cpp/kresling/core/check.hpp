@@ -14,6 +14,11 @@ namespace kresling {
 /// Format a number the way messages show it: shortest round-trippable form.
 std::string format_number(double value);
 
+/// Format a number to `digits` significant digits, for a computed quantity in a message
+/// whose last digits mean nothing (a path fraction reached by bisections: 0.671289, not
+/// 0.67128906250000009).
+std::string format_rounded(double value, int digits = 6);
+
 /// Throw std::invalid_argument("<name> = <value> is invalid: must be <allowed>").
 [[noreturn]] void throw_invalid(const std::string& name, double value, const std::string& allowed);
 

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "kresling/core/check.hpp"
-#include "kresling/elements/contact_barrier.hpp"
-#include "kresling/elements/contact_ccd.hpp"
-#include "kresling/elements/contact_distance.hpp"
+#include "kresling/contact/contact_barrier.hpp"
+#include "kresling/contact/contact_ccd.hpp"
+#include "kresling/contact/contact_distance.hpp"
 
 namespace kresling::model {
 
@@ -37,7 +37,7 @@ void PlaneContactFamily::check(const NodeMatrix& X, double) const {
                                   " is out of range [0, " + std::to_string(X.rows()) + ")");
     }
     for (std::size_t p = 0; p < planes_.size(); ++p) {
-      const double d = elements::point_plane_signed_distance(X.row(nodes_[i]).transpose(),
+      const double d = contact::point_plane_signed_distance(X.row(nodes_[i]).transpose(),
                                                              planes_[p].origin, planes_[p].normal);
       if (!(std::abs(d) > 0.0)) {
         throw std::invalid_argument("contact: node " + std::to_string(nodes_[i]) +
@@ -55,12 +55,12 @@ double PlaneContactFamily::assemble(const NodeMatrix& X, const VectorX& u,
     const Index node = nodes_[e / planes_.size()];
     const ContactPlane& plane = planes_[e % planes_.size()];
     const Vector3 p = position(X, u, node);
-    if (std::abs(elements::point_plane_signed_distance(p, plane.origin, plane.normal)) >= d_hat_) {
+    if (std::abs(contact::point_plane_signed_distance(p, plane.origin, plane.normal)) >= d_hat_) {
       continue;  // beyond d_hat the barrier is zero, with its derivatives
     }
-    const auto b = elements::point_plane_barrier(
+    const auto b = contact::point_plane_barrier(
         p, plane.origin, plane.normal, d_hat_, stiffness_,
-        target.values ? elements::BarrierHessian::Projected : elements::BarrierHessian::None);
+        target.values ? contact::BarrierHessian::Projected : contact::BarrierHessian::None);
     energy += b.value;
     add_local_force(b.gradient, element_dofs(e), target.force);
     if (target.values) scatter_local_tangent(b.hessian, *target.slots, e, target.values);
@@ -78,11 +78,11 @@ void PlaneContactFamily::add_state(const NodeMatrix& x, ElementState& state) con
     const ContactPlane& plane = planes_[e % planes_.size()];
     const Vector3 p = x.row(node).transpose();
     const Index i = static_cast<Index>(e);
-    gap[i] = std::abs(elements::point_plane_signed_distance(p, plane.origin, plane.normal));
+    gap[i] = std::abs(contact::point_plane_signed_distance(p, plane.origin, plane.normal));
     energy[i] = 0.0;
     if (gap[i] < d_hat_) {
-      const auto b = elements::point_plane_barrier(p, plane.origin, plane.normal, d_hat_,
-                                                   stiffness_, elements::BarrierHessian::None);
+      const auto b = contact::point_plane_barrier(p, plane.origin, plane.normal, d_hat_,
+                                                   stiffness_, contact::BarrierHessian::None);
       energy[i] = b.value;
       force.segment<3>(3 * i) = -b.gradient;
     }
@@ -100,7 +100,7 @@ double PlaneContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
     const ContactPlane& plane = planes_[e % planes_.size()];
     const Vector3 start = position(X, u, node);
     const Vector3 end = start + du.segment<3>(3 * node);
-    const auto toi = elements::point_plane_ccd(start, end, plane.origin, plane.normal);
+    const auto toi = contact::point_plane_ccd(start, end, plane.origin, plane.normal);
     if (toi.impact) fraction = std::min(fraction, toi.toi);
   }
   return fraction;

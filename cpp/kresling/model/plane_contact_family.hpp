@@ -1,7 +1,7 @@
 #pragma once
 /// \file plane_contact_family.hpp
 /// Contact of nodes with rigid planes (a floor, a wall): IPC's barrier on each node's
-/// distance from each plane (kernels: elements/contact_barrier.hpp, contact_ccd.hpp). The
+/// distance from each plane (kernels: contact/contact_barrier.hpp, contact_ccd.hpp). The
 /// energy is zero at distances of d_hat and more and grows without bound as a node reaches
 /// a plane; a node stays on the side of each plane where it starts. Newton's corrections are
 /// shortened by a continuous collision check (step_limit), so no step crosses a plane.

@@ -7,16 +7,16 @@
 #include <string>
 
 #include "kresling/core/check.hpp"
-#include "kresling/elements/contact_candidate_cache.hpp"
-#include "kresling/elements/contact_ccd.hpp"
-#include "kresling/elements/contact_closest_points.hpp"
-#include "kresling/elements/contact_mollifier.hpp"
+#include "kresling/contact/contact_candidate_cache.hpp"
+#include "kresling/contact/contact_ccd.hpp"
+#include "kresling/contact/contact_closest_points.hpp"
+#include "kresling/contact/contact_mollifier.hpp"
 
 namespace kresling::model {
 
 namespace {
 
-using elements::ContactCandidates;
+using contact::ContactCandidates;
 
 NodeMatrix deformed(const NodeMatrix& X, const VectorX& u) {
   return X + Eigen::Map<const NodeMatrix>(u.data(), X.rows(), 3);
@@ -25,11 +25,11 @@ NodeMatrix deformed(const NodeMatrix& X, const VectorX& u) {
 Vector3 row(const NodeMatrix& x, Index i) { return x.row(i).transpose(); }
 
 // The 4 nodes of a candidate pair: (p, t0, t1, t2) or (ea0, ea1, eb0, eb1).
-std::array<Index, 4> point_triangle_nodes(const elements::TriangleMatrix& t,
+std::array<Index, 4> point_triangle_nodes(const contact::TriangleMatrix& t,
                                           const std::array<Index, 2>& pair) {
   return {pair[0], t(pair[1], 0), t(pair[1], 1), t(pair[1], 2)};
 }
-std::array<Index, 4> edge_edge_nodes(const elements::EdgeMatrix& e,
+std::array<Index, 4> edge_edge_nodes(const contact::EdgeMatrix& e,
                                      const std::array<Index, 2>& pair) {
   return {e(pair[0], 0), e(pair[0], 1), e(pair[1], 0), e(pair[1], 1)};
 }
@@ -39,10 +39,10 @@ std::array<Index, 4> edge_edge_nodes(const elements::EdgeMatrix& e,
 double squared_distance(const NodeMatrix& x, const std::array<Index, 4>& n, bool edge_edge) {
   const Vector3 a = row(x, n[0]), b = row(x, n[1]), c = row(x, n[2]), d = row(x, n[3]);
   if (edge_edge) {
-    const auto [p, q] = elements::closest_points_of_edges(a, b, c, d);
+    const auto [p, q] = contact::closest_points_of_edges(a, b, c, d);
     return (p - q).squaredNorm();
   }
-  return (a - elements::closest_point_on_triangle(a, b, c, d)).squaredNorm();
+  return (a - contact::closest_point_on_triangle(a, b, c, d)).squaredNorm();
 }
 
 // A lower bound on a pair's distance: the gap between the boxes of its two primitives
@@ -76,8 +76,8 @@ double closing_rate(const NodeMatrix& dx, const std::array<Index, 4>& n, bool ed
 
 // Visit every candidate pair of `c` as (nodes, is edge-edge).
 template <typename Visit>
-void for_each_pair(const ContactCandidates& c, const elements::TriangleMatrix& t,
-                   const elements::EdgeMatrix& e, Visit&& visit) {
+void for_each_pair(const ContactCandidates& c, const contact::TriangleMatrix& t,
+                   const contact::EdgeMatrix& e, Visit&& visit) {
   for (const auto& pair : c.point_triangle) visit(point_triangle_nodes(t, pair), false);
   for (const auto& pair : c.edge_edge) visit(edge_edge_nodes(e, pair), true);
 }
@@ -86,10 +86,10 @@ void for_each_pair(const ContactCandidates& c, const elements::TriangleMatrix& t
 // `distance` at the positions it is served at (KeptView::may_be_within): the others are
 // passed over at a comparison each.
 template <typename Visit>
-void for_each_kept_within(const elements::KeptView& view, double distance,
-                          const elements::TriangleMatrix& t, const elements::EdgeMatrix& e,
+void for_each_kept_within(const contact::KeptView& view, double distance,
+                          const contact::TriangleMatrix& t, const contact::EdgeMatrix& e,
                           Visit&& visit) {
-  const elements::KeptCandidates& kept = *view.list;
+  const contact::KeptCandidates& kept = *view.list;
   for (std::size_t i = 0; i < kept.pairs.point_triangle.size(); ++i) {
     if (view.may_be_within(kept.point_triangle_distance[i], distance)) {
       visit(point_triangle_nodes(t, kept.pairs.point_triangle[i]), false);
@@ -106,23 +106,23 @@ void for_each_kept_within(const elements::KeptView& view, double distance,
 
 SelfContactFamily::SelfContactFamily(std::vector<Index> triangles, double d_hat,
                                      double stiffness, TangentForm tangent,
-                                     elements::JoinedNodes joined)
-    : triangles_(Eigen::Map<const elements::TriangleMatrix>(
+                                     contact::JoinedNodes joined)
+    : triangles_(Eigen::Map<const contact::TriangleMatrix>(
           triangles.data(), static_cast<Index>(triangles.size() / 3), 3)),
-      edges_(elements::triangle_edges(triangles_)),
+      edges_(contact::triangle_edges(triangles_)),
       d_hat_(d_hat),
       stiffness_(stiffness),
       tangent_(tangent),
       joined_(std::move(joined)),
       // A skin of d_hat: the list holds while no node moves d_hat / 2 (Newton's iterates
       // near contact move far less), at the cost of the pairs within 2 d_hat.
-      cache_(std::make_unique<elements::ContactCandidateCache>(d_hat, d_hat, joined_)) {}
+      cache_(std::make_unique<contact::ContactCandidateCache>(d_hat, d_hat, joined_)) {}
 
 void SelfContactFamily::check(const NodeMatrix& X, double) const {
   require_positive("self_contact: distance", d_hat_);
   require_positive("self_contact: stiffness", stiffness_);
   try {
-    elements::check_contact_mesh(X, triangles_, edges_, d_hat_);
+    contact::check_contact_mesh(X, triangles_, edges_, d_hat_);
   } catch (const std::invalid_argument& error) {
     throw std::invalid_argument(std::string("self_contact: ") + error.what());
   }
@@ -157,7 +157,7 @@ void SelfContactFamily::find_active(const NodeMatrix& x, ActiveElements& out) co
   out.width = 4;
   const double s_hat = d_hat_ * d_hat_;
   // Only pairs that may be within d_hat: the others would fail the tests below.
-  const elements::KeptView view = cache_->candidates(x, triangles_, edges_);
+  const contact::KeptView view = cache_->candidates(x, triangles_, edges_);
   for_each_kept_within(view, d_hat_, triangles_, edges_,
                        [&](const std::array<Index, 4>& n, bool edge_edge) {
     if (box_gap(x, n, edge_edge) >= d_hat_) return;  // the list holds pairs to 2 d_hat
@@ -172,18 +172,18 @@ void SelfContactFamily::active_elements(const NodeMatrix& X, const VectorX& u,
   find_active(deformed(X, u), out);
 }
 
-elements::ScalarDerivatives<12> SelfContactFamily::pair_energy(
+contact::ScalarDerivatives<12> SelfContactFamily::pair_energy(
     const NodeMatrix& X, const NodeMatrix& x, const ActiveElements& active, std::size_t e,
-    elements::BarrierHessian hessian) const {
+    contact::BarrierHessian hessian) const {
   const Index* n = active.nodes.data() + 4 * e;
   const Vector3 a = row(x, n[0]), b = row(x, n[1]), c = row(x, n[2]), d = row(x, n[3]);
   if (active.kinds[e] == PointTriangle) {
-    return elements::point_triangle_barrier(a, b, c, d, d_hat_, stiffness_, hessian);
+    return contact::point_triangle_barrier(a, b, c, d, d_hat_, stiffness_, hessian);
   }
   // The mollifier's threshold from the edges as built, as IPC takes it.
-  const double eps_x = elements::edge_edge_mollifier_threshold(row(X, n[0]), row(X, n[1]),
+  const double eps_x = contact::edge_edge_mollifier_threshold(row(X, n[0]), row(X, n[1]),
                                                                row(X, n[2]), row(X, n[3]));
-  return elements::edge_edge_barrier(a, b, c, d, eps_x, d_hat_, stiffness_, hessian);
+  return contact::edge_edge_barrier(a, b, c, d, eps_x, d_hat_, stiffness_, hessian);
 }
 
 double SelfContactFamily::assemble(const NodeMatrix& X, const VectorX& u,
@@ -194,9 +194,9 @@ double SelfContactFamily::assemble(const NodeMatrix& X, const VectorX& u,
   const ActiveElements& active = target.active ? *target.active : own;
   const bool exact = tangent_ == TangentForm::Exact ||
                      (tangent_ == TangentForm::Adaptive && !target.definite);
-  const auto hessian = !target.values ? elements::BarrierHessian::None
-                       : exact        ? elements::BarrierHessian::Exact
-                                      : elements::BarrierHessian::Projected;
+  const auto hessian = !target.values ? contact::BarrierHessian::None
+                       : exact        ? contact::BarrierHessian::Exact
+                                      : contact::BarrierHessian::Projected;
   double energy = 0.0;
   const double s_hat = d_hat_ * d_hat_;
   for (std::size_t e = 0; e < active.size(); ++e) {
@@ -222,7 +222,7 @@ double SelfContactFamily::nearest_pair(const NodeMatrix& x, NearestPair* pair) c
   const double extent = (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
   double best = std::numeric_limits<double>::infinity();
   for (double r = d_hat_;; r *= 4.0) {
-    const ContactCandidates c = elements::contact_candidates(x, triangles_, edges_, r, joined_);
+    const ContactCandidates c = contact::contact_candidates(x, triangles_, edges_, r, joined_);
     for_each_pair(c, triangles_, edges_, [&](const std::array<Index, 4>& n, bool edge_edge) {
       const double d = std::sqrt(squared_distance(x, n, edge_edge));
       if (!(d < best)) return;
@@ -241,8 +241,8 @@ void SelfContactFamily::add_state(const NodeMatrix& x, ElementState& state) cons
     const Index* n = active.nodes.data() + 4 * e;
     const Vector3 a = row(x, n[0]), b = row(x, n[1]), c = row(x, n[2]), d = row(x, n[3]);
     const auto [p, q] = active.kinds[e] == EdgeEdge
-                            ? elements::closest_points_of_edges(a, b, c, d)
-                            : std::make_pair(a, elements::closest_point_on_triangle(a, b, c, d));
+                            ? contact::closest_points_of_edges(a, b, c, d)
+                            : std::make_pair(a, contact::closest_point_on_triangle(a, b, c, d));
     segments.segment<3>(6 * static_cast<Index>(e)) = p;
     segments.segment<3>(6 * static_cast<Index>(e) + 3) = q;
   }
@@ -255,7 +255,7 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
                                      const VectorX& du) const {
   const NodeMatrix x0 = deformed(X, u);
   const NodeMatrix dx = Eigen::Map<const NodeMatrix>(du.data(), X.rows(), 3);
-  elements::CcdOptions options;
+  contact::CcdOptions options;
   const double eta = options.conservative_rescaling;
   // ACCD (contact_ccd.cpp) finds no impact for a pair whose first advance, eta d / l_p from
   // its gap d at x0, already covers the step: it returns t_max without a second distance.
@@ -267,7 +267,7 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
   const double far = 2.0 * 3.0 * largest / eta;
   // The kept candidates cover the step when it is short beside the list's skin; otherwise
   // those of the swept boxes, which hold every pair that may meet along it.
-  const elements::KeptView view = cache_->candidates(x0, triangles_, edges_, &dx);
+  const contact::KeptView view = cache_->candidates(x0, triangles_, edges_, &dx);
   // Every pair that is not excluded is farther than the list's clearance: when that is
   // beyond `far`, no check would shorten the step, and it is taken as it is (the same 1
   // the checks would give, at the cost of a pass over the nodes). Converged Newton
@@ -276,8 +276,8 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
   const NodeMatrix x1 = x0 + dx;
   double fraction = 1.0;
   auto check = [&](const std::array<Index, 4>& n, bool edge_edge) {
-    const auto ccd = edge_edge ? elements::edge_edge_ccd
-                               : elements::point_triangle_ccd;
+    const auto ccd = edge_edge ? contact::edge_edge_ccd
+                               : contact::point_triangle_ccd;
     options.t_max = fraction;  // only an earlier impact can shorten the step further
     // ACCD's first advance, eta gap / rate, from a lower bound of the gap: when it already
     // reaches t_max, ACCD would find no impact (most candidates, at a fraction of its cost).
@@ -291,7 +291,7 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
     // Only the kept pairs that may be within `far` of each other at x0.
     for_each_kept_within(view, far, triangles_, edges_, check);
   } else {
-    for_each_pair(elements::contact_candidates(x0, triangles_, edges_, 0.0, dx, joined_),
+    for_each_pair(contact::contact_candidates(x0, triangles_, edges_, 0.0, dx, joined_),
                   triangles_, edges_, check);
   }
   return fraction;
@@ -324,7 +324,7 @@ FamilyPtr SelfContactFamily::from_table(const Table& t) {
     }
     tangent = static_cast<TangentForm>(static_cast<int>(code));
   }
-  elements::JoinedNodes joined;
+  contact::JoinedNodes joined;
   if (t.count("joined")) joined = require_column(t, "self_contact", "joined", true, 1).indices;
   return std::make_shared<SelfContactFamily>(triangles.indices, d_hat[0], kappa[0], tangent,
                                              std::move(joined));

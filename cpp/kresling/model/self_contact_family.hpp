@@ -2,8 +2,8 @@
 /// \file self_contact_family.hpp
 /// Contact between the model's panels (its triangles, within a pattern and between the
 /// modules of an arm): IPC's barrier on every point-triangle and edge-edge pair closer than
-/// d_hat (kernels: elements/contact_barrier.hpp, the edge-edge pairs mollified), the pairs
-/// found by the broad phase (elements/contact_broad_phase.hpp) at every evaluation.
+/// d_hat (kernels: contact/contact_barrier.hpp, the edge-edge pairs mollified), the pairs
+/// found by the broad phase (contact/contact_broad_phase.hpp) at every evaluation.
 ///
 ///        t2              A pair acts while its distance d < d_hat, with energy
 ///       /  \    o p      kappa b(d^2); pairs that share a node are never pairs, so a
@@ -20,9 +20,9 @@
 #include <memory>
 #include <vector>
 
-#include "kresling/elements/contact_barrier.hpp"
-#include "kresling/elements/contact_broad_phase.hpp"
-#include "kresling/elements/contact_candidate_cache.hpp"
+#include "kresling/contact/contact_barrier.hpp"
+#include "kresling/contact/contact_broad_phase.hpp"
+#include "kresling/contact/contact_candidate_cache.hpp"
 #include "kresling/model/element_family.hpp"
 
 namespace kresling::model {
@@ -47,7 +47,7 @@ class SelfContactFamily final : public ElementFamily {
 
   SelfContactFamily(std::vector<Index> triangles, double d_hat, double stiffness,
                     TangentForm tangent = TangentForm::Adaptive,
-                    elements::JoinedNodes joined = {});
+                    contact::JoinedNodes joined = {});
   static FamilyPtr from_table(const Table& table);
 
   const char* name() const override { return "self_contact"; }
@@ -80,18 +80,18 @@ class SelfContactFamily final : public ElementFamily {
   void find_active(const NodeMatrix& x, ActiveElements& out) const;
   // The pair energy of active element e of `active` at positions x (rest positions X for
   // the edge-edge mollifier's threshold).
-  elements::ScalarDerivatives<12> pair_energy(const NodeMatrix& X, const NodeMatrix& x,
+  contact::ScalarDerivatives<12> pair_energy(const NodeMatrix& X, const NodeMatrix& x,
                                               const ActiveElements& active, std::size_t e,
-                                              elements::BarrierHessian hessian) const;
+                                              contact::BarrierHessian hessian) const;
 
-  elements::TriangleMatrix triangles_;
-  elements::EdgeMatrix edges_;
+  contact::TriangleMatrix triangles_;
+  contact::EdgeMatrix edges_;
   double d_hat_, stiffness_;
   TangentForm tangent_ = TangentForm::Adaptive;
-  elements::JoinedNodes joined_;  // nodes that count as one (contact_broad_phase.hpp)
+  contact::JoinedNodes joined_;  // nodes that count as one (contact_broad_phase.hpp)
   // The broad phase's candidates kept across evaluations (the family's only state, a cache:
   // every result is that of a broad phase of its own).
-  std::unique_ptr<elements::ContactCandidateCache> cache_;
+  std::unique_ptr<contact::ContactCandidateCache> cache_;
 };
 
 }  // namespace kresling::model

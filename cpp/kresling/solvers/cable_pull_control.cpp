@@ -55,7 +55,7 @@ std::vector<Index> CablePullControl::recorded_dofs() const { return supported_do
 std::string CablePullControl::failure_message(int k, int steps, double t, int max_bisections,
                                               const std::string& reason) const {
   return "pull increment " + std::to_string(k) + " (of " + std::to_string(steps) + ", at " +
-         format_number(t) + " of the pulls) failed after " + std::to_string(max_bisections) +
+         format_rounded(t) + " of the pulls) failed after " + std::to_string(max_bisections) +
          " bisections; at full size: " + reason;
 }
 

@@ -29,16 +29,8 @@ void check_options(const DisplacementControlOptions& o) {
   check_adaptive_tolerance(o.adaptive_tolerance);
 }
 
-
-}  // namespace
-
-DisplacementControl::DisplacementControl(DisplacementControlOptions options)
-    : options_(options) {
-  check_options(options_);
-}
-
-PathResult DisplacementControl::solve(const model::Model& model, const VectorX& prescribed,
-                                      int steps, const VectorX& initial) {
+void check_inputs(const model::Model& model, const VectorX& prescribed, int steps,
+                  const VectorX& initial) {
   const Index n = model.num_dofs();
   if (prescribed.size() != n) {
     throw std::invalid_argument("prescribed: has " + std::to_string(prescribed.size()) +
@@ -50,10 +42,13 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
     throw std::invalid_argument("initial: must be empty or have one entry per DOF");
   }
   if (!initial.allFinite()) throw std::invalid_argument("initial: contains NaN or inf");
+}
 
+// The DOFs the solve holds: the supports and the driven ones (each driven DOF free).
+std::vector<std::uint8_t> held_dofs(const model::Model& model, const VectorX& prescribed) {
   std::vector<std::uint8_t> held = model.fixed();
   std::vector<Index> imposed;
-  for (Index i = 0; i < n; ++i) {
+  for (Index i = 0; i < model.num_dofs(); ++i) {
     if (prescribed[i] == 0.0) continue;
     if (model.fixed()[i]) {
       throw std::invalid_argument("prescribed: DOF " + std::to_string(i) + " (node " +
@@ -64,8 +59,52 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
     held[i] = 1;
   }
   if (imposed.empty()) throw std::invalid_argument("prescribed: every entry is zero");
-  require_rigid_body_constrained(model, held);
+  return held;
+}
 
+// Unbinds the solve's assemblers from its model when the solve returns (or throws).
+struct Unbind {
+  std::optional<assembly::Assembler>& assembler;
+  std::optional<assembly::Assembler>& full;
+  ~Unbind() {
+    assembler.reset();
+    full.reset();
+  }
+};
+
+FollowOptions follow_options(const DisplacementControlOptions& o) {
+  FollowOptions follow;
+  follow.newton = o.newton;
+  follow.max_bisections = o.max_bisections;
+  follow.extrapolation = o.extrapolation;
+  follow.reject_iterations = o.reject_iterations;
+  follow.stop = o.stop;
+  return follow;
+}
+
+AdaptiveOptions adaptive_options(const DisplacementControlOptions& o) {
+  AdaptiveOptions adaptive;
+  adaptive.newton = o.newton;
+  adaptive.reject_iterations = o.reject_iterations;
+  adaptive.max_bisections = o.max_bisections;
+  adaptive.tolerance = o.adaptive_tolerance;
+  adaptive.stop = o.stop;
+  return adaptive;
+}
+
+}  // namespace
+
+DisplacementControl::DisplacementControl(DisplacementControlOptions options)
+    : options_(options) {
+  check_options(options_);
+}
+
+PathResult DisplacementControl::solve(const model::Model& model, const VectorX& prescribed,
+                                      int steps, const VectorX& initial) {
+  check_inputs(model, prescribed, steps, initial);
+  const Index n = model.num_dofs();
+  const std::vector<std::uint8_t> held = held_dofs(model, prescribed);
+  require_rigid_body_constrained(model, held);
   // Reuse the pattern and the symbolic factorisation when only the geometry changed.
   if (!(workspace_ && held == held_ && workspace_->fits(model))) {
     workspace_ = std::make_unique<assembly::Workspace>(model, assembly::unmasked_dofs(held),
@@ -75,21 +114,9 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
   }
   // `model` is bound for this solve only: nothing here refers to it once solve returns.
   assembler_.emplace(model, *workspace_);
-  struct Unbind {
-    std::optional<assembly::Assembler>& assembler;
-    std::optional<assembly::Assembler>& full;
-    ~Unbind() {
-      assembler.reset();
-      full.reset();
-    }
-  } unbind{assembler_, full_assembler_};
+  const Unbind unbind{assembler_, full_assembler_};
   VectorX u = initial.size() ? initial : VectorX::Zero(n);
-  FollowOptions follow;
-  follow.newton = options_.newton;
-  follow.max_bisections = options_.max_bisections;
-  follow.extrapolation = options_.extrapolation;
-  follow.reject_iterations = options_.reject_iterations;
-  follow.stop = options_.stop;
+  FollowOptions follow = follow_options(options_);
   if (options_.merlin2_steps) {
     // MERLIN2's step control: its own rejection budget and damping, no extrapolated start.
     PathResult result;
@@ -108,14 +135,8 @@ PathResult DisplacementControl::solve(const model::Model& model, const VectorX& 
     }
     full_assembler_.emplace(model, *full_workspace_);
     DisplacementDrive drive(model, prescribed, u);
-    AdaptiveOptions adaptive_options;
-    adaptive_options.newton = options_.newton;
-    adaptive_options.reject_iterations = options_.reject_iterations;
-    adaptive_options.max_bisections = options_.max_bisections;
-    adaptive_options.tolerance = options_.adaptive_tolerance;
-    adaptive_options.stop = options_.stop;
-    PathResult adaptive =
-        follow_adaptive(drive, *assembler_, *full_assembler_, *solver_, u, steps, adaptive_options);
+    PathResult adaptive = follow_adaptive(drive, *assembler_, *full_assembler_, *solver_, u,
+                                          steps, adaptive_options(options_));
     if (adaptive.completed) return adaptive;
     // A path the adaptive increments cannot finish (their predictor sent past a snap that
     // the last equilibrium crosses, say) is followed again in fixed increments from the

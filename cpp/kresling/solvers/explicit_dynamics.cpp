@@ -40,6 +40,17 @@ long long step_count(const ExplicitOptions& o) {
   return n;
 }
 
+// A barrier limits each step; the explicit update takes whole steps.
+void refuse_barriers(const model::Model& model) {
+  for (const auto& family : model.families()) {
+    if (family->limits_steps()) {
+      throw std::invalid_argument(std::string("the model's ") + family->name() + " elements " +
+                                  "limit each step (a barrier): explicit integration cannot " +
+                                  "keep them; use an implicit scheme");
+    }
+  }
+}
+
 void refuse_unstable(const ExplicitOptions& o, const StableStep& stable) {
   if (o.time_step <= stable.time_step) return;
   throw std::invalid_argument(
@@ -182,13 +193,7 @@ TimeHistory integrate_explicit(const model::Model& model, const VectorX& masses,
   require_positive("mass_damping", o.mass_damping, /*allow_zero=*/true);
   require_positive("stiffness_damping", o.stiffness_damping, /*allow_zero=*/true);
   check_motion_input(model, masses, time_load, u0, v0);
-  for (const auto& family : model.families()) {
-    if (family->limits_steps()) {
-      throw std::invalid_argument(std::string("the model's ") + family->name() + " elements " +
-                                  "limit each step (a barrier): explicit integration cannot " +
-                                  "keep them; use an implicit scheme");
-    }
-  }
+  refuse_barriers(model);
   const Index n = model.num_dofs();
   VectorX u = u0.size() ? u0 : VectorX::Zero(n), v = v0.size() ? v0 : VectorX::Zero(n);
   VectorX inverse_mass = VectorX::Zero(n);

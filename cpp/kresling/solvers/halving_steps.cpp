@@ -34,11 +34,15 @@ bool HalvingSteps::next(Increment& increment) {
 
 void HalvingSteps::accepted(const Increment& increment) {
   t_ = increment.to;
+  first_failure_.clear();
   h_ = std::min(2.0 * h_, nominal_);
 }
 
 bool HalvingSteps::rejected(const Increment& increment, const std::string& reason) {
+  halved_ = !first_failure_.empty();
+  if (!halved_) first_failure_ = reason;
   reason_ = reason;
+  last_size_ = increment.size;
   if (h_ > 1.5 * smallest_) {
     h_ *= 0.5;
     return true;
@@ -52,7 +56,8 @@ void HalvingSteps::finish(const PathControl& control, PathResult& result) const 
   if (result.completed) return;
   result.failed_increment = result.attempted_increments;
   const int k = std::min(steps_, static_cast<int>(t_ * steps_) + 1);
-  result.message = control.failure_message(k, steps_, t_, max_bisections_, reason_);
+  result.message = control.failure_message(
+      k, steps_, t_, max_bisections_, failure_at_sizes(first_failure_, last_size_, reason_, halved_));
 }
 
 }  // namespace kresling::solvers

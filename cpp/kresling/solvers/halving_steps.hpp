@@ -34,6 +34,9 @@ class HalvingSteps final : public StepPolicy {
   double t_ = 0.0, h_;
   double failed_at_;
   std::string reason_;
+  std::string first_failure_;  // why the increment failed at its first size tried
+  double last_size_ = 0.0;     // the size of the last (smallest) attempt
+  bool halved_ = false;        // tried smaller than at its first size
 };
 
 }  // namespace kresling::solvers

@@ -39,8 +39,11 @@ void EqualIncrements::accepted(const Increment& increment) {
   if (k_ <= steps_) dt_ = target() - t_;
 }
 
-bool EqualIncrements::rejected(const Increment&, const std::string& reason) {
-  if (first_failure_.empty()) first_failure_ = reason;
+bool EqualIncrements::rejected(const Increment& increment, const std::string& reason) {
+  halved_ = !first_failure_.empty();
+  if (!halved_) first_failure_ = reason;
+  last_failure_ = reason;
+  last_size_ = increment.size;
   dt_ *= 0.5;
   if (dt_ < smallest_) failed_ = true;
   return !failed_;
@@ -59,7 +62,9 @@ void EqualIncrements::finish(const PathControl& control, PathResult& result) con
     return;
   }
   result.failed_increment = result.attempted_increments;
-  result.message = control.failure_message(k_, steps_, t_, max_bisections_, first_failure_);
+  result.message = control.failure_message(
+      k_, steps_, t_, max_bisections_,
+      failure_at_sizes(first_failure_, last_size_, last_failure_, halved_));
 }
 
 }  // namespace kresling::solvers

@@ -35,6 +35,9 @@ class EqualIncrements final : public StepPolicy {
   double dt_;          // the size of the next attempt within increment k
   bool failed_ = false;
   std::string first_failure_;  // why increment k failed at full size, the most telling
+  std::string last_failure_;   // why it failed at the last (smallest) size tried
+  double last_size_ = 0.0;     // that size
+  bool halved_ = false;        // tried smaller than at full size
   double target() const { return k_ == steps_ ? 1.0 : k_ * nominal_; }
 };
 

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -69,20 +67,39 @@ void check_options(const model::Model& model, const MgdcmOptions& options) {
   }
 }
 
-std::string short_number(double value) {
-  std::ostringstream out;
-  out << std::setprecision(3) << value;
-  return out.str();
-}
-
 // Why a stalled increment cannot go on, with the floor its corrections reached.
 std::string stall_message(int increment, double lambda, double floor, double tolerance,
                           const std::string& cause) {
   return "MGDCM increment " + std::to_string(increment) + " (from load factor " +
-         short_number(lambda) + "): Newton's corrections stall at " + short_number(floor) +
-         " mm, above the tolerance " + short_number(tolerance) +
+         format_rounded(lambda, 3) + "): Newton's corrections stall at " + format_rounded(floor, 3) +
+         " mm, above the tolerance " + format_rounded(tolerance, 3) +
          " mm (rounding near a singular tangent: a bifurcation or limit point), and " + cause +
-         "; a tolerance of " + short_number(10.0 * floor) + " mm or more clears this floor";
+         "; a tolerance of " + format_rounded(10.0 * floor, 3) + " mm or more clears this floor";
+}
+
+// A correction orthogonal to the predictor, the load factor's change (returned) solved
+// with it: du = dl dup + dur, from the load and residual directions dup and dur.
+double orthogonal_correction(const TangentSolver& solver, const assembly::Assembler& assembler,
+                             const VectorX& F, const VectorX& force, double lambda,
+                             const VectorX& predictor, const VectorX& dup, VectorX& du) {
+  const VectorX dur = solver.solve(VectorX(lambda * F - gather_rows(assembler, force)));
+  const double dl = -predictor.dot(dur) / predictor.dot(dup);
+  du = dl * dup + dur;
+  return dl;
+}
+
+// The internal force and tangent at u assembled and the tangent factorised (its stability
+// into `outcome`); false, saying so, when it is singular.
+bool factorize_at(assembly::Assembler& assembler, TangentSolver& solver, const VectorX& u,
+                  VectorX& force, NewtonOutcome& outcome) {
+  assembler.assemble(u, force, /*with_matrix=*/true);
+  const FactorizeInfo info = factorize_tangent(assembler, solver, u, force);
+  if (!info.ok) {
+    outcome.failure = "the tangent stiffness is singular";
+    return false;
+  }
+  outcome.negative_eigenvalues = info.negative_eigenvalues;
+  return true;
 }
 
 }  // namespace
@@ -95,7 +112,7 @@ void MgdcmControl::apply(double t, VectorX&, VectorX& external) { external = t *
 
 std::string MgdcmControl::failure_message(int k, int, double t, int,
                                           const std::string& reason) const {
-  return "MGDCM increment " + std::to_string(k) + " (from load factor " + short_number(t) +
+  return "MGDCM increment " + std::to_string(k) + " (from load factor " + format_rounded(t, 3) +
          ") failed: " + reason;
 }
 
@@ -126,26 +143,16 @@ NewtonOutcome MgdcmControl::correct(Increment& increment, assembly::Assembler& a
   while (outcome_.iterations < limit) {
     check_interrupt();
     ++outcome_.iterations;
-    assembler.assemble(u, force, /*with_matrix=*/true);
-    const FactorizeInfo info = factorize_tangent(assembler, solver, u, force);
-    if (!info.ok) {
-      outcome_.failure = "the tangent stiffness is singular";
-      break;
-    }
-    outcome_.negative_eigenvalues = info.negative_eigenvalues;
+    if (!factorize_at(assembler, solver, u, force, outcome_)) break;
     const VectorX dup = solver.solve(F);
     double dl;
     VectorX du;
-    if (outcome_.iterations == 1) {
-      // The predictor: the load increment along the path's direction.
+    if (outcome_.iterations == 1) {  // the predictor: along the path's direction
       dl = first_increment(dup, increment.size);
       trial_predictor_ = dup;
       du = dl * dup;
     } else {
-      // Corrections orthogonal to the predictor: the load factor solved with them.
-      const VectorX dur = solver.solve(VectorX(lambda * F - gather_rows(assembler, force)));
-      dl = -trial_predictor_.dot(dur) / trial_predictor_.dot(dup);
-      du = dl * dup + dur;
+      dl = orthogonal_correction(solver, assembler, F, force, lambda, trial_predictor_, dup, du);
     }
     if (!du.allFinite() || !std::isfinite(dl)) {
       outcome_.failure = "the iteration produced NaN";
@@ -224,7 +231,7 @@ bool MgdcmSteps::rejected(const Increment&, const std::string& reason) {
     const double longer = std::abs(step_factor_) * kJumpFactor;
     std::string cause;
     if (jumps_ == kMaxJumps) {
-      cause = "steps up to " + short_number(std::pow(kJumpFactor, kMaxJumps)) +
+      cause = "steps up to " + format_rounded(std::pow(kJumpFactor, kMaxJumps), 3) +
               " times longer stall too";
     } else if (longer > options_.max_step_factor) {
       cause = "a longer step would exceed max_step_factor (" +

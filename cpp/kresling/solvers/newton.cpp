@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include <cmath>
 
+#include "kresling/core/check.hpp"
 #include "kresling/core/interrupt.hpp"
 
 namespace kresling::solvers {
@@ -72,6 +74,87 @@ void apply_correction(assembly::Assembler& assembler, const VectorX& du, VectorX
   double fraction = extra ? extra->step_limit(u, step) : 1.0;
   if (limited) fraction = std::min(fraction, barrier_step_fraction(assembler.model(), u, step));
   u += (fraction < 1.0 ? fraction : 1.0) * step;
+}
+
+// Chord check first: the correction from the tangent already factorised (at the previous
+// iterate). Its error is ~ |du_prev| / l of itself (l: the geometry's length scale), while
+// Newton's final step leaves ~ |du|^2 / l <= tol^2 / l. So when |du_prev| |du_chord| <=
+// tol^2 the chord step is as accurate as a Newton step would be, and a new tangent (its
+// assembly and factorisation, most of an iteration's cost) is not needed. True when that
+// step converged (and was applied).
+bool chord_step_converges(assembly::Assembler& assembler, TangentSolver& solver, VectorX& u,
+                          const VectorX& external, ExtraTerms* extra, bool limited,
+                          double last_correction, double tol, VectorX& force) {
+  assembler.assemble(u, force, /*with_matrix=*/false);
+  if (extra) extra->add_force(u, force);
+  const VectorX residual = gather_rows(assembler, external - force);
+  if (!residual.allFinite()) return false;
+  const VectorX du = solver.solve(residual);
+  const double size = du.norm();
+  if (!(std::isfinite(size) && size <= tol && last_correction * size <= tol * tol)) {
+    return false;
+  }
+  apply_correction(assembler, du, u, extra, limited);
+  return true;
+}
+
+// A Newton step at u: the tangent assembled and factorised, the correction solved and
+// applied, its size in `correction`. False (with out.failure) when the force, the tangent
+// or the correction is not usable.
+bool newton_step(assembly::Assembler& assembler, TangentSolver& solver, VectorX& u,
+                 const VectorX& external, ExtraTerms* extra, bool limited, VectorX& force,
+                 NewtonOutcome& out, double& correction) {
+  assembler.assemble(u, force, /*with_matrix=*/true);
+  if (extra) {
+    extra->add_force(u, force);
+    extra->add_tangent(u, assembler.workspace());
+  }
+  const VectorX residual = gather_rows(assembler, external - force);
+  if (!residual.allFinite()) {
+    out.failure =
+        "the internal force is not finite (an element inverted or degenerated, or a hinge "
+        "folded flat)";
+    return false;
+  }
+  const FactorizeInfo info = factorize_tangent(assembler, solver, u, force, extra);
+  if (!info.ok) {
+    out.failure = "the tangent stiffness is singular (an unconstrained mechanism)";
+    return false;
+  }
+  out.negative_eigenvalues = info.negative_eigenvalues;
+  const VectorX du = solver.solve(residual);
+  if (!du.allFinite()) {
+    out.failure = "the Newton correction is not finite";
+    return false;
+  }
+  // The 1e-8 diagonal shift keeps a zero-stiffness mode factorisable; it shows up as a
+  // correction far larger than the structure.
+  if (du.norm() > 1e6 * mechanism_scale(assembler)) {
+    out.failure = "the Newton correction is unbounded (" + format_rounded(du.norm(), 3) +
+                  " mm): the free DOFs form a mechanism with no stiffness";
+    return false;
+  }
+  apply_correction(assembler, du, u, extra, limited);
+  correction = du.norm();
+  return true;
+}
+
+std::string gave_up_message(int iterations, double last_correction, double first_correction) {
+  char detail[160];
+  std::snprintf(detail, sizeof detail,
+                "Newton gave up after %d iterations (correction %.3g mm, still above "
+                "%.0e of the first, %.3g mm)",
+                iterations, last_correction, kGiveUpRatio, first_correction);
+  return detail;
+}
+
+// Say how it failed: corrections that stagnate around a small value are rounding noise of
+// an ill-conditioned tangent (the absolute tolerance is below what it can resolve).
+std::string not_converged_message(int limit, double last_correction, double tol) {
+  char detail[96];
+  std::snprintf(detail, sizeof detail, " (last correction %.3g mm > tolerance %.3g mm)",
+                last_correction, tol);
+  return "Newton did not converge in " + std::to_string(limit) + " iterations" + detail;
 }
 
 }  // namespace
@@ -142,59 +225,16 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
   while (out.iterations < limit) {
     check_interrupt();
     ++out.iterations;
-    if (factorized) {
-      // Chord check first: the correction from the tangent already factorised (at the
-      // previous iterate). Its error is ~ |du_prev| / l of itself (l: the geometry's length
-      // scale), while Newton's final step leaves ~ |du|^2 / l <= tol^2 / l. So when
-      // |du_prev| |du_chord| <= tol^2 the chord step is as accurate as a Newton step would
-      // be, and a new tangent (its assembly and factorisation, most of an iteration's
-      // cost) is not needed.
-      assembler.assemble(u, force, /*with_matrix=*/false);
-      if (extra) extra->add_force(u, force);
-      const VectorX residual = gather_rows(assembler, external - force);
-      if (residual.allFinite()) {
-        const VectorX du = solver.solve(residual);
-        const double size = du.norm();
-        if (std::isfinite(size) && size <= tol && last_correction * size <= tol * tol) {
-          apply_correction(assembler, du, u, extra, limited);
-          out.converged = true;
-          return out;
-        }
-      }
-    }
-    assembler.assemble(u, force, /*with_matrix=*/true);
-    if (extra) {
-      extra->add_force(u, force);
-      extra->add_tangent(u, assembler.workspace());
-    }
-    const VectorX residual = gather_rows(assembler, external - force);
-    if (!residual.allFinite()) {
-      out.failure =
-          "the internal force is not finite (an element inverted or degenerated, or a hinge "
-          "folded flat)";
+    if (factorized && chord_step_converges(assembler, solver, u, external, extra, limited,
+                                           last_correction, tol, force)) {
+      out.converged = true;
       return out;
     }
-    const FactorizeInfo info = factorize_tangent(assembler, solver, u, force, extra);
-    if (!info.ok) {
-      out.failure = "the tangent stiffness is singular (an unconstrained mechanism)";
+    if (!newton_step(assembler, solver, u, external, extra, limited, force, out,
+                     last_correction)) {
       return out;
     }
     factorized = true;
-    out.negative_eigenvalues = info.negative_eigenvalues;
-    const VectorX du = solver.solve(residual);
-    if (!du.allFinite()) {
-      out.failure = "the Newton correction is not finite";
-      return out;
-    }
-    // The 1e-8 diagonal shift keeps a zero-stiffness mode factorisable; it shows up as a
-    // correction far larger than the structure.
-    if (du.norm() > 1e6 * mechanism_scale(assembler)) {
-      out.failure = "the Newton correction is unbounded (" + std::to_string(du.norm()) +
-                    " mm): the free DOFs form a mechanism with no stiffness";
-      return out;
-    }
-    apply_correction(assembler, du, u, extra, limited);
-    last_correction = du.norm();
     if (last_correction <= tol) {
       out.converged = true;
       return out;
@@ -202,21 +242,11 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
     if (out.iterations == 1) first_correction = last_correction;
     if (options.give_up_after > 0 && out.iterations >= options.give_up_after &&
         last_correction > kGiveUpRatio * first_correction) {
-      char detail[160];
-      std::snprintf(detail, sizeof detail,
-                    "Newton gave up after %d iterations (correction %.3g mm, still above "
-                    "%.0e of the first, %.3g mm)",
-                    out.iterations, last_correction, kGiveUpRatio, first_correction);
-      out.failure = detail;
+      out.failure = gave_up_message(out.iterations, last_correction, first_correction);
       return out;
     }
   }
-  // Say how it failed: corrections that stagnate around a small value are rounding noise
-  // of an ill-conditioned tangent (the absolute tolerance is below what it can resolve).
-  char detail[96];
-  std::snprintf(detail, sizeof detail, " (last correction %.3g mm > tolerance %.3g mm)",
-                last_correction, tol);
-  out.failure = "Newton did not converge in " + std::to_string(limit) + " iterations" + detail;
+  out.failure = not_converged_message(limit, last_correction, tol);
   return out;
 }
 

@@ -9,6 +9,13 @@
 
 namespace kresling::solvers {
 
+std::string failure_at_sizes(const std::string& at_full_size, double smallest_size,
+                             const std::string& at_smallest, bool halved) {
+  if (!halved || at_smallest.empty()) return at_full_size;
+  return at_full_size + "; at the smallest size tried (" + format_rounded(smallest_size, 3) +
+         "): " + at_smallest;
+}
+
 std::vector<Index> supported_dofs(const model::Model& model) {
   std::vector<Index> dofs;
   for (Index i = 0; i < model.num_dofs(); ++i) {
@@ -80,7 +87,7 @@ std::vector<Index> LoadControl::recorded_dofs() const { return supported_dofs(mo
 
 std::string LoadControl::failure_message(int k, int steps, double t, int max_bisections,
                                          const std::string& reason) const {
-  return "no equilibrium found beyond load factor " + format_number(t) + " (load step " +
+  return "no equilibrium found beyond load factor " + format_rounded(t) + " (load step " +
          std::to_string(k) + " of " + std::to_string(steps) + ", " +
          std::to_string(max_bisections) + " bisections; a limit point? use MGDCM); at full size: " +
          reason;
@@ -130,7 +137,7 @@ double DisplacementDrive::monitored(const VectorX& forces, const VectorX&) const
 std::string DisplacementDrive::failure_message(int k, int steps, double t, int max_bisections,
                                                const std::string& reason) const {
   return "increment " + std::to_string(k) + " (of " + std::to_string(steps) + ", at " +
-         format_number(t) + " of the prescribed motion) failed after " +
+         format_rounded(t) + " of the prescribed motion) failed after " +
          std::to_string(max_bisections) + " bisections; at full size: " + reason;
 }
 
@@ -206,7 +213,7 @@ std::vector<Index> RestAngleControl::recorded_dofs() const { return supported_do
 std::string RestAngleControl::failure_message(int k, int steps, double t, int max_bisections,
                                               const std::string& reason) const {
   return "fold increment " + std::to_string(k) + " (of " + std::to_string(steps) + ", at " +
-         format_number(t) + " of the crease actuation) failed after " +
+         format_rounded(t) + " of the crease actuation) failed after " +
          std::to_string(max_bisections) + " bisections; at full size: " + reason;
 }
 

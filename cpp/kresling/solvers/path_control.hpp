@@ -32,6 +32,12 @@ struct ControlRates {
   VectorX energies;  ///< each family's energy rate at fixed u, in the model's order
 };
 
+/// The `reason` PathControl::failure_message gives after "at full size: ", for an increment
+/// that failed at every size tried: why it failed at full size and, when it was halved, why
+/// at the smallest size tried (that size in the path parameter, to 3 digits).
+std::string failure_at_sizes(const std::string& at_full_size, double smallest_size,
+                             const std::string& at_smallest, bool halved);
+
 class PathControl {
  public:
   virtual ~PathControl() = default;

@@ -31,190 +31,267 @@ void extrapolate(const std::vector<double>& ts, const std::vector<VectorX>& us, 
   }
 }
 
+// The increments of one path (follow_path), as named steps over the state they share:
+// the accepted state u, the increment being tried and the last equilibria (for the
+// extrapolated or secant start).
+class PathFollower {
+ public:
+  PathFollower(PathControl& control, assembly::Assembler& assembler, TangentSolver& solver,
+               VectorX& u, const FollowOptions& options, PathResult& result);
+  /// False when the caller's stop rule ended the path (completed).
+  bool run(StepPolicy& policy);
+
+ private:
+  bool accepted(const NewtonOutcome& o) const;
+  NewtonOutcome solve_at(VectorX& trial);
+  bool attempt(std::string& failure);
+  NewtonOutcome solve_extrapolated(VectorX& trial);
+  bool take(const VectorX& trial, const NewtonOutcome& outcome, std::string& failure);
+  void keep(PathStep step, const VectorX& trial, const NewtonOutcome& outcome);
+  void remember(double reached);
+  bool snap();
+
+  PathControl& control_;
+  assembly::Assembler& assembler_;
+  TangentSolver& solver_;
+  VectorX& u_;
+  const FollowOptions& options_;
+  PathResult& result_;
+  const std::vector<Index> recorded_;
+  const double sign_;
+  VectorX external_;
+  const int default_limit_;
+  const double default_reject_;
+  const std::vector<Index> held_;
+  Increment increment_;
+  // The last accepted points of the path, for the extrapolated starting guess (kept only
+  // when extrapolating).
+  const bool extrapolating_;
+  std::vector<double> path_t_{0.0};
+  std::vector<VectorX> path_u_;
+  VectorX internal_;  // the internal force at an accepted increment's end (control.accepted)
+  int previous_negative_ = 0;  // stability of the last accepted equilibrium
+  // The secant start's last two equilibria: the one before u and the increment between.
+  VectorX previous_u_;
+  double previous_size_ = 0.0;
+};
+
+// Newton stops at max_iterations even when an increment may take more before it is
+// rejected (reject_iterations above max_iterations).
+PathFollower::PathFollower(PathControl& control, assembly::Assembler& assembler,
+                           TangentSolver& solver, VectorX& u, const FollowOptions& options,
+                           PathResult& result)
+    : control_(control),
+      assembler_(assembler),
+      solver_(solver),
+      u_(u),
+      options_(options),
+      result_(result),
+      recorded_(control.recorded_dofs()),
+      sign_(control.recorded_sign()),
+      external_(VectorX::Zero(u.size())),
+      default_limit_(options.reject_iterations > 0
+                         ? std::min(options.reject_iterations, options.newton.max_iterations)
+                         : 0),
+      default_reject_(options.reject_iterations > 0
+                          ? static_cast<double>(options.reject_iterations)
+                          : std::numeric_limits<double>::infinity()),
+      held_(control.held_dofs()),
+      extrapolating_(options.extrapolation > 0) {
+  result_.constraint_dofs = recorded_;
+  result_.families = family_names(control.model_at(0.0));
+  if (control.changes_model()) assembler.rebind(control.model_at(0.0));
+  if (extrapolating_) path_u_.push_back(u);
+}
+
+bool PathFollower::accepted(const NewtonOutcome& o) const {
+  const double reject = increment_.reject_at > 0.0 ? increment_.reject_at : default_reject_;
+  return o.converged && o.iterations < reject;
+}
+
+// The control's corrector (or damped Newton) from `trial`. The drive's move of its held
+// DOFs is checked on its own (the barriers cannot shorten it): an increment whose
+// prescribed motion would close a contact fails and is halved, so a path never jumps
+// through a pair the free DOFs' corrections would keep apart.
+NewtonOutcome PathFollower::solve_at(VectorX& trial) {
+  control_.advance(increment_, u_, trial, external_);
+  if (!start_within_barriers(assembler_.model(), u_, trial, held_)) {
+    NewtonOutcome blocked;
+    blocked.failure = kHeldMoveBlocked;
+    return blocked;
+  }
+  const int limit = increment_.newton_limit > 0 ? increment_.newton_limit : default_limit_;
+  ExtraTerms* own = control_.extra_terms(increment_);
+  const NewtonOutcome outcome =
+      increment_.damping == 1.0
+          ? control_.correct(increment_, assembler_, solver_, trial, external_, options_.newton,
+                             limit, own ? own : options_.extra)
+          : damped_newton(assembler_, solver_, trial, options_.newton, increment_.damping);
+  result_.newton_iterations += outcome.iterations;
+  return outcome;
+}
+
+// One increment from its starting guess (the secant, an extrapolation or the previous
+// equilibrium); false with the reason when it is not accepted.
+bool PathFollower::attempt(std::string& failure) {
+  const double t_new = increment_.to;
+  if (control_.changes_model()) assembler_.rebind(control_.model_at(t_new));
+  VectorX trial = u_;
+  NewtonOutcome outcome;
+  if (options_.secant_start) {
+    if (previous_size_ > 0.0) trial += (increment_.size / previous_size_) * (u_ - previous_u_);
+    shorten_to_barriers(assembler_.model(), u_, trial);
+    outcome = solve_at(trial);
+  } else if (options_.extrapolation > 0 && increment_.damping == 1.0) {
+    outcome = solve_extrapolated(trial);
+  } else {
+    outcome = solve_at(trial);
+  }
+  if (!accepted(outcome)) {
+    failure = outcome.failure.empty()
+                  ? "Newton needed " + std::to_string(outcome.iterations) + " iterations"
+                  : outcome.failure;
+    return false;
+  }
+  return take(trial, outcome, failure);
+}
+
+// From the extrapolated guess. Two cases where the previous equilibrium is the better start
+// (MERLIN2's): past a limit point of the driven motion (a snap) the extrapolated guess lies
+// beyond the end of the branch and Newton fails, where from the previous equilibrium it
+// reaches the branch the structure snaps to; past a bifurcation the guess can land on an
+// unstable branch where the previous equilibrium leads on along a stable one. Retry from
+// there (before the increment is halved), and keep the result if it converged where the
+// guess did not, or is more stable.
+NewtonOutcome PathFollower::solve_extrapolated(VectorX& trial) {
+  extrapolate(path_t_, path_u_, options_.extrapolation, increment_.to, trial);
+  shorten_to_barriers(assembler_.model(), u_, trial);
+  NewtonOutcome outcome = solve_at(trial);
+  const bool failed = !accepted(outcome);
+  if (failed || outcome.negative_eigenvalues > previous_negative_) {
+    VectorX plain = u_;
+    const NewtonOutcome retry = solve_at(plain);
+    if (accepted(retry) &&
+        (failed || (retry.negative_eigenvalues >= 0 &&
+                    retry.negative_eigenvalues < outcome.negative_eigenvalues))) {
+      trial = plain;
+      outcome = retry;
+    }
+  }
+  return outcome;
+}
+
+// A converged increment, past the caller's check and recorded, becomes the path's next
+// point; false with the reason when the check refuses it or its step is not finite.
+bool PathFollower::take(const VectorX& trial, const NewtonOutcome& outcome,
+                        std::string& failure) {
+  if (options_.check) {
+    failure = options_.check(increment_, trial, outcome);
+    if (!failure.empty()) return false;
+  }
+  // Where the increment ended: t_new, unless the corrector solved for the parameter.
+  const double reached = increment_.to;
+  PathStep step =
+      control_.record(assembler_, trial, reached, outcome, recorded_, sign_, internal_);
+  if (!finite_step(step)) {
+    failure = kStepNotFinite;
+    return false;
+  }
+  if (options_.secant_start) {
+    previous_u_ = u_;
+    previous_size_ = increment_.size;
+  }
+  keep(std::move(step), trial, outcome);
+  remember(reached);
+  return true;
+}
+
+// Take a recorded step (from `outcome`, at `trial`) as the path's next point.
+void PathFollower::keep(PathStep step, const VectorX& trial, const NewtonOutcome& outcome) {
+  u_ = trial;
+  if (outcome.negative_eigenvalues >= 0) previous_negative_ = outcome.negative_eigenvalues;
+  result_.steps.push_back(std::move(step));
+  control_.accepted(increment_, u_, result_.steps.back(), internal_);
+}
+
+// The accepted point among the last four the extrapolation goes through.
+void PathFollower::remember(double reached) {
+  if (!extrapolating_) return;
+  path_t_.push_back(reached);
+  path_u_.push_back(u_);
+  if (path_t_.size() > 4) {  // the cubic's four points at most
+    path_t_.erase(path_t_.begin());
+    path_u_.erase(path_u_.begin());
+  }
+}
+
+// Past a limit point the structure snaps: at the failed increment's end, the energy
+// descends from the last equilibrium to a stable one, which becomes the path's next step.
+// The descent's steps are bounded by the model's size (not in mm), so it follows the
+// landscape at any scale.
+bool PathFollower::snap() {
+  if (control_.changes_model()) assembler_.rebind(control_.model_at(increment_.to));
+  VectorX trial = u_;
+  control_.advance(increment_, u_, trial, external_);
+  if (!start_within_barriers(assembler_.model(), u_, trial, held_)) return false;
+  const double size = model::node_extent(assembler_.model().nodes());
+  EnergyMinimumOptions descent;
+  descent.tolerance = options_.newton.tolerance;
+  descent.max_iterations = 2000;
+  descent.max_step = 0.01 * size;
+  descent.escape_step = 1e-3 * size;
+  // Dense eigen-decompositions up to kMaxSnapDofs, shifted sparse Cholesky beyond.
+  const EnergyMinimum rest =
+      assembler_.size() > kMaxSnapDofs
+          ? minimize_energy_sparse(assembler_, solver_, trial, descent, &external_)
+          : minimize_energy(assembler_, trial, descent, &external_);
+  result_.newton_iterations += rest.iterations;
+  if (!rest.converged) return false;
+  NewtonOutcome outcome;
+  outcome.converged = true;
+  outcome.iterations = rest.iterations;
+  outcome.negative_eigenvalues = rest.negative_eigenvalues;
+  PathStep step =
+      control_.record(assembler_, trial, increment_.to, outcome, recorded_, sign_, internal_);
+  if (!finite_step(step)) return false;
+  step.snapped = true;
+  keep(std::move(step), trial, outcome);
+  // The path jumped: nothing before the snap extrapolates past it.
+  previous_size_ = 0.0;
+  if (extrapolating_) {
+    path_t_.assign(1, increment_.to);
+    path_u_.assign(1, u_);
+  }
+  return true;
+}
+
+bool PathFollower::run(StepPolicy& policy) {
+  while (policy.next(increment_)) {
+    check_interrupt();
+    ++result_.attempted_increments;
+    std::string failure;
+    if (attempt(failure)) {
+      policy.accepted(increment_);
+    } else if (policy.rejected(increment_, failure)) {
+      continue;  // tried again smaller
+    } else if (!(options_.snap && snap() && policy.resume(increment_))) {
+      break;
+    }
+    if (options_.stop && options_.stop(result_.steps.back())) {
+      result_.completed = true;
+      return false;
+    }
+  }
+  return true;
+}
 
 }  // namespace
 
 void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSolver& solver,
                  VectorX& u, StepPolicy& policy, const FollowOptions& options,
                  PathResult& result) {
-  const std::vector<Index> recorded = control.recorded_dofs();
-  const double sign = control.recorded_sign();
-  result.constraint_dofs = recorded;
-  result.families = family_names(control.model_at(0.0));
-  if (control.changes_model()) assembler.rebind(control.model_at(0.0));
-  VectorX external = VectorX::Zero(u.size());
-  const int budget = options.reject_iterations;
-  // Newton stops at max_iterations even when an increment may take more before it is
-  // rejected (reject_iterations above max_iterations).
-  const int default_limit = budget > 0 ? std::min(budget, options.newton.max_iterations) : 0;
-  const double default_reject =
-      budget > 0 ? static_cast<double>(budget) : std::numeric_limits<double>::infinity();
-  Increment increment;
-  auto accepted = [&](const NewtonOutcome& o) {
-    const double reject = increment.reject_at > 0.0 ? increment.reject_at : default_reject;
-    return o.converged && o.iterations < reject;
-  };
-  const std::vector<Index> held = control.held_dofs();
-  auto solve_at = [&](VectorX& trial) {
-    control.advance(increment, u, trial, external);
-    // The drive's move of its held DOFs is checked on its own (the barriers cannot shorten
-    // it): an increment whose prescribed motion would close a contact fails and is halved,
-    // so a path never jumps through a pair the free DOFs' corrections would keep apart.
-    if (!start_within_barriers(assembler.model(), u, trial, held)) {
-      NewtonOutcome blocked;
-      blocked.failure = kHeldMoveBlocked;
-      return blocked;
-    }
-    const int limit = increment.newton_limit > 0 ? increment.newton_limit : default_limit;
-    ExtraTerms* own = control.extra_terms(increment);
-    const NewtonOutcome outcome =
-        increment.damping == 1.0
-            ? control.correct(increment, assembler, solver, trial, external, options.newton,
-                              limit, own ? own : options.extra)
-            : damped_newton(assembler, solver, trial, options.newton, increment.damping);
-    result.newton_iterations += outcome.iterations;
-    return outcome;
-  };
-  // The last accepted points of the path, for the extrapolated starting guess (kept only
-  // when extrapolating).
-  const bool extrapolating = options.extrapolation > 0;
-  std::vector<double> path_t{0.0};
-  std::vector<VectorX> path_u;
-  if (extrapolating) path_u.push_back(u);
-  VectorX internal;  // the internal force at an accepted increment's end (control.accepted)
-  int previous_negative = 0;  // stability of the last accepted equilibrium
-  // The secant start's last two equilibria: the one before u and the increment between.
-  VectorX previous_u;
-  double previous_size = 0.0;
-  // Take a recorded step (from `outcome`, at `trial`) as the path's next point.
-  auto keep = [&](PathStep step, const VectorX& trial, const NewtonOutcome& outcome) {
-    u = trial;
-    if (outcome.negative_eigenvalues >= 0) previous_negative = outcome.negative_eigenvalues;
-    result.steps.push_back(std::move(step));
-    control.accepted(increment, u, result.steps.back(), internal);
-  };
-  auto attempt = [&](std::string& failure) {
-    const double t_new = increment.to;
-    if (control.changes_model()) assembler.rebind(control.model_at(t_new));
-    VectorX trial = u;
-    NewtonOutcome outcome;
-    if (options.secant_start) {
-      if (previous_size > 0.0) trial += (increment.size / previous_size) * (u - previous_u);
-      shorten_to_barriers(assembler.model(), u, trial);
-      outcome = solve_at(trial);
-    } else if (options.extrapolation > 0 && increment.damping == 1.0) {
-      extrapolate(path_t, path_u, options.extrapolation, t_new, trial);
-      shorten_to_barriers(assembler.model(), u, trial);
-      outcome = solve_at(trial);
-      // Two cases where the previous equilibrium is the better start (MERLIN2's): past a
-      // limit point of the driven motion (a snap) the extrapolated guess lies beyond the
-      // end of the branch and Newton fails, where from the previous equilibrium it reaches
-      // the branch the structure snaps to; past a bifurcation the guess can land on an
-      // unstable branch where the previous equilibrium leads on along a stable one. Retry
-      // from there (before the increment is halved), and keep the result if it converged
-      // where the guess did not, or is more stable.
-      const bool failed = !accepted(outcome);
-      if (failed || outcome.negative_eigenvalues > previous_negative) {
-        VectorX plain = u;
-        const NewtonOutcome retry = solve_at(plain);
-        if (accepted(retry) &&
-            (failed || (retry.negative_eigenvalues >= 0 &&
-                        retry.negative_eigenvalues < outcome.negative_eigenvalues))) {
-          trial = plain;
-          outcome = retry;
-        }
-      }
-    } else {
-      outcome = solve_at(trial);
-    }
-    if (!accepted(outcome)) {
-      failure = outcome.failure.empty()
-                    ? "Newton needed " + std::to_string(outcome.iterations) + " iterations"
-                    : outcome.failure;
-      return false;
-    }
-    if (options.check) {
-      failure = options.check(increment, trial, outcome);
-      if (!failure.empty()) return false;
-    }
-    // Where the increment ended: t_new, unless the corrector solved for the parameter.
-    const double reached = increment.to;
-    PathStep step = control.record(assembler, trial, reached, outcome, recorded, sign, internal);
-    if (!finite_step(step)) {
-      failure = kStepNotFinite;
-      return false;
-    }
-    if (options.secant_start) {
-      previous_u = u;
-      previous_size = increment.size;
-    }
-    keep(std::move(step), trial, outcome);
-    if (extrapolating) {
-      path_t.push_back(reached);
-      path_u.push_back(u);
-      if (path_t.size() > 4) {  // the cubic's four points at most
-        path_t.erase(path_t.begin());
-        path_u.erase(path_u.begin());
-      }
-    }
-    return true;
-  };
-  // Past a limit point the structure snaps: at the failed increment's end, the energy
-  // descends from the last equilibrium to a stable one, which becomes the path's next step.
-  // The descent's steps are bounded by the model's size (not in mm), so it follows the
-  // landscape at any scale.
-  auto snap = [&]() {
-    if (control.changes_model()) assembler.rebind(control.model_at(increment.to));
-    VectorX trial = u;
-    control.advance(increment, u, trial, external);
-    if (!start_within_barriers(assembler.model(), u, trial, held)) return false;
-    const double size = model::node_extent(assembler.model().nodes());
-    EnergyMinimumOptions descent;
-    descent.tolerance = options.newton.tolerance;
-    descent.max_iterations = 2000;
-    descent.max_step = 0.01 * size;
-    descent.escape_step = 1e-3 * size;
-    // Dense eigen-decompositions up to kMaxSnapDofs, shifted sparse Cholesky beyond.
-    const EnergyMinimum rest =
-        assembler.size() > kMaxSnapDofs
-            ? minimize_energy_sparse(assembler, solver, trial, descent, &external)
-            : minimize_energy(assembler, trial, descent, &external);
-    result.newton_iterations += rest.iterations;
-    if (!rest.converged) return false;
-    NewtonOutcome outcome;
-    outcome.converged = true;
-    outcome.iterations = rest.iterations;
-    outcome.negative_eigenvalues = rest.negative_eigenvalues;
-    PathStep step =
-        control.record(assembler, trial, increment.to, outcome, recorded, sign, internal);
-    if (!finite_step(step)) return false;
-    step.snapped = true;
-    keep(std::move(step), trial, outcome);
-    // The path jumped: nothing before the snap extrapolates past it.
-    previous_size = 0.0;
-    if (extrapolating) {
-      path_t.assign(1, increment.to);
-      path_u.assign(1, u);
-    }
-    return true;
-  };
-  while (policy.next(increment)) {
-    check_interrupt();
-    ++result.attempted_increments;
-    std::string failure;
-    if (attempt(failure)) {
-      policy.accepted(increment);
-    } else if (policy.rejected(increment, failure)) {
-      continue;  // tried again smaller
-    } else if (!(options.snap && snap() && policy.resume(increment))) {
-      break;
-    }
-    if (options.stop && options.stop(result.steps.back())) {
-      result.completed = true;
-      return;
-    }
-  }
-  policy.finish(control, result);
+  PathFollower follower(control, assembler, solver, u, options, result);
+  if (follower.run(policy)) policy.finish(control, result);
 }
 
 void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSolver& solver,

@@ -8,11 +8,10 @@
 
 namespace kresling::solvers {
 
-void require_rigid_body_constrained(const model::Model& model,
-                                    const std::vector<std::uint8_t>& supported) {
-  // DOFs a family ties to the ground (anchor springs) block rigid motions as supports do.
-  std::vector<std::uint8_t> held = supported;
-  for (const auto& family : model.families()) family->mark_grounded_dofs(held);
+namespace {
+
+void require_every_node_on_a_bar(const model::Model& model,
+                                 const std::vector<std::uint8_t>& held) {
   const NodeMatrix& X = model.nodes();
   std::vector<char> has_bar(static_cast<std::size_t>(X.rows()), 0);
   for (const auto& bar : model.bars()) has_bar[bar.nodes[0]] = has_bar[bar.nodes[1]] = 1;
@@ -23,10 +22,13 @@ void require_rigid_body_constrained(const model::Model& model,
                                   "connect it or support it");
     }
   }
-  const Vector3 centre = X.colwise().mean().transpose();
-  const double scale = std::max((X.rowwise() - centre.transpose()).rowwise().norm().maxCoeff(), 1e-300);
-  // Rows: held DOFs; columns: the six rigid motions (rotations scaled by the model's size
-  // so that all columns are commensurate).
+}
+
+// Rows: held DOFs; columns: the six rigid motions (rotations about `centre` scaled by the
+// model's size `scale` so that all columns are commensurate).
+Eigen::MatrixXd rigid_motions_of_held_dofs(const NodeMatrix& X,
+                                           const std::vector<std::uint8_t>& held,
+                                           const Vector3& centre, double scale) {
   std::vector<Eigen::Matrix<double, 1, 6>> rows;
   for (Index i = 0; i < X.rows(); ++i) {
     const Vector3 r = (X.row(i).transpose() - centre) / scale;
@@ -42,6 +44,21 @@ void require_rigid_body_constrained(const model::Model& model,
   }
   Eigen::MatrixXd R(static_cast<Index>(rows.size()), 6);
   for (std::size_t i = 0; i < rows.size(); ++i) R.row(static_cast<Index>(i)) = rows[i];
+  return R;
+}
+
+}  // namespace
+
+void require_rigid_body_constrained(const model::Model& model,
+                                    const std::vector<std::uint8_t>& supported) {
+  // DOFs a family ties to the ground (anchor springs) block rigid motions as supports do.
+  std::vector<std::uint8_t> held = supported;
+  for (const auto& family : model.families()) family->mark_grounded_dofs(held);
+  require_every_node_on_a_bar(model, held);
+  const NodeMatrix& X = model.nodes();
+  const Vector3 centre = X.colwise().mean().transpose();
+  const double scale = std::max((X.rowwise() - centre.transpose()).rowwise().norm().maxCoeff(), 1e-300);
+  const Eigen::MatrixXd R = rigid_motions_of_held_dofs(X, held, centre, scale);
   // Free motions: the (numerical) null space of R.
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(R.rows() ? R : Eigen::MatrixXd::Zero(1, 6),
                                         Eigen::ComputeFullV);

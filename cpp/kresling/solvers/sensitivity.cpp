@@ -171,17 +171,19 @@ VectorX EquilibriumSensitivity::adjoint(const VectorX& g) const {
   return lambda;
 }
 
-PathSensitivityResult path_sensitivity(const model::Model& model,
-                                       const std::vector<VectorX>& states,
-                                       const std::vector<double>& fractions,
-                                       const std::vector<Index>& held,
-                                       const Eigen::MatrixXd& positions,
-                                       const std::vector<ColumnMotion>& columns,
-                                       const Eigen::MatrixXd& drive) {
-  const Index n = model.num_dofs();
-  const Index P = positions.cols() > 0 ? positions.cols()
-                  : !columns.empty()   ? columns.front().weights.cols()
-                                       : drive.cols();
+namespace {
+
+// A family's columns among a path sensitivity's: the family evaluates its elements once
+// per state for all of them (ElementFamily::parameter_derivatives).
+struct FamilyColumns {
+  const model::ElementFamily* family;
+  std::vector<std::string> names;
+  std::vector<const Eigen::MatrixXd*> weights;
+};
+
+void check_path_inputs(Index n, Index P, const std::vector<VectorX>& states,
+                       const std::vector<double>& fractions, const Eigen::MatrixXd& positions,
+                       const Eigen::MatrixXd& drive) {
   if (fractions.size() != states.size()) {
     throw std::invalid_argument("fractions: has " + std::to_string(fractions.size()) +
                                 " entries; must have one per state (" +
@@ -194,13 +196,11 @@ PathSensitivityResult path_sensitivity(const model::Model& model,
     throw std::invalid_argument("drive must be 3N x P = " + std::to_string(n) + " x " +
                                 std::to_string(P));
   }
-  // The columns grouped by family: each family evaluates its elements once per state for
-  // all its columns (ElementFamily::parameter_derivatives).
-  struct FamilyColumns {
-    const model::ElementFamily* family;
-    std::vector<std::string> names;
-    std::vector<const Eigen::MatrixXd*> weights;
-  };
+}
+
+// The columns grouped by family, in the order the families first appear.
+std::vector<FamilyColumns> group_by_family(const model::Model& model,
+                                           const std::vector<ColumnMotion>& columns, Index P) {
   std::vector<FamilyColumns> groups;
   for (const ColumnMotion& c : columns) {
     const model::ElementFamily* f = model.family(c.family);
@@ -215,6 +215,47 @@ PathSensitivityResult path_sensitivity(const model::Model& model,
     it->names.push_back(c.column);
     it->weights.push_back(&c.weights);
   }
+  return groups;
+}
+
+// The columns' explicit derivatives at u, weighted, added to the force's (n x P) and the
+// energy's (1 x P).
+void add_column_derivatives(const model::Model& model, const VectorX& u,
+                            const std::vector<FamilyColumns>& groups,
+                            std::vector<model::ParameterDerivative>& derivatives,
+                            Eigen::MatrixXd& dforce, Eigen::RowVectorXd& denergy) {
+  for (const FamilyColumns& g : groups) {
+    g.family->parameter_derivatives(model.nodes(), u, g.names, derivatives);
+    for (std::size_t c = 0; c < g.names.size(); ++c) {
+      const model::ParameterDerivative& d = derivatives[c];
+      const Eigen::MatrixXd& W = *g.weights[c];
+      if (W.rows() != d.energy.size()) {
+        throw std::invalid_argument(std::string(g.family->name()) + "." + g.names[c] +
+                                    ": weights have " + std::to_string(W.rows()) +
+                                    " rows; the column has " + std::to_string(d.energy.size()) +
+                                    " entries");
+      }
+      for (const auto& t : d.force) dforce.row(t.row()) += t.value() * W.row(t.col());
+      denergy += d.energy.transpose() * W;
+    }
+  }
+}
+
+}  // namespace
+
+PathSensitivityResult path_sensitivity(const model::Model& model,
+                                       const std::vector<VectorX>& states,
+                                       const std::vector<double>& fractions,
+                                       const std::vector<Index>& held,
+                                       const Eigen::MatrixXd& positions,
+                                       const std::vector<ColumnMotion>& columns,
+                                       const Eigen::MatrixXd& drive) {
+  const Index n = model.num_dofs();
+  const Index P = positions.cols() > 0 ? positions.cols()
+                  : !columns.empty()   ? columns.front().weights.cols()
+                                       : drive.cols();
+  check_path_inputs(n, P, states, fractions, positions, drive);
+  const std::vector<FamilyColumns> groups = group_by_family(model, columns, P);
   PathSensitivityResult r;
   r.energy = Eigen::MatrixXd::Zero(static_cast<Index>(states.size()), P);
   if (states.empty()) return r;
@@ -236,21 +277,7 @@ PathSensitivityResult path_sensitivity(const model::Model& model,
       dforce = s.tangent() * positions;  // x = X + u: the positions move with X
       denergy = s.internal_force().transpose() * positions;
     }
-    for (const FamilyColumns& g : groups) {
-      g.family->parameter_derivatives(model.nodes(), u, g.names, derivatives);
-      for (std::size_t c = 0; c < g.names.size(); ++c) {
-        const model::ParameterDerivative& d = derivatives[c];
-        const Eigen::MatrixXd& W = *g.weights[c];
-        if (W.rows() != d.energy.size()) {
-          throw std::invalid_argument(std::string(g.family->name()) + "." + g.names[c] +
-                                      ": weights have " + std::to_string(W.rows()) +
-                                      " rows; the column has " + std::to_string(d.energy.size()) +
-                                      " entries");
-        }
-        for (const auto& t : d.force) dforce.row(t.row()) += t.value() * W.row(t.col());
-        denergy += d.energy.transpose() * W;
-      }
-    }
+    add_column_derivatives(model, u, groups, derivatives, dforce, denergy);
     Eigen::MatrixXd motion;
     if (drive.cols() > 0) {
       motion.resize(H, P);

@@ -33,6 +33,70 @@ std::pair<double, double> top_ritz_value(const std::vector<double>& alphas,
   return {eigen.eigenvalues()[k - 1], eigen.eigenvectors()(k - 1, k - 1)};
 }
 
+void check_masses(const model::Model& model, const VectorX& masses, const VectorX& u) {
+  const Index n = model.num_dofs();
+  if (masses.size() != n || (u.size() != 0 && u.size() != n)) {
+    throw std::invalid_argument("masses and u: must have one entry per DOF (" +
+                                std::to_string(n) + ")");
+  }
+  for (Index i = 0; i < n; ++i) {
+    if (!model.fixed()[i] && !(masses[i] > 0.0 && std::isfinite(masses[i]))) {
+      throw std::invalid_argument("masses: DOF " + std::to_string(i) + " is free and has mass " +
+                                  format_number(masses[i]) + ": every free DOF needs a mass > 0");
+    }
+  }
+}
+
+// Gershgorin: every eigenvalue of A = D K D lies within max_i sum_j |A_ij|.
+double largest_row_sum(const assembly::SparseMatrix& K, const VectorX& d) {
+  VectorX row_sums = VectorX::Zero(d.size());
+  for (Index c = 0; c < K.outerSize(); ++c) {
+    for (assembly::SparseMatrix::InnerIterator it(K, c); it; ++it) {
+      row_sums[it.row()] += std::abs(it.value()) * d[it.row()] * d[c];
+    }
+  }
+  return row_sums.maxCoeff();
+}
+
+// Lanczos on A = D K D from a fixed pseudo-random start (every mode present in it): the
+// largest eigenvalue theta of its tridiagonal T_k approaches lambda_max from below, and the
+// residual r = beta_k |s_k| of its Ritz vector bounds the distance to an eigenvalue, so
+// theta + r is returned (its iterations in `iterations`).
+double lanczos_top(const assembly::SparseMatrix& K, const VectorX& d, int& iterations) {
+  const Index m = d.size();
+  VectorX q(m), previous = VectorX::Zero(m), w(m);
+  std::uint64_t state = 0x9E3779B97F4A7C15ull;
+  for (Index i = 0; i < m; ++i) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    q[i] = static_cast<double>(state >> 11) * 0x1.0p-53 - 0.5;
+  }
+  q.normalize();
+  std::vector<double> alphas, betas;
+  double beta = 0.0, rho = 0.0;
+  const int most = static_cast<int>(std::min<Index>(m, kMaxLanczos));
+  for (int k = 1; k <= most; ++k) {
+    w = d.cwiseProduct(K * d.cwiseProduct(q)) - beta * previous;
+    const double alpha = q.dot(w);
+    w -= alpha * q;
+    beta = w.norm();
+    alphas.push_back(alpha);
+    iterations = k;
+    if (k % 5 != 0 && k != most && beta > 1e-14 * std::abs(alpha)) {
+      betas.push_back(beta);
+      previous.swap(q);
+      q = w / beta;
+      continue;
+    }
+    const auto [theta, last] = top_ritz_value(alphas, betas);
+    rho = theta + beta * std::abs(last);
+    if (beta * std::abs(last) <= 1e-10 * std::abs(theta) || beta <= 1e-14 * std::abs(alpha)) break;
+    betas.push_back(beta);
+    previous.swap(q);
+    q = w / beta;
+  }
+  return rho;
+}
+
 }  // namespace
 
 double damped_stable_step(double omega, double mass_damping, double stiffness_damping) {
@@ -48,17 +112,8 @@ StableStep stable_time_step(const model::Model& model, const VectorX& masses, co
                             double mass_damping, double stiffness_damping) {
   require_positive("mass_damping", mass_damping, /*allow_zero=*/true);
   require_positive("stiffness_damping", stiffness_damping, /*allow_zero=*/true);
+  check_masses(model, masses, u);
   const Index n = model.num_dofs();
-  if (masses.size() != n || (u.size() != 0 && u.size() != n)) {
-    throw std::invalid_argument("masses and u: must have one entry per DOF (" +
-                                std::to_string(n) + ")");
-  }
-  for (Index i = 0; i < n; ++i) {
-    if (!model.fixed()[i] && !(masses[i] > 0.0 && std::isfinite(masses[i]))) {
-      throw std::invalid_argument("masses: DOF " + std::to_string(i) + " is free and has mass " +
-                                  format_number(masses[i]) + ": every free DOF needs a mass > 0");
-    }
-  }
   assembly::Assembler assembler(model, assembly::unmasked_dofs(model.fixed()), 0.0,
                                 assembly::Storage::Full);
   VectorX force;
@@ -80,49 +135,9 @@ StableStep stable_time_step(const model::Model& model, const VectorX& masses, co
   for (Index i = 0; i < n; ++i) {
     if (rows[i] >= 0) d[rows[i]] = 1.0 / std::sqrt(masses[i]);
   }
-  // Gershgorin: every eigenvalue lies within max_i sum_j |A_ij|.
-  VectorX row_sums = VectorX::Zero(m);
-  for (Index c = 0; c < K.outerSize(); ++c) {
-    for (assembly::SparseMatrix::InnerIterator it(K, c); it; ++it) {
-      row_sums[it.row()] += std::abs(it.value()) * d[it.row()] * d[c];
-    }
-  }
-  out.omega_bound = std::sqrt(row_sums.maxCoeff());
-  // Lanczos from a fixed pseudo-random start (every mode present in it): the largest
-  // eigenvalue theta of its tridiagonal T_k approaches lambda_max from below, and the
-  // residual r = beta_k |s_k| of its Ritz vector bounds the distance to an eigenvalue, so
-  // theta + r is taken (capped by Gershgorin's bound).
-  VectorX q(m), previous = VectorX::Zero(m), w(m);
-  std::uint64_t state = 0x9E3779B97F4A7C15ull;
-  for (Index i = 0; i < m; ++i) {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    q[i] = static_cast<double>(state >> 11) * 0x1.0p-53 - 0.5;
-  }
-  q.normalize();
-  std::vector<double> alphas, betas;
-  double beta = 0.0, rho = 0.0;
-  const int most = static_cast<int>(std::min<Index>(m, kMaxLanczos));
-  for (int k = 1; k <= most; ++k) {
-    w = d.cwiseProduct(K * d.cwiseProduct(q)) - beta * previous;
-    const double alpha = q.dot(w);
-    w -= alpha * q;
-    beta = w.norm();
-    alphas.push_back(alpha);
-    out.iterations = k;
-    if (k % 5 != 0 && k != most && beta > 1e-14 * std::abs(alpha)) {
-      betas.push_back(beta);
-      previous.swap(q);
-      q = w / beta;
-      continue;
-    }
-    const auto [theta, last] = top_ritz_value(alphas, betas);
-    rho = theta + beta * std::abs(last);
-    if (beta * std::abs(last) <= 1e-10 * std::abs(theta) || beta <= 1e-14 * std::abs(alpha)) break;
-    betas.push_back(beta);
-    previous.swap(q);
-    q = w / beta;
-  }
-  rho = std::min(rho, row_sums.maxCoeff());
+  const double gershgorin = largest_row_sum(K, d);
+  out.omega_bound = std::sqrt(gershgorin);
+  const double rho = std::min(lanczos_top(K, d, out.iterations), gershgorin);
   out.omega_max = std::sqrt(std::max(rho, 0.0));
   out.time_step = damped_stable_step(out.omega_max, mass_damping, stiffness_damping);
   return out;

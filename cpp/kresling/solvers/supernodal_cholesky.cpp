@@ -87,7 +87,20 @@ struct SupernodalCholesky::Impl {
   std::vector<int> next, position;  // per supernode: next in its list; its next row to use
   std::vector<Scratch> per_thread;  // scratch of each thread, sized by analyze
 
+  SupernodalCholesky::Analysis symbolic(const SparseMatrix& K,
+                                        const std::vector<int>& orderings);
+  void build_tree();
+  void map_entries(const SparseMatrix& K);
   void schedule(int threads);
+  // The tree's supernodes weighed for the schedule (their own and their subtree's flops).
+  struct Weights {
+    std::vector<double> work, own;
+    std::vector<std::vector<int>> children;
+    std::vector<int> roots;
+  };
+  Weights weigh() const;
+  std::vector<int> split_tree(const Weights& w, int threads) const;
+  void assign_subtrees(const Weights& w, const std::vector<int>& pieces, int threads);
   bool factor_supernode(int s, Scratch& scratch);
   bool factor_diagonal(Block S, int ncol, int nrow);
   bool factorize(const SparseMatrix& K, bool with_d);
@@ -119,6 +132,19 @@ SupernodalCholesky::Analysis SupernodalCholesky::analyze(const SparseMatrix& K,
     throw std::invalid_argument("SupernodalCholesky::analyze: orderings must name 1 to " +
                                 std::to_string(CHOLMOD_MAXMETHODS) + " orderings");
   }
+  analysis = m.symbolic(K, orderings);
+  m.build_tree();
+  m.map_entries(K);
+  m.next.assign(m.nsuper, -1);
+  m.position.assign(m.nsuper, 0);
+  use_threads(threads);
+  return analysis;
+}
+
+// CHOLMOD's supernodal symbolic analysis of K with the best of `orderings`: the
+// permutation and the supernodes' columns, rows and value offsets; the values zeroed.
+SupernodalCholesky::Analysis SupernodalCholesky::Impl::symbolic(
+    const SparseMatrix& K, const std::vector<int>& orderings) {
   cholmod_common common;
   cholmod_start(&common);
   common.print = 0;
@@ -136,65 +162,67 @@ SupernodalCholesky::Analysis SupernodalCholesky::analyze(const SparseMatrix& K,
     cholmod_finish(&common);
     throw std::runtime_error("SupernodalCholesky: CHOLMOD's symbolic analysis failed");
   }
-  m.nsuper = static_cast<int>(L->nsuper);
+  nsuper = static_cast<int>(L->nsuper);
   auto copy = [](const void* p, std::size_t count) {
     const int* x = static_cast<const int*>(p);
     return std::vector<int>(x, x + count);
   };
-  m.perm = copy(L->Perm, static_cast<std::size_t>(m.n));
-  m.super = copy(L->super, m.nsuper + 1);
-  m.pi = copy(L->pi, m.nsuper + 1);
-  m.px = copy(L->px, m.nsuper + 1);
-  m.rows = copy(L->s, static_cast<std::size_t>(m.pi[m.nsuper]));
-  const std::size_t xsize = static_cast<std::size_t>(m.px[m.nsuper]);
+  perm = copy(L->Perm, static_cast<std::size_t>(n));
+  super = copy(L->super, nsuper + 1);
+  pi = copy(L->pi, nsuper + 1);
+  px = copy(L->px, nsuper + 1);
+  rows = copy(L->s, static_cast<std::size_t>(pi[nsuper]));
+  values.assign(static_cast<std::size_t>(px[nsuper]), 0.0);
   const auto& kept = common.method[common.selected];
-  analysis = {kept.ordering, kept.lnz, kept.fl};
+  const SupernodalCholesky::Analysis analysis{kept.ordering, kept.lnz, kept.fl};
   cholmod_free_factor(&L, &common);
   cholmod_finish(&common);
+  return analysis;
+}
 
-  m.column_super.resize(static_cast<std::size_t>(m.n));
-  m.parent.assign(m.nsuper, -1);
-  for (int s = 0; s < m.nsuper; ++s) {
-    for (int k = m.super[s]; k < m.super[s + 1]; ++k) m.column_super[k] = s;
+// Each column's supernode, the supernodal elimination tree and the sizes of the largest
+// update block and of the widest part below a supernode's own columns.
+void SupernodalCholesky::Impl::build_tree() {
+  column_super.resize(static_cast<std::size_t>(n));
+  parent.assign(nsuper, -1);
+  for (int s = 0; s < nsuper; ++s) {
+    for (int k = super[s]; k < super[s + 1]; ++k) column_super[k] = s;
   }
-  for (int s = 0; s < m.nsuper; ++s) {
-    const int ncol = m.super[s + 1] - m.super[s], nrow = m.pi[s + 1] - m.pi[s];
-    if (nrow > ncol) m.parent[s] = m.column_super[m.rows[m.pi[s] + ncol]];
-    m.largest_update = std::max(m.largest_update,
-                                static_cast<std::size_t>(nrow) * static_cast<std::size_t>(nrow));
-    m.widest_below = std::max<Index>(m.widest_below, nrow - ncol);
+  for (int s = 0; s < nsuper; ++s) {
+    const int ncol = super[s + 1] - super[s], nrow = pi[s + 1] - pi[s];
+    if (nrow > ncol) parent[s] = column_super[rows[pi[s] + ncol]];
+    largest_update = std::max(largest_update,
+                              static_cast<std::size_t>(nrow) * static_cast<std::size_t>(nrow));
+    widest_below = std::max<Index>(widest_below, nrow - ncol);
   }
-  m.values.assign(xsize, 0.0);
+}
 
-  // Where each stored entry of K goes in the factor's values (its lower triangle, permuted).
-  std::vector<int> inverse(static_cast<std::size_t>(m.n));
-  for (Index k = 0; k < m.n; ++k) inverse[m.perm[k]] = static_cast<int>(k);
-  m.destination.clear();
-  m.destination.reserve(static_cast<std::size_t>(K.nonZeros()));
+// Where each stored entry of K goes in the factor's values (its lower triangle, permuted).
+void SupernodalCholesky::Impl::map_entries(const SparseMatrix& K) {
+  std::vector<int> inverse(static_cast<std::size_t>(n));
+  for (Index k = 0; k < n; ++k) inverse[perm[k]] = static_cast<int>(k);
+  destination.clear();
+  destination.reserve(static_cast<std::size_t>(K.nonZeros()));
   for (Index j = 0; j < K.outerSize(); ++j) {
     for (SparseMatrix::InnerIterator it(K, j); it; ++it) {
       if (it.row() < it.col()) {
-        m.destination.push_back(-1);
+        destination.push_back(-1);
         continue;
       }
       const int a = inverse[it.row()], b = inverse[it.col()];
       const int row = std::max(a, b), col = std::min(a, b);
-      const int s = m.column_super[col];
-      const int* first = m.rows.data() + m.pi[s];
-      const int* last = m.rows.data() + m.pi[s + 1];
+      const int s = column_super[col];
+      const int* first = rows.data() + pi[s];
+      const int* last = rows.data() + pi[s + 1];
       // The supernode's own columns come first (ascending), then the rows below (ascending).
-      const int ncol = m.super[s + 1] - m.super[s];
-      const int* found = row < m.super[s + 1] ? first + (row - m.super[s])
-                                              : std::lower_bound(first + ncol, last, row);
-      const Index nrow = m.pi[s + 1] - m.pi[s];
-      m.destination.push_back(m.px[s] + (col - m.super[s]) * nrow + (found - first));
+      const int ncol = super[s + 1] - super[s];
+      const int* found = row < super[s + 1] ? first + (row - super[s])
+                                            : std::lower_bound(first + ncol, last, row);
+      const Index nrow = pi[s + 1] - pi[s];
+      destination.push_back(px[s] + (col - super[s]) * nrow + (found - first));
     }
   }
-  m.stored_entries = K.nonZeros();
-  m.next.assign(m.nsuper, -1);
-  m.position.assign(m.nsuper, 0);
-  use_threads(threads);
-  return analysis;
+  stored_entries = K.nonZeros();
 }
 
 void SupernodalCholesky::use_threads(int threads) {
@@ -219,59 +247,77 @@ void SupernodalCholesky::use_threads(int threads) {
 void SupernodalCholesky::Impl::schedule(int threads) {
   subtrees.assign(1, {});
   top.clear();
-  std::vector<double> work(nsuper, 0.0), own(nsuper, 0.0);
-  std::vector<std::vector<int>> children(nsuper);
-  std::vector<int> roots;
-  for (int s = 0; s < nsuper; ++s) {  // postordered: children come before parents
-    // Its diagonal block, the rows below it, and the updates it sends up.
-    const double c = super[s + 1] - super[s], b = pi[s + 1] - pi[s] - c;
-    own[s] = c * c * c / 3.0 + c * c * b + c * b * b;
-    work[s] += own[s];
-    if (parent[s] >= 0) {
-      work[parent[s]] += work[s];
-      children[parent[s]].push_back(s);
-    } else {
-      roots.push_back(s);
-    }
-  }
+  const Weights w = weigh();
   if (threads <= 1 || nsuper < 2) {
     subtrees[0].resize(nsuper);
     for (int s = 0; s < nsuper; ++s) subtrees[0][s] = s;
     return;
   }
+  assign_subtrees(w, split_tree(w, threads), threads);
+}
+
+SupernodalCholesky::Impl::Weights SupernodalCholesky::Impl::weigh() const {
+  Weights w;
+  w.work.assign(nsuper, 0.0);
+  w.own.assign(nsuper, 0.0);
+  w.children.resize(nsuper);
+  for (int s = 0; s < nsuper; ++s) {  // postordered: children come before parents
+    // Its diagonal block, the rows below it, and the updates it sends up.
+    const double c = super[s + 1] - super[s], b = pi[s + 1] - pi[s] - c;
+    w.own[s] = c * c * c / 3.0 + c * c * b + c * b * b;
+    w.work[s] += w.own[s];
+    if (parent[s] >= 0) {
+      w.work[parent[s]] += w.work[s];
+      w.children[parent[s]].push_back(s);
+    } else {
+      w.roots.push_back(s);
+    }
+  }
+  return w;
+}
+
+// The roots of the subtrees the threads share, heaviest first (the supernodes above them
+// go to the top part).
+std::vector<int> SupernodalCholesky::Impl::split_tree(const Weights& w, int threads) const {
+  const std::vector<double>& work = w.work;
   double total = 0.0;
-  for (int r : roots) total += work[r];
+  for (int r : w.roots) total += work[r];
   auto lighter = [&](int a, int b) { return work[a] < work[b]; };
   std::priority_queue<int, std::vector<int>, decltype(lighter)> open(lighter);
-  for (int r : roots) open.push(r);
+  for (int r : w.roots) open.push(r);
   double top_work = 0.0;
   auto makespan = [&](double top_part, double heaviest) {
     return top_part + std::max(heaviest, (total - top_part) / threads);
   };
-  while (!open.empty() && !children[open.top()].empty()) {
+  while (!open.empty() && !w.children[open.top()].empty()) {
     const int s = open.top();
     double next_heaviest = 0.0;
-    for (int child : children[s]) next_heaviest = std::max(next_heaviest, work[child]);
+    for (int child : w.children[s]) next_heaviest = std::max(next_heaviest, work[child]);
     open.pop();
     if (!open.empty()) next_heaviest = std::max(next_heaviest, work[open.top()]);
-    if (makespan(top_work + own[s], next_heaviest) >= makespan(top_work, work[s])) {
+    if (makespan(top_work + w.own[s], next_heaviest) >= makespan(top_work, work[s])) {
       open.push(s);
       break;
     }
-    top_work += own[s];
-    for (int child : children[s]) open.push(child);
+    top_work += w.own[s];
+    for (int child : w.children[s]) open.push(child);
   }
   std::vector<int> pieces;
   while (!open.empty()) {
     pieces.push_back(open.top());
     open.pop();
   }
-  // Heaviest first to the least loaded thread.
+  return pieces;
+}
+
+// Heaviest first to the least loaded thread; what no thread takes is the top part.
+void SupernodalCholesky::Impl::assign_subtrees(const Weights& w, const std::vector<int>& pieces,
+                                               int threads) {
   std::vector<double> load(threads, 0.0);
   std::vector<std::vector<int>> owned(threads);
   for (int piece : pieces) {
     const int t = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
-    load[t] += work[piece];
+    load[t] += w.work[piece];
     owned[t].push_back(piece);
   }
   // A subtree of a postordered tree is a contiguous range ending at its root.

@@ -150,6 +150,9 @@ struct TangentSolver::Impl {
   SparseMatrix whole;  // the full matrix UMFPACK factorises
 
   void make_plan(const SparseMatrix& K);
+  Factorization cholesky_of(const SparseMatrix& K);
+  VectorX ldlt_pivots(const SparseMatrix& K);
+  bool lu_of(const SparseMatrix& K);
 };
 
 void TangentSolver::Impl::make_plan(const SparseMatrix& K) {
@@ -207,6 +210,67 @@ void TangentSolver::set_pattern(std::uint64_t pattern) {
   pattern_ = pattern;
 }
 
+// The plan's Cholesky factorisation of K: which one succeeded (None: K is not positive
+// definite).
+Factorization TangentSolver::Impl::cholesky_of(const SparseMatrix& K) {
+  switch (plan.cholesky) {
+    case CholeskyChoice::Dense:
+      if (dense_matrix.rows() != K.rows()) dense_matrix.setZero(K.rows(), K.cols());
+      for (Index col = 0; col < K.cols(); ++col) {
+        // The previous factor filled in the lower triangle: clear it, then copy K's.
+        dense_matrix.col(col).tail(K.rows() - col).setZero();
+        for (SparseMatrix::InnerIterator it(K, col); it; ++it) {
+          if (it.row() >= it.col()) dense_matrix(it.row(), it.col()) = it.value();
+        }
+      }
+      // -1: positive definite (else the index of the first non-positive pivot).
+      if (Eigen::internal::llt_inplace<double, Eigen::Lower>::blocked(dense_matrix) == -1) {
+        return Factorization::DenseCholesky;
+      }
+      return Factorization::None;
+    case CholeskyChoice::Supernodal:
+      return supernodal.factorize(K) ? Factorization::SupernodalCholesky : Factorization::None;
+    default:
+      cholesky.factorize(K);
+      return cholesky.info() == Eigen::Success ? Factorization::Cholesky : Factorization::None;
+  }
+}
+
+// The pivots of K's LDL^T (empty when it fails).
+VectorX TangentSolver::Impl::ldlt_pivots(const SparseMatrix& K) {
+  VectorX d;
+  supernodal_ldlt = false;
+  if (K.rows() >= kTryNestedDissection && plan.cholesky == CholeskyChoice::Supernodal) {
+    // On the Cholesky's symbolic factor: no second analysis, and the dense kernels of the
+    // supernodal factorisation (a 25,737-DOF Miura sheet: 0.25 s against CHOLMOD's
+    // simplicial LDL^T's 1.6 s).
+    if (supernodal.factorize_ldlt(K)) d = supernodal.ldlt_diagonal();
+    supernodal_ldlt = true;
+  } else if (K.rows() >= kTryNestedDissection) {
+    if (!large_ldlt) large_ldlt = std::make_unique<CholmodLdlt>();
+    if (large_ldlt->factorize(K, cholmod_ordering)) d = large_ldlt->diagonal();
+  } else {
+    if (!ldlt_analysed) {
+      ldlt.analyzePattern(K);
+      ldlt_analysed = true;
+    }
+    ldlt.factorize(K);
+    if (ldlt.info() == Eigen::Success) d = ldlt.vectorD();
+  }
+  return d;
+}
+
+// LU needs the whole matrix: mirror the lower triangle (rare path).
+bool TangentSolver::Impl::lu_of(const SparseMatrix& K) {
+  whole = K.selfadjointView<Eigen::Lower>();
+  if (!lu_analysed) {
+    lu.analyzePattern(whole);
+    lu_analysed = true;
+  }
+  lu.factorize(whole);
+  return lu.info() == Eigen::Success;
+}
+
 FactorizeInfo TangentSolver::factorize(const SparseMatrix& K, bool cholesky_only) {
   Impl& s = *impl_;
   FactorizeInfo info;
@@ -216,70 +280,21 @@ FactorizeInfo TangentSolver::factorize(const SparseMatrix& K, bool cholesky_only
     return {true, Factorization::Cholesky, 0};
   }
   if (!s.planned) s.make_plan(K);
-  switch (s.plan.cholesky) {
-    case CholeskyChoice::Dense:
-      if (s.dense_matrix.rows() != K.rows()) s.dense_matrix.setZero(K.rows(), K.cols());
-      for (Index col = 0; col < K.cols(); ++col) {
-        // The previous factor filled in the lower triangle: clear it, then copy K's.
-        s.dense_matrix.col(col).tail(K.rows() - col).setZero();
-        for (SparseMatrix::InnerIterator it(K, col); it; ++it) {
-          if (it.row() >= it.col()) s.dense_matrix(it.row(), it.col()) = it.value();
-        }
-      }
-      // -1: positive definite (else the index of the first non-positive pivot).
-      if (Eigen::internal::llt_inplace<double, Eigen::Lower>::blocked(s.dense_matrix) == -1) {
-        s.current = Factorization::DenseCholesky;
-        return {true, Factorization::DenseCholesky, 0};
-      }
-      break;
-    case CholeskyChoice::Supernodal:
-      if (s.supernodal.factorize(K)) {
-        s.current = Factorization::SupernodalCholesky;
-        return {true, Factorization::SupernodalCholesky, 0};
-      }
-      break;
-    default:
-      s.cholesky.factorize(K);
-      if (s.cholesky.info() == Eigen::Success) {
-        s.current = Factorization::Cholesky;
-        return {true, Factorization::Cholesky, 0};
-      }
+  const Factorization cholesky = s.cholesky_of(K);
+  if (cholesky != Factorization::None) {
+    s.current = cholesky;
+    return {true, cholesky, 0};
   }
   if (cholesky_only) return info;
   // Indefinite (or singular): LDL^T for the inertia, if its pivots are usable (none zero
   // or tiny against the largest: an exactly singular or badly conditioned leading block).
-  VectorX d;
-  s.supernodal_ldlt = false;
-  if (K.rows() >= kTryNestedDissection && s.plan.cholesky == CholeskyChoice::Supernodal) {
-    // On the Cholesky's symbolic factor: no second analysis, and the dense kernels of the
-    // supernodal factorisation (a 25,737-DOF Miura sheet: 0.25 s against CHOLMOD's
-    // simplicial LDL^T's 1.6 s).
-    if (s.supernodal.factorize_ldlt(K)) d = s.supernodal.ldlt_diagonal();
-    s.supernodal_ldlt = true;
-  } else if (K.rows() >= kTryNestedDissection) {
-    if (!s.large_ldlt) s.large_ldlt = std::make_unique<CholmodLdlt>();
-    if (s.large_ldlt->factorize(K, s.cholmod_ordering)) d = s.large_ldlt->diagonal();
-  } else {
-    if (!s.ldlt_analysed) {
-      s.ldlt.analyzePattern(K);
-      s.ldlt_analysed = true;
-    }
-    s.ldlt.factorize(K);
-    if (s.ldlt.info() == Eigen::Success) d = s.ldlt.vectorD();
-  }
+  const VectorX d = s.ldlt_pivots(K);
   if (d.size() > 0 && d.allFinite() &&
       d.cwiseAbs().minCoeff() > 1e-13 * d.cwiseAbs().maxCoeff()) {
     s.current = Factorization::LDLT;
     return {true, Factorization::LDLT, static_cast<int>((d.array() < 0.0).count())};
   }
-  // LU needs the whole matrix: mirror the lower triangle (rare path).
-  s.whole = K.selfadjointView<Eigen::Lower>();
-  if (!s.lu_analysed) {
-    s.lu.analyzePattern(s.whole);
-    s.lu_analysed = true;
-  }
-  s.lu.factorize(s.whole);
-  if (s.lu.info() == Eigen::Success) {
+  if (s.lu_of(K)) {
     s.current = Factorization::LU;
     return {true, Factorization::LU, -1};
   }

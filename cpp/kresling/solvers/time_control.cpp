@@ -9,7 +9,7 @@ TimeControl::TimeControl(const model::Model& model, const TimeLoad& load)
 
 std::string TimeControl::failure_message(int, int, double t, int max_bisections,
                                          const std::string& reason) const {
-  return "time step at t = " + format_number(t) + " s failed after " +
+  return "time step at t = " + format_rounded(t) + " s failed after " +
          std::to_string(max_bisections) + " halvings: " + reason;
 }
 

@@ -81,6 +81,19 @@ class StepTerms final : public ExtraTerms {
   VectorX a_, v_, c_, kv_;  // add_force's buffers
 };
 
+// The damping matrix bk K0 is added in the tangent's first pattern, which changes as
+// contact pairs come and go.
+void refuse_stiffness_damping_with_changing_elements(const model::Model& model,
+                                                     const TimeIntegrationOptions& options) {
+  for (const auto& family : model.families()) {
+    if (family->changes_elements() && options.stiffness_damping != 0.0) {
+      throw std::invalid_argument(
+          "stiffness_damping = " + format_number(options.stiffness_damping) + " is invalid "
+          "with the element family " + family->name() + ": must be 0 (use mass_damping)");
+    }
+  }
+}
+
 void check_options(const TimeIntegrationOptions& o) {
   check_newton(o.newton);
   require_positive("time_step", o.time_step);
@@ -276,21 +289,11 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
                               const VectorX& u0, const VectorX& v0) {
   check_options(options);
   check_motion_input(model, masses, time_load, u0, v0);
-  for (const auto& family : model.families()) {
-    // The damping matrix bk K0 is added in the tangent's first pattern, which changes as
-    // contact pairs come and go.
-    if (family->changes_elements() && options.stiffness_damping != 0.0) {
-      throw std::invalid_argument(
-          "stiffness_damping = " + format_number(options.stiffness_damping) + " is invalid "
-          "with the element family " + family->name() + ": must be 0 (use mass_damping)");
-    }
-  }
+  refuse_stiffness_damping_with_changing_elements(model, options);
   const Index n = model.num_dofs();
-
   assembly::Assembler assembler(model, assembly::unmasked_dofs(model.fixed()), options.shift,
                                 assembly::Storage::Lower);
   TangentSolver solver(options.newton.cholesky);
-
   StepStart s;
   s.u = u0.size() ? u0 : VectorX::Zero(n);
   s.v = v0.size() ? v0 : VectorX::Zero(n);
@@ -328,7 +331,6 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
     if (!model.fixed()[i]) s.a[i] = (s.load[i] - s.damping[i] - s.internal[i]) / masses[i];
   }
   VectorX u = s.u;
-
   NewmarkControl control(model, time_load, masses, options, std::move(s), k0, k0_values);
   HalvedTimeSteps policy(options.time_step, options.duration, options.max_halvings);
   FollowOptions follow;
