@@ -1,7 +1,7 @@
 """The C++ core stays short: at most MAX_LONG functions of cpp/kresling and cpp/python (the
 tests under cpp/tests are not counted) are longer than LONG lines, from the first line of
 the signature to the closing brace. A lambda counts as part of the function it is written
-in. `python tests/test_cpp_function_lengths.py` lists the long ones, longest first."""
+in. `python tests/package/test_cpp_function_lengths.py` lists the long ones, longest first."""
 
 import re
 import sys
