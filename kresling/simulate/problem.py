@@ -139,6 +139,9 @@ class Analysis:
     #: ``method = "fold"``: where the fold's equilibrium path ends, snap to a stable state
     #: and fold on (:func:`kresling.solvers.solve_fold`'s ``snap``).
     snap: bool = False
+    #: ``method = "fold"``: fold through stable states only, relaxing an increment whose
+    #: equilibrium is unstable or not found (:func:`kresling.solvers.solve_fold`'s ``relax``).
+    relax: bool = False
     #: ``method = "fold"``: every target fold angle is scaled by fold_percent / 100.
     fold_percent: float = 100.0
     #: ``method = "modes"``: how many of the lowest modes, about which state: "rest" or a
@@ -552,6 +555,7 @@ def _read_analysis(t, num_nodes):
                                       choices=PREDICTORS)
         if method == "fold":
             settings["snap"] = t.get("snap", _boolean, False)
+            settings["relax"] = t.get("relax", _boolean, False)
     elif method == "dynamic":
         pass  # the steps are [dynamics]'s
     elif method == "modes":

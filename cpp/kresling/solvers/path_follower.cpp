@@ -9,6 +9,7 @@
 #include "kresling/solvers/damped_newton.hpp"
 #include "kresling/solvers/energy_minimum.hpp"
 #include "kresling/solvers/increments.hpp"
+#include "kresling/solvers/stable_relaxation.hpp"
 
 namespace kresling::solvers {
 
@@ -31,6 +32,17 @@ void extrapolate(const std::vector<double>& ts, const std::vector<VectorX>& us, 
   }
 }
 
+
+// The relaxation's options from the snap's descent's (the same tolerance and lengths; its
+// own budget of iterations, a few Newton solves': a relaxation that needs more is given up
+// and its increment halved).
+RelaxationOptions relaxation(const EnergyMinimumOptions& descent) {
+  RelaxationOptions out;
+  out.tolerance = descent.tolerance;
+  out.max_step = descent.max_step;
+  out.escape_step = descent.escape_step;
+  return out;
+}
 
 }  // namespace
 
@@ -174,17 +186,25 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     descent.max_iterations = 2000;
     descent.max_step = 0.01 * size;
     descent.escape_step = 1e-3 * size;
-    // Dense eigen-decompositions up to kMaxSnapDofs, shifted sparse Cholesky beyond.
-    const EnergyMinimum rest =
-        assembler.size() > kMaxSnapDofs
-            ? minimize_energy_sparse(assembler, solver, trial, descent, &external)
-            : minimize_energy(assembler, trial, descent, &external);
-    result.newton_iterations += rest.iterations;
-    if (!rest.converged) return false;
     NewtonOutcome outcome;
+    if (options.relax) {
+      const Relaxation rest = relax_to_stable(assembler, solver, trial, relaxation(descent), &external);
+      result.newton_iterations += rest.iterations;
+      if (!rest.converged) return false;
+      outcome.iterations = rest.iterations;
+      outcome.negative_eigenvalues = 0;
+    } else {
+      // Dense eigen-decompositions up to kMaxSnapDofs, shifted sparse Cholesky beyond.
+      const EnergyMinimum rest =
+          assembler.size() > kMaxSnapDofs
+              ? minimize_energy_sparse(assembler, solver, trial, descent, &external)
+              : minimize_energy(assembler, trial, descent, &external);
+      result.newton_iterations += rest.iterations;
+      if (!rest.converged) return false;
+      outcome.iterations = rest.iterations;
+      outcome.negative_eigenvalues = rest.negative_eigenvalues;
+    }
     outcome.converged = true;
-    outcome.iterations = rest.iterations;
-    outcome.negative_eigenvalues = rest.negative_eigenvalues;
     PathStep step =
         control.record(assembler, trial, increment.to, outcome, recorded, sign, internal);
     if (!finite_step(step)) return false;
@@ -202,7 +222,7 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     check_interrupt();
     ++result.attempted_increments;
     std::string failure;
-    if (attempt(failure)) {
+    if (attempt(failure) || (options.relax && snap())) {
       policy.accepted(increment);
     } else if (policy.rejected(increment, failure)) {
       continue;  // tried again smaller

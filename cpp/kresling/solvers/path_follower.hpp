@@ -58,6 +58,12 @@ struct FollowOptions {
   /// beyond it sparse (minimize_energy_sparse); a descent that finds no stable state ends
   /// the path as before, saying so.
   bool snap = false;
+  /// An increment that fails (Newton does not converge, or the check rejects it) is first
+  /// relaxed whole: from the last equilibrium, the energy at the increment's end is
+  /// descended to a stable state (stable_relaxation.hpp), which is recorded as a step
+  /// (PathStep::snapped); only where that finds none is the increment halved. Snaps
+  /// (`snap`) then relax the same way, at any size.
+  bool relax = false;
 };
 
 /// The largest model (free DOFs) whose snap descends with dense eigen-decompositions.

@@ -1,0 +1,228 @@
+#include "kresling/solvers/stable_relaxation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "kresling/core/check.hpp"
+#include "kresling/core/interrupt.hpp"
+#include "kresling/solvers/newton.hpp"
+
+namespace kresling::solvers {
+
+namespace {
+
+// The energy must fall by at least kAccept of the quadratic model's predicted fall for a
+// step to be taken; a fall of at least kGood of it is a good step (the shift shrinks, the
+// radius may grow), anything less shrinks the radius.
+constexpr double kAccept = 0.1;
+constexpr double kGood = 0.75;
+constexpr double kShiftFactor = 4.0;
+// Shifts relative to the tangent's largest diagonal entry: the first one tried where the
+// tangent itself has no Cholesky (then raised by kShiftFactor until one exists), the one
+// below which a shrinking shift becomes 0, and the largest tried.
+constexpr double kFirstShift = 1e-6;
+constexpr double kZeroShift = 1e-9;
+constexpr double kLargestShift = 1e12;
+// Inverse iterations for the most negative curvature's direction at a saddle, and the
+// halvings of the step along it.
+constexpr int kInverseIterations = 6;
+constexpr int kEscapeHalvings = 12;
+// The trust region's radius starts at the longest step and may grow to this many of it.
+constexpr double kLongestRadius = 100.0;
+
+struct State {
+  double energy = 0.0;
+  VectorX gradient;  // on the assembler's rows
+  SparseMatrix tangent;
+};
+
+double work(const VectorX* external, const VectorX& u) {
+  return external ? external->dot(u) : 0.0;
+}
+
+bool evaluate(assembly::Assembler& assembler, TangentSolver& solver, const VectorX& u,
+              const VectorX* external, State& s) {
+  VectorX force;
+  s.energy = assembler.assemble(u, force, /*with_matrix=*/true).total() - work(external, u);
+  s.gradient = gather_rows(assembler, external ? VectorX(force - *external) : force);
+  follow_pattern(assembler, solver);
+  s.tangent = assembler.matrix();
+  return std::isfinite(s.energy) && s.gradient.allFinite();
+}
+
+double energy_at(assembly::Assembler& assembler, const VectorX& u, const VectorX* external) {
+  VectorX force;
+  return assembler.assemble(u, force, /*with_matrix=*/false).total() - work(external, u);
+}
+
+// u moved by `step` (on the assembler's rows).
+VectorX moved(const assembly::Assembler& assembler, const VectorX& u, const VectorX& step) {
+  VectorX out = u;
+  scatter_add_rows(assembler, step, out);
+  return out;
+}
+
+bool factorize_shifted(TangentSolver& solver, const SparseMatrix& K, double mu) {
+  if (mu == 0.0) return solver.factorize(K, /*cholesky_only=*/true).ok;
+  SparseMatrix shifted = K;
+  shifted.diagonal().array() += mu;
+  return solver.factorize(shifted, /*cholesky_only=*/true).ok;
+}
+
+// At a saddle (no step, the tangent indefinite, its shifted Cholesky in `solver`): step
+// along the most negative curvature's direction, found by inverse iteration, to lower
+// energy. False when no such direction or no lower energy is found.
+bool escape_saddle(assembly::Assembler& assembler, TangentSolver& solver, const State& s,
+                   VectorX& u, const VectorX* external, double length) {
+  const Index n = s.gradient.size();
+  // A start with a component along every eigenvector (deterministic, not symmetric).
+  VectorX x(n);
+  for (Index i = 0; i < n; ++i) x[i] = std::sin(1.0 + 0.7 * static_cast<double>(i));
+  for (int k = 0; k < kInverseIterations; ++k) {
+    x = solver.solve(x);
+    const double norm = x.norm();
+    if (!(norm > 0.0) || !x.allFinite()) return false;
+    x /= norm;
+  }
+  const double curvature = x.dot(s.tangent.selfadjointView<Eigen::Lower>() * x);
+  if (!(curvature < 0.0)) return false;
+  for (int k = 0; k < kEscapeHalvings; ++k, length *= 0.5) {
+    const VectorX forward = moved(assembler, u, length * x);
+    const VectorX backward = moved(assembler, u, -length * x);
+    const double ef = energy_at(assembler, forward, external);
+    const double eb = energy_at(assembler, backward, external);
+    const double best = std::min(std::isfinite(ef) ? ef : INFINITY, std::isfinite(eb) ? eb : INFINITY);
+    if (best < s.energy) {
+      u = best == ef ? forward : backward;
+      return true;
+    }
+  }
+  return false;
+}
+
+// The energy at `trial` after one chord step (the factorisation in `solver`) from it, which
+// `trial` is moved by when it lowers the energy: a step along a mechanism that is straight
+// where the mechanism turns (a panel rotating about a crease) stretches the stiff bars to
+// second order, and the chord step takes that stretch back (a second-order correction),
+// so that the step is judged by where the soft motion leads, not by the bars' stretch.
+double corrected(assembly::Assembler& assembler, TangentSolver& solver, VectorX& trial,
+                 const VectorX* external, double max_step) {
+  VectorX force;
+  const double e = assembler.assemble(trial, force, /*with_matrix=*/false).total() - work(external, trial);
+  if (!std::isfinite(e)) return e;
+  VectorX chord = -solver.solve(gather_rows(assembler, external ? VectorX(force - *external) : force));
+  if (!chord.allFinite()) return e;
+  const double length = chord.norm();
+  if (length > max_step) chord *= max_step / length;
+  VectorX move = VectorX::Zero(trial.size());
+  scatter_add_rows(assembler, chord, move);
+  chord *= std::min(1.0, barrier_step_fraction(assembler.model(), trial, move));
+  VectorX better = moved(assembler, trial, chord);
+  const double e_better = energy_at(assembler, better, external);
+  if (!(std::isfinite(e_better) && e_better < e)) return e;
+  trial = std::move(better);
+  return e_better;
+}
+
+}  // namespace
+
+Relaxation relax_to_stable(assembly::Assembler& assembler, TangentSolver& solver, VectorX& u,
+                           const RelaxationOptions& o, const VectorX* external) {
+  require_positive("tolerance", o.tolerance);
+  require_positive("max_step", o.max_step);
+  require_positive("escape_step", o.escape_step);
+  if (o.max_iterations < 1) throw_invalid("max_iterations", o.max_iterations, "an integer >= 1");
+  Relaxation out;
+  State s;
+  auto degenerate = [&]() {
+    out.failure = "the energy or its derivatives are not finite (an element degenerated)";
+    return out;
+  };
+  if (!evaluate(assembler, solver, u, external, s)) return degenerate();
+  double largest = s.tangent.diagonal().cwiseAbs().maxCoeff();
+  double mu = 0.0;
+  double radius = o.max_step;  // the trust region's
+  bool indefinite = false;  // the tangent at u itself has no Cholesky
+  bool factorized = false;  // the solver holds K + mu I at u
+  while (out.iterations < o.max_iterations) {
+    check_interrupt();
+    out.energy = s.energy;
+    ++out.iterations;
+    if (!factorized && !factorize_shifted(solver, s.tangent, mu)) {
+      if (mu == 0.0) indefinite = true;
+      mu = std::max(kShiftFactor * mu, kFirstShift * largest);
+      if (mu > kLargestShift * largest) {
+        out.failure = "no shift of the tangent made it positive definite";
+        return out;
+      }
+      continue;
+    }
+    factorized = true;
+    VectorX step = -solver.solve(s.gradient);
+    if (!step.allFinite()) {
+      out.failure = "the relaxation's step is not finite";
+      return out;
+    }
+    const double length = step.norm();
+    if (length <= o.tolerance) {
+      if (mu == 0.0) {  // Newton's last correction at a stable equilibrium
+        u = moved(assembler, u, step);
+        out.converged = true;
+        return out;
+      }
+      if (!indefinite) {  // the shift may be all that holds the steps back
+        mu = 0.0;
+        factorized = false;
+        continue;
+      }
+      if (!escape_saddle(assembler, solver, s, u, external, o.escape_step)) {
+        out.failure = "the relaxation stopped at a saddle it found no way down from";
+        return out;
+      }
+      ++out.steps;
+      if (!evaluate(assembler, solver, u, external, s)) return degenerate();
+      indefinite = false;
+      factorized = false;
+      continue;
+    }
+    if (length > radius) step *= radius / length;
+    VectorX move = VectorX::Zero(u.size());
+    scatter_add_rows(assembler, step, move);
+    step *= std::min(1.0, barrier_step_fraction(assembler.model(), u, move));
+    const double predicted =
+        -(s.gradient.dot(step) + 0.5 * step.dot(s.tangent.selfadjointView<Eigen::Lower>() * step));
+    const double taken = step.norm();
+    VectorX trial = moved(assembler, u, step);
+    const double e = corrected(assembler, solver, trial, external, radius);
+    const double fall = s.energy - e;
+    // A step whose predicted change is below the energy's rounding is judged by the model.
+    const bool rounding = std::abs(predicted) <= 1e-12 * std::max(1.0, std::abs(s.energy));
+    const bool good = std::isfinite(e) && (fall >= kGood * predicted || rounding);
+    if (std::isfinite(e) && predicted > 0.0 && (fall >= kAccept * predicted || rounding)) {
+      u = trial;
+      ++out.steps;
+      if (!evaluate(assembler, solver, u, external, s)) return degenerate();
+      largest = std::max(largest, s.tangent.diagonal().cwiseAbs().maxCoeff());
+      indefinite = false;
+      factorized = false;
+      // A good step lets the next be twice as long where this one was held by the radius,
+      // and the shift shrink (to 0: Newton's steps).
+      if (good && taken >= 0.99 * radius) radius = std::min(2.0 * radius, kLongestRadius * o.max_step);
+      if (good) {
+        mu /= kShiftFactor;
+        if (mu < kZeroShift * largest) mu = 0.0;
+      }
+    }
+    if (!good) radius = 0.25 * std::min(radius, taken);
+    if (radius <= o.tolerance) {
+      out.failure = "the relaxation's steps shrank below the tolerance without a lower energy";
+      return out;
+    }
+  }
+  out.failure = "no stable equilibrium within " + std::to_string(o.max_iterations) +
+                " iterations";
+  return out;
+}
+
+}  // namespace kresling::solvers
