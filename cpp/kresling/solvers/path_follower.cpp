@@ -33,12 +33,12 @@ void extrapolate(const std::vector<double>& ts, const std::vector<VectorX>& us, 
 }
 
 
-// The relaxation's options from the snap's descent's (the same tolerance and lengths; its
-// own budget of iterations, a few Newton solves': a relaxation that needs more is given up
-// and its increment halved).
+// The relaxation's options from the snap's descent's (the same tolerance, lengths and
+// budget).
 RelaxationOptions relaxation(const EnergyMinimumOptions& descent) {
   RelaxationOptions out;
   out.tolerance = descent.tolerance;
+  out.max_iterations = descent.max_iterations;
   out.max_step = descent.max_step;
   out.escape_step = descent.escape_step;
   return out;
@@ -125,8 +125,9 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
       // unstable branch where the previous equilibrium leads on along a stable one. Retry
       // from there (before the increment is halved), and keep the result if it converged
       // where the guess did not, or is more stable.
+      // (A relaxed path relaxes such an increment instead: FollowOptions::relax.)
       const bool failed = !accepted(outcome);
-      if (failed || outcome.negative_eigenvalues > previous_negative) {
+      if (!options.relax && (failed || outcome.negative_eigenvalues > previous_negative)) {
         VectorX plain = u;
         const NewtonOutcome retry = solve_at(plain);
         if (accepted(retry) &&
@@ -175,6 +176,7 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
   // descends from the last equilibrium to a stable one, which becomes the path's next step.
   // The descent's steps are bounded by the model's size (not in mm), so it follows the
   // landscape at any scale.
+  std::string relax_failure;  // why the last relaxation found no stable state
   auto snap = [&]() {
     if (control.changes_model()) assembler.rebind(control.model_at(increment.to));
     VectorX trial = u;
@@ -190,7 +192,10 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     if (options.relax) {
       const Relaxation rest = relax_to_stable(assembler, solver, trial, relaxation(descent), &external);
       result.newton_iterations += rest.iterations;
-      if (!rest.converged) return false;
+      if (!rest.converged) {
+        relax_failure = rest.failure;
+        return false;
+      }
       outcome.iterations = rest.iterations;
       outcome.negative_eigenvalues = 0;
     } else {
@@ -222,11 +227,16 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     check_interrupt();
     ++result.attempted_increments;
     std::string failure;
-    if (attempt(failure) || (options.relax && snap())) {
+    relax_failure.clear();
+    const bool accepted_now = attempt(failure) || (options.relax && snap());
+    // (A relaxation that found nothing says why, and is not tried again as a snap.)
+    if (!relax_failure.empty()) failure += "; relaxed, " + relax_failure;
+    if (accepted_now) {
       policy.accepted(increment);
     } else if (policy.rejected(increment, failure)) {
       continue;  // tried again smaller
-    } else if (!(options.snap && snap() && policy.resume(increment))) {
+    } else if (!(options.snap && relax_failure.empty() && snap() &&
+                 policy.resume(increment))) {
       break;
     }
     if (options.stop && options.stop(result.steps.back())) {

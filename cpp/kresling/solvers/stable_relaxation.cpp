@@ -28,6 +28,8 @@ constexpr double kLargestShift = 1e12;
 // halvings of the step along it.
 constexpr int kInverseIterations = 6;
 constexpr int kEscapeHalvings = 12;
+// Halvings of the shift towards the most negative eigenvalue before the inverse iterations.
+constexpr int kTightenings = 30;
 // The trust region's radius starts at the longest step and may grow to this many of it.
 constexpr double kLongestRadius = 100.0;
 
@@ -70,11 +72,24 @@ bool factorize_shifted(TangentSolver& solver, const SparseMatrix& K, double mu) 
   return solver.factorize(shifted, /*cholesky_only=*/true).ok;
 }
 
+// The smallest shift, halving from `mu` (whose Cholesky exists), at which K + shift I still
+// has one; the solver is left holding that factorisation. Near it, K + shift I is nearly
+// singular along the most negative curvature alone, which inverse iteration then finds in
+// a few solves.
+double tightest_shift(TangentSolver& solver, const SparseMatrix& K, double mu) {
+  for (int k = 0; k < kTightenings; ++k) {
+    if (!factorize_shifted(solver, K, 0.5 * mu)) break;
+    mu *= 0.5;
+  }
+  factorize_shifted(solver, K, mu);
+  return mu;
+}
+
 // At a saddle (no step, the tangent indefinite, its shifted Cholesky in `solver`): step
 // along the most negative curvature's direction, found by inverse iteration, to lower
 // energy. False when no such direction or no lower energy is found.
 bool escape_saddle(assembly::Assembler& assembler, TangentSolver& solver, const State& s,
-                   VectorX& u, const VectorX* external, double length) {
+                   VectorX& u, const VectorX* external, double length, double& curvature) {
   const Index n = s.gradient.size();
   // A start with a component along every eigenvector (deterministic, not symmetric).
   VectorX x(n);
@@ -82,10 +97,13 @@ bool escape_saddle(assembly::Assembler& assembler, TangentSolver& solver, const 
   for (int k = 0; k < kInverseIterations; ++k) {
     x = solver.solve(x);
     const double norm = x.norm();
-    if (!(norm > 0.0) || !x.allFinite()) return false;
+    if (!(norm > 0.0) || !x.allFinite()) {
+      curvature = NAN;
+      return false;
+    }
     x /= norm;
   }
-  const double curvature = x.dot(s.tangent.selfadjointView<Eigen::Lower>() * x);
+  curvature = x.dot(s.tangent.selfadjointView<Eigen::Lower>() * x);
   if (!(curvature < 0.0)) return false;
   for (int k = 0; k < kEscapeHalvings; ++k, length *= 0.5) {
     const VectorX forward = moved(assembler, u, length * x);
@@ -145,6 +163,31 @@ Relaxation relax_to_stable(assembly::Assembler& assembler, TangentSolver& solver
   double radius = o.max_step;  // the trust region's
   bool indefinite = false;  // the tangent at u itself has no Cholesky
   bool factorized = false;  // the solver holds K + mu I at u
+  // Leave a saddle along its most negative curvature (the solver holding K + mu I at u).
+  auto escape = [&]() {
+    mu = tightest_shift(solver, s.tangent, mu);
+    double curvature = 0.0;
+    if (!escape_saddle(assembler, solver, s, u, external, o.escape_step, curvature)) {
+      // Where the steps vanish with a large out-of-balance force, the shift that made the
+      // tangent definite is what held them: its curvature is sharply negative there, as
+      // where an element nears a singular state (a panel's triangle flattened to a line).
+      out.failure = "the relaxation stopped where no step lowers the energy (out-of-balance "
+                    "force " + format_number(s.gradient.norm()) + " N, most negative "
+                    "curvature " + format_number(curvature) + " N/mm, shift " +
+                    format_number(mu) + " N/mm: a saddle, or an element near a singular "
+                    "state such as a panel's triangle flattened to a line)";
+      return false;
+    }
+    ++out.steps;
+    if (!evaluate(assembler, solver, u, external, s)) {
+      degenerate();
+      return false;
+    }
+    indefinite = false;
+    factorized = false;
+    radius = o.max_step;
+    return true;
+  };
   while (out.iterations < o.max_iterations) {
     check_interrupt();
     out.energy = s.energy;
@@ -176,14 +219,7 @@ Relaxation relax_to_stable(assembly::Assembler& assembler, TangentSolver& solver
         factorized = false;
         continue;
       }
-      if (!escape_saddle(assembler, solver, s, u, external, o.escape_step)) {
-        out.failure = "the relaxation stopped at a saddle it found no way down from";
-        return out;
-      }
-      ++out.steps;
-      if (!evaluate(assembler, solver, u, external, s)) return degenerate();
-      indefinite = false;
-      factorized = false;
+      if (!escape()) return out;
       continue;
     }
     if (length > radius) step *= radius / length;
@@ -216,8 +252,13 @@ Relaxation relax_to_stable(assembly::Assembler& assembler, TangentSolver& solver
     }
     if (!good) radius = 0.25 * std::min(radius, taken);
     if (radius <= o.tolerance) {
-      out.failure = "the relaxation's steps shrank below the tolerance without a lower energy";
-      return out;
+      // No lower energy along the shifted step, however short: a ridge or saddle, where
+      // only the negative curvature leads down (or, where there is none, rounding).
+      if (!(indefinite && mu > 0.0)) {
+        out.failure = "the relaxation's steps shrank below the tolerance without a lower energy";
+        return out;
+      }
+      if (!escape()) return out;
     }
   }
   out.failure = "no stable equilibrium within " + std::to_string(o.max_iterations) +
