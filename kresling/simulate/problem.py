@@ -140,8 +140,10 @@ class Analysis:
     #: and fold on (:func:`kresling.solvers.solve_fold`'s ``snap``).
     snap: bool = False
     #: ``method = "fold"``: fold through stable states only, relaxing an increment whose
-    #: equilibrium is unstable or not found (:func:`kresling.solvers.solve_fold`'s ``relax``).
-    relax: bool = False
+    #: equilibrium is unstable or not found (:func:`kresling.solvers.solve_fold`'s
+    #: ``relax``); None: the default, on with Origami Simulator's material (a preset), off
+    #: with a material of the problem's own (:meth:`Problem.relaxes`).
+    relax: bool | None = None
     #: ``method = "fold"``: every target fold angle is scaled by fold_percent / 100.
     fold_percent: float = 100.0
     #: ``method = "modes"``: how many of the lowest modes, about which state: "rest" or a
@@ -207,6 +209,14 @@ class Problem:
     #: The model's node count the problem was checked against (:func:`node_count`), so
     #: that building the model does not split the panels once more to find it.
     num_nodes: int | None = None
+
+    def relaxes(self) -> bool:
+        """Whether a fold relaxes the increments its path cannot follow stably
+        (``[analysis] relax``): by default with Origami Simulator's material, whose sheet is
+        meant to come to rest as Origami Simulator's relaxation brings it."""
+        if self.analysis.relax is not None:
+            return self.analysis.relax
+        return self.preset is not None
 
 
 class _Table:
@@ -555,7 +565,7 @@ def _read_analysis(t, num_nodes):
                                       choices=PREDICTORS)
         if method == "fold":
             settings["snap"] = t.get("snap", _boolean, False)
-            settings["relax"] = t.get("relax", _boolean, False)
+            settings["relax"] = t.get("relax", _boolean, None)
     elif method == "dynamic":
         pass  # the steps are [dynamics]'s
     elif method == "modes":

@@ -618,7 +618,7 @@ def _solve(problem, pm, vector, common, plan):
                           extrapolation=PREDICTORS.index(analysis.predictor),
                           adaptive=analysis.increments == "adaptive",
                           adaptive_tolerance=ADAPTIVE_TOLERANCE, snap=analysis.snap,
-                          relax=analysis.relax,
+                          relax=problem.relaxes(),
                           give_up_after=0 if problem.contact is not None else FOLD_GIVE_UP_AFTER,
                           **common)
     monitor = analysis.stop
