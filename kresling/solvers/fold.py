@@ -87,8 +87,9 @@ def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterati
         eigenvalue of the tangent) is relaxed whole instead, from the last equilibrium, to a
         stable state at its rest angles (a trust-region descent of the potential energy on
         sparse Cholesky factorisations of the shifted tangent), recorded as a snapped step;
-        only where none is found is the increment halved. ``snap`` then relaxes the same
-        way. With ``adaptive``, the fixed increments a stage falls back to relax.
+        only where none is found (in 200 iterations) is the increment halved, its parts
+        followed as without ``relax`` until one is accepted. ``snap`` then relaxes too. With
+        ``adaptive``, the fixed increments a stage falls back to relax.
     give_up_after : int, default 0
         > 0: an increment whose Newton correction at this iteration or later is still above
         1e-3 of its first is given up there and halved, instead of iterating on to

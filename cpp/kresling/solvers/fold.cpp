@@ -69,14 +69,6 @@ model::Model after_stage(const model::Model& model, const FoldStage& stage) {
   return model.with_family(std::make_shared<model::HingeFamily>(std::move(hinges)));
 }
 
-// A relaxed fold's check of each converged increment: an unstable equilibrium is refused
-// (the sheet would not stay there), so that the increment is relaxed to a stable state.
-std::string reject_unstable(const Increment&, const VectorX&, const NewtonOutcome& outcome) {
-  if (outcome.negative_eigenvalues <= 0) return {};
-  return "the equilibrium is unstable (" + std::to_string(outcome.negative_eigenvalues) +
-         " negative eigenvalues)";
-}
-
 }  // namespace
 
 model::Model folded_rest_model(const model::Model& model, const std::vector<FoldStage>& stages) {
@@ -118,7 +110,7 @@ PathResult solve_fold(const model::Model& model, const std::vector<FoldStage>& s
   follow.extrapolation = options.extrapolation;
   follow.snap = options.snap;
   follow.relax = options.relax;
-  if (options.relax) follow.check = reject_unstable;
+  follow.relax_iterations = options.relax_iterations;
   bool stopped = false;  // the caller's rule ended the fold
   follow.stop = [&](const PathStep& step) {
     stopped = options.stop && options.stop(step);

@@ -44,8 +44,11 @@ struct FoldOptions {
   /// increment whose Newton solve fails or ends at an unstable equilibrium (a negative
   /// eigenvalue of the tangent) is relaxed whole instead, from the last equilibrium, to a
   /// stable state at its rest angles (FollowOptions::relax), and only where none is found
-  /// halved; snaps (`snap`) relax the same way. Fixed increments only (not `adaptive`).
+  /// halved (its parts then followed as without `relax`); snaps (`snap`) relax too. With `adaptive`, the fixed increments a
+  /// stage falls back to relax.
   bool relax = false;
+  /// A relaxed increment's budget of relaxation iterations (FollowOptions::relax_iterations).
+  int relax_iterations = 200;
   StopRule stop;
 };
 

@@ -87,6 +87,10 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     result.newton_iterations += outcome.iterations;
     return outcome;
   };
+  // Relaxed increments (FollowOptions::relax) until a relaxation fails; then the path is
+  // followed as without them up to the next accepted increment.
+  bool relax_failed = false;
+  auto relaxing = [&]() { return options.relax && !relax_failed; };
   // The last accepted points of the path, for the extrapolated starting guess (kept only
   // when extrapolating).
   const bool extrapolating = options.extrapolation > 0;
@@ -127,7 +131,7 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
       // where the guess did not, or is more stable.
       // (A relaxed path relaxes such an increment instead: FollowOptions::relax.)
       const bool failed = !accepted(outcome);
-      if (!options.relax && (failed || outcome.negative_eigenvalues > previous_negative)) {
+      if (!relaxing() && (failed || outcome.negative_eigenvalues > previous_negative)) {
         VectorX plain = u;
         const NewtonOutcome retry = solve_at(plain);
         if (accepted(retry) &&
@@ -144,6 +148,11 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
       failure = outcome.failure.empty()
                     ? "Newton needed " + std::to_string(outcome.iterations) + " iterations"
                     : outcome.failure;
+      return false;
+    }
+    if (relaxing() && outcome.negative_eigenvalues > 0) {
+      failure = "the equilibrium is unstable (" + std::to_string(outcome.negative_eigenvalues) +
+                " negative eigenvalues)";
       return false;
     }
     if (options.check) {
@@ -177,7 +186,9 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
   // The descent's steps are bounded by the model's size (not in mm), so it follows the
   // landscape at any scale.
   std::string relax_failure;  // why the last relaxation found no stable state
-  auto snap = [&]() {
+  // `whole`: an increment relaxed instead of halved (FollowOptions::relax_iterations), else
+  // a snap at the smallest increment.
+  auto snap = [&](bool whole) {
     if (control.changes_model()) assembler.rebind(control.model_at(increment.to));
     VectorX trial = u;
     control.advance(increment, u, trial, external);
@@ -190,7 +201,9 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     descent.escape_step = 1e-3 * size;
     NewtonOutcome outcome;
     if (options.relax) {
-      const Relaxation rest = relax_to_stable(assembler, solver, trial, relaxation(descent), &external);
+      RelaxationOptions relax = relaxation(descent);
+      if (whole) relax.max_iterations = options.relax_iterations;
+      const Relaxation rest = relax_to_stable(assembler, solver, trial, relax, &external);
       result.newton_iterations += rest.iterations;
       if (!rest.converged) {
         relax_failure = rest.failure;
@@ -228,15 +241,17 @@ void follow_path(PathControl& control, assembly::Assembler& assembler, TangentSo
     ++result.attempted_increments;
     std::string failure;
     relax_failure.clear();
-    const bool accepted_now = attempt(failure) || (options.relax && snap());
-    // (A relaxation that found nothing says why, and is not tried again as a snap.)
-    if (!relax_failure.empty()) failure += "; relaxed, " + relax_failure;
+    const bool accepted_now = attempt(failure) || (relaxing() && snap(true));
+    if (!relax_failure.empty()) {  // said, and the increment's parts followed unrelaxed
+      failure += "; relaxed, " + relax_failure;
+      relax_failed = true;
+    }
     if (accepted_now) {
+      relax_failed = false;
       policy.accepted(increment);
     } else if (policy.rejected(increment, failure)) {
       continue;  // tried again smaller
-    } else if (!(options.snap && relax_failure.empty() && snap() &&
-                 policy.resume(increment))) {
+    } else if (!(options.snap && snap(false) && policy.resume(increment))) {
       break;
     }
     if (options.stop && options.stop(result.steps.back())) {

@@ -58,12 +58,15 @@ struct FollowOptions {
   /// beyond it sparse (minimize_energy_sparse); a descent that finds no stable state ends
   /// the path as before, saying so.
   bool snap = false;
-  /// An increment that fails (Newton does not converge, or the check rejects it) is first
-  /// relaxed whole: from the last equilibrium, the energy at the increment's end is
-  /// descended to a stable state (stable_relaxation.hpp), which is recorded as a step
-  /// (PathStep::snapped); only where that finds none is the increment halved. Snaps
-  /// (`snap`) then relax the same way, at any size.
+  /// Follow stable states: an increment whose Newton solve fails, ends at an unstable
+  /// equilibrium (a negative eigenvalue) or is rejected by the check is relaxed whole: from
+  /// the last equilibrium, the energy at the increment's end is descended to a stable state
+  /// (stable_relaxation.hpp) in at most `relax_iterations` iterations, which is recorded as
+  /// a step (PathStep::snapped). Where that finds none, the increment is halved and its
+  /// parts are followed as without `relax` (unstable equilibria accepted), until one is
+  /// accepted. Snaps (`snap`) relax too, with the snap's budget.
   bool relax = false;
+  int relax_iterations = 200;
 };
 
 /// The largest model (free DOFs) whose snap descends with dense eigen-decompositions.

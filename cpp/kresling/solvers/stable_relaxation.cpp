@@ -6,6 +6,7 @@
 
 #include "kresling/core/check.hpp"
 #include "kresling/core/interrupt.hpp"
+#include "kresling/solvers/energy_minimum.hpp"
 #include "kresling/solvers/newton.hpp"
 
 namespace kresling::solvers {
@@ -110,7 +111,8 @@ bool escape_saddle(assembly::Assembler& assembler, TangentSolver& solver, const 
     const VectorX backward = moved(assembler, u, -length * x);
     const double ef = energy_at(assembler, forward, external);
     const double eb = energy_at(assembler, backward, external);
-    const double best = std::min(std::isfinite(ef) ? ef : INFINITY, std::isfinite(eb) ? eb : INFINITY);
+    const double best =
+        std::min(std::isfinite(ef) ? ef : INFINITY, std::isfinite(eb) ? eb : INFINITY);
     if (best < s.energy) {
       u = best == ef ? forward : backward;
       return true;
@@ -127,9 +129,11 @@ bool escape_saddle(assembly::Assembler& assembler, TangentSolver& solver, const 
 double corrected(assembly::Assembler& assembler, TangentSolver& solver, VectorX& trial,
                  const VectorX* external, double max_step) {
   VectorX force;
-  const double e = assembler.assemble(trial, force, /*with_matrix=*/false).total() - work(external, trial);
+  const double e =
+      assembler.assemble(trial, force, /*with_matrix=*/false).total() - work(external, trial);
   if (!std::isfinite(e)) return e;
-  VectorX chord = -solver.solve(gather_rows(assembler, external ? VectorX(force - *external) : force));
+  VectorX chord =
+      -solver.solve(gather_rows(assembler, external ? VectorX(force - *external) : force));
   if (!chord.allFinite()) return e;
   const double length = chord.norm();
   if (length > max_step) chord *= max_step / length;
@@ -147,10 +151,7 @@ double corrected(assembly::Assembler& assembler, TangentSolver& solver, VectorX&
 
 Relaxation relax_to_stable(assembly::Assembler& assembler, TangentSolver& solver, VectorX& u,
                            const RelaxationOptions& o, const VectorX* external) {
-  require_positive("tolerance", o.tolerance);
-  require_positive("max_step", o.max_step);
-  require_positive("escape_step", o.escape_step);
-  if (o.max_iterations < 1) throw_invalid("max_iterations", o.max_iterations, "an integer >= 1");
+  check_descent(o.tolerance, o.max_step, o.escape_step, o.max_iterations);
   Relaxation out;
   State s;
   auto degenerate = [&]() {
@@ -244,7 +245,9 @@ Relaxation relax_to_stable(assembly::Assembler& assembler, TangentSolver& solver
       factorized = false;
       // A good step lets the next be twice as long where this one was held by the radius,
       // and the shift shrink (to 0: Newton's steps).
-      if (good && taken >= 0.99 * radius) radius = std::min(2.0 * radius, kLongestRadius * o.max_step);
+      if (good && taken >= 0.99 * radius) {
+        radius = std::min(2.0 * radius, kLongestRadius * o.max_step);
+      }
       if (good) {
         mu /= kShiftFactor;
         if (mu < kZeroShift * largest) mu = 0.0;
