@@ -34,7 +34,9 @@ failed (the path's message, at most 80 characters) or timeout. The full refusals
 messages follow the table.
 
 Run: ``python benchmarks/fold_patterns.py [FILE ...] [--material stiff|soft]
-[--support auto|none] [--steps 50] [--assets DIR] [--large] [--timeout 60] [--jobs 1]``.
+[--support auto|none] [--steps 50] [--assets DIR] [--large] [--timeout 60] [--jobs 1]
+[--no-relax]``; ``--no-relax`` folds each with ``[analysis] relax = false`` (the equilibrium
+path, stable or not, where a new user's fold relaxes the increments it cannot follow stably).
 With no FILE: the Origami Simulator files under tests/data/public/origami_simulator/ and,
 with ``--assets DIR`` (a checkout of Origami Simulator's assets folder), nineteen of its
 patterns; with ``--large`` and ``--assets DIR``, its large patterns only (1,000 to 6,400
@@ -95,7 +97,8 @@ def first_line(text: str) -> str:
     return lines[0] if lines else ""
 
 
-def fold_one(path: str, material_name: str, support: str, steps: int, stream=None) -> dict:
+def fold_one(path: str, material_name: str, support: str, steps: int, stream=None,
+             no_relax: bool = False) -> dict:
     """Fold one pattern, adding what a refusal asks for; a row of the table. The row so far
     is printed as a JSON line before each attempt (what a timeout leaves to report)."""
     from kresling.io import read_pattern
@@ -111,7 +114,7 @@ def fold_one(path: str, material_name: str, support: str, steps: int, stream=Non
         row["read_error"] = f"{type(error).__name__}: {error}"
     problem = {"pattern": {"file": str(path)},
                "actuation": [{"family": "fold", "fold_angle_deg": "file"}],
-               "analysis": {"method": "fold"}}
+               "analysis": {"method": "fold", **({"relax": False} if no_relax else {})}}
     first = []
 
     def note_first(state):   # the time of the first converged increment
@@ -187,7 +190,8 @@ def run(path: str, args) -> dict:
 def _run(path: str, args, files: str) -> dict:
     command = [sys.executable, str(Path(__file__).resolve()), "--worker", path,
                "--material", args.material, "--support", args.support,
-               "--steps", str(args.steps), "--stream", files]
+               "--steps", str(args.steps), "--stream", files] + (["--no-relax"] if args.no_relax
+                                                                   else [])
     start = time.perf_counter()
     try:
         done = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout)
@@ -320,16 +324,20 @@ def main(argv=None) -> int:
     parser.add_argument("--timeout", type=float, default=60.0,
                         help="wall-clock seconds per pattern (default 60)")
     parser.add_argument("--jobs", type=int, default=1, help="patterns folded at once")
+    parser.add_argument("--no-relax", action="store_true",
+                        help="follow the equilibrium path, stable or not ([analysis] relax = "
+                             "false; a new user's fold relaxes)")
     parser.add_argument("--worker", help=argparse.SUPPRESS)
     parser.add_argument("--stream", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.worker:
         print(json.dumps(fold_one(args.worker, args.material, args.support, args.steps,
-                                  args.stream)))
+                                  args.stream, args.no_relax)))
         return 0
     listed = patterns(args)
     load = os.getloadavg()
-    print(f"folding {len(listed)} patterns from flat: --material {args.material}, --support "
+    print(f"folding {len(listed)} patterns from flat{' (relax = false)' if args.no_relax else ''}: "
+          f"--material {args.material}, --support "
           f"{args.support}, --steps {args.steps} where asked for, --timeout {args.timeout:g} s,"
           f" --jobs {args.jobs}; {os.cpu_count()} cores, load average {load[0]:.2f}",
           flush=True)

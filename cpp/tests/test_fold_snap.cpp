@@ -34,6 +34,8 @@
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/solvers/energy_minimum.hpp"
 #include "kresling/solvers/fold.hpp"
+#include "kresling/solvers/newton.hpp"
+#include "kresling/solvers/stable_relaxation.hpp"
 
 using namespace kresling;
 
@@ -117,6 +119,14 @@ solvers::PathResult fold_to_end(const Wing& w, bool snap, int steps) {
                              VectorX::Zero(12), o);
 }
 
+// A step's phi, once checked to be a stable equilibrium of the closed form.
+double checked_phi(const Wing& w, const solvers::PathStep& s) {
+  EXPECT_EQ(s.negative_eigenvalues, 0) << s.load_factor;
+  const double phi = phi_of(w, s.displacement);
+  EXPECT_NEAR(rest_offset(phi), rest_at(s.load_factor), 1e-5) << s.load_factor;
+  return phi;
+}
+
 }  // namespace
 
 TEST(FoldSnap, WithoutSnapTheFoldEndsAtTheLimitPoint) {
@@ -139,9 +149,7 @@ TEST(FoldSnap, WithSnapItJumpsToTheFarBranchAndFoldsOn) {
   ASSERT_TRUE(path.completed) << path.message;
   int snaps = 0;
   for (const auto& s : path.steps) {
-    const double phi = phi_of(w, s.displacement);
-    EXPECT_EQ(s.negative_eigenvalues, 0) << s.load_factor;
-    EXPECT_NEAR(rest_offset(phi), rest_at(s.load_factor), 1e-5) << s.load_factor;
+    const double phi = checked_phi(w, s);
     if (s.snapped) {
       ++snaps;
       // Where the branch ends: past the limit point by less than an increment (the bars'
@@ -186,4 +194,91 @@ TEST(FoldSnap, TheSparseDescentEndsWhereTheDenseOneDoes) {
   EXPECT_NEAR(phi_of(w, dense), expected, 1e-4);
   EXPECT_NEAR(phi_of(w, sparse), expected, 1e-4);
   EXPECT_NEAR(s.energy, d.energy, 1e-9 * std::abs(d.energy) + 1e-12);
+}
+
+// A relaxed fold (FoldOptions::relax) passes the limit point without halving down to it:
+// the first increment past it, whose Newton solve fails, is relaxed whole from the last
+// equilibrium to the far branch's stable state, and the fold goes on. Every step is a
+// stable equilibrium of the closed form (tolerance as above), the one relaxed step lies
+// within an increment past the limit point, and the steps before it on the near branch.
+TEST(FoldSnap, ARelaxedFoldPassesTheLimitPointInWholeIncrements) {
+  const Wing w = make_wing();
+  const double phi_star = kPhiA - std::acos(-1.0 / kBeta);
+  const double far_edge = kPhiA - 2 * kPi + std::acos(-1.0 / kBeta);
+  const double limit = limit_fraction();
+  for (const int steps : {40, kSteps}) {
+    solvers::FoldOptions o;
+    o.relax = true;
+    // The bars (1e6 times the hinge) hold each of the relaxation's straight steps to a few
+    // thousandths of the wing's turn: the far branch is some 1,000 of them away.
+    o.relax_iterations = 3000;
+    o.newton.tolerance = 1e-8;
+    const auto path = solvers::solve_fold(w.model, {{{0}, (VectorX(1) << kPi + kEnd).finished()}},
+                                          steps, VectorX::Zero(12), o);
+    ASSERT_TRUE(path.completed) << path.message;
+    EXPECT_EQ(static_cast<int>(path.steps.size()), steps);  // no increment halved
+    int relaxed = 0;
+    for (const auto& s : path.steps) {
+      const double phi = checked_phi(w, s);
+      if (s.snapped) {
+        ++relaxed;
+        EXPECT_GT(s.load_factor, limit);
+        EXPECT_LT(s.load_factor, limit + 1.0 / steps + 1e-12);
+      }
+      if (relaxed == 0) {
+        EXPECT_GE(phi, phi_star - 1e-4);
+      } else {
+        EXPECT_LT(phi, far_edge) << s.load_factor;
+      }
+    }
+    EXPECT_EQ(relaxed, 1) << steps;
+  }
+}
+
+// The relaxation leaves an exact saddle: started at the unstable equilibrium between the
+// two branches (where the bistable wing's rest angle is the fold's start, found by Newton
+// from the closed form's phi), it ends at one of the two stable equilibria of the closed
+// form, with less energy. Its gradient there is zero to Newton's 1e-12 mm, so no step but
+// the escape along the negative curvature leaves it.
+TEST(FoldSnap, TheRelaxationLeavesASaddleForAStableState) {
+  const Wing w = make_wing();
+  const double phi_star = kPhiA - std::acos(-1.0 / kBeta);
+  const double far_edge = kPhiA - 2 * kPi + std::acos(-1.0 / kBeta);
+  // rest_offset rises as phi falls on the unstable branch: bisect in the reversed order.
+  double lo = far_edge, hi = phi_star;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (rest_offset(mid) > kStart ? lo : hi) = mid;
+  }
+  const double phi_u = 0.5 * (lo + hi);
+  ASSERT_LT(1.0 + kBeta * std::cos(phi_u - kPhiA), 0.0);  // unstable
+  VectorX u = VectorX::Zero(12);
+  u[10] = std::cos(w.sign * phi_u) - 1.0;
+  u[11] = std::sin(w.sign * phi_u);
+  assembly::Assembler assembler(w.model, assembly::unmasked_dofs(w.model.fixed()), 0.0,
+                                assembly::Storage::Lower);
+  solvers::TangentSolver solver;
+  solvers::NewtonOptions newton;
+  newton.tolerance = 1e-12;
+  const auto at_saddle =
+      solvers::newton_equilibrium(assembler, solver, u, VectorX::Zero(12), newton);
+  ASSERT_TRUE(at_saddle.converged) << at_saddle.failure;
+  ASSERT_GT(at_saddle.negative_eigenvalues, 0);
+  VectorX force;
+  const double start_energy = assembler.assemble(u, force, false).total();
+  solvers::RelaxationOptions o;
+  o.tolerance = 1e-10;
+  o.max_step = 0.05;
+  o.escape_step = 0.01;
+  // The bars (1e6 times the hinge) hold each straight step to a few thousandths of the
+  // wing's turn (a longer one stretches them more than the turn gains): the far basin is
+  // some 1,000 steps away.
+  o.max_iterations = 3000;
+  const auto rest = solvers::relax_to_stable(assembler, solver, u, o);
+  ASSERT_TRUE(rest.converged) << rest.failure;
+  EXPECT_LT(rest.energy, start_energy);
+  const double phi = phi_of(w, u);
+  EXPECT_GT(1.0 + kBeta * std::cos(phi - kPhiA), 0.0);  // stable by the closed form
+  EXPECT_NEAR(rest_offset(phi), kStart, 1e-5);
+  EXPECT_TRUE(std::abs(phi) < 1e-3 || phi < far_edge) << phi;
 }

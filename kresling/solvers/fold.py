@@ -39,10 +39,12 @@ def fold_stages(stages) -> list:
     return out
 
 
-def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterations=50,
-               max_bisections=10, extrapolation=0, shift=_DEFAULTS.shift, initial=None, stop=None,
-               cholesky="auto", adaptive=False, adaptive_tolerance=1e-9,
-               snap=False, give_up_after=0) -> PathResult:
+def solve_fold(model, stages, steps, *, forces=None, tolerance=_DEFAULTS.tolerance,
+               max_iterations=_DEFAULTS.max_iterations, max_bisections=_DEFAULTS.max_bisections,
+               extrapolation=_DEFAULTS.extrapolation, shift=_DEFAULTS.shift, initial=None,
+               stop=None, cholesky="auto", adaptive=_DEFAULTS.adaptive,
+               adaptive_tolerance=_DEFAULTS.adaptive_tolerance, snap=_DEFAULTS.snap,
+               relax=_DEFAULTS.relax, give_up_after=_DEFAULTS.give_up_after) -> PathResult:
     """Drive hinges' rest angles to targets, stage after stage, and follow the equilibrium.
 
     Parameters
@@ -81,7 +83,15 @@ def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterati
         DOFs the descent uses dense eigen-decompositions; beyond, sparse Cholesky
         factorisations of the tangent shifted until positive definite. Where the descent
         finds no stable state the fold ends as without it.
-
+    relax : bool, default False
+        Fold through stable states only, as a sheet actuated slowly comes to rest: an
+        increment whose Newton solve fails or ends at an unstable equilibrium (a negative
+        eigenvalue of the tangent) is relaxed whole instead, from the last equilibrium, to a
+        stable state at its rest angles (a trust-region descent of the potential energy on
+        sparse Cholesky factorisations of the shifted tangent), recorded as a snapped step;
+        only where none is found (in 200 iterations) is the increment halved, its parts
+        followed as without ``relax`` until one is accepted. ``snap`` then relaxes too. With
+        ``adaptive``, the fixed increments a stage falls back to relax.
     give_up_after : int, default 0
         > 0: an increment whose Newton correction at this iteration or later is still above
         1e-3 of its first is given up there and halved, instead of iterating on to
@@ -103,6 +113,7 @@ def solve_fold(model, stages, steps, *, forces=None, tolerance=1e-6, max_iterati
     o.adaptive = as_bool("adaptive", adaptive)
     o.adaptive_tolerance = as_positive_real("adaptive_tolerance", adaptive_tolerance)
     o.snap = as_bool("snap", snap)
+    o.relax = as_bool("relax", relax)
     o.shift = as_real("shift", shift)
     if stop is not None and not callable(stop):
         raise ValueError(f"stop = {stop!r} is invalid: must be None or a callable")

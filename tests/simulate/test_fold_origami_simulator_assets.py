@@ -172,3 +172,36 @@ def test_a_pop_up_with_cuts_folds_with_its_panels_kept_apart():
     del table["joined"]
     with pytest.raises(ValueError, match="two panels are 0 mm apart at rest"):
         model.with_families({"self_contact": table})
+
+
+def test_a_relaxed_fold_takes_whole_increments_to_the_states_the_halved_path_reaches():
+    # A corner of Origami Simulator's box-pleated in-out wave: along its fold Newton, started
+    # from the extrapolated path, often fails at a whole increment, and the path halves its
+    # way on (20 increments asked, 53 taken). Relaxed (the default with Origami Simulator's
+    # material), each such increment is relaxed whole from the last equilibrium instead:
+    # 20 increments, every one a stable state, and - the path being stable here - the very
+    # equilibria the halved path reaches at the same fractions. Tolerance: both end within
+    # Newton's tolerance (1e-8 of the pattern's size) of the same equilibrium, so within
+    # twice that of each other.
+    def folded(relax):
+        problem = _new_users_problem("BoxPleatInOutWave-corner.fold", steps=20)
+        if relax is not None:
+            problem["analysis"]["relax"] = relax
+        return simulate(problem, progress=False)
+
+    halved, relaxed = folded(False), folded(None)
+    assert halved.completed and relaxed.completed, (halved.message, relaxed.message)
+    assert halved.path.num_steps > 20
+    assert relaxed.path.num_steps == 20
+    assert np.all(np.asarray(relaxed.path.negative_eigenvalues) == 0)
+    relaxed_at = np.flatnonzero(relaxed.path.snapped)
+    assert relaxed_at.size > 0
+    assert relaxed.fold_report()["snaps"] == pytest.approx(
+        relaxed.path.load_factor[relaxed_at].tolist())
+    pattern = relaxed.problem.pattern
+    extent = np.linalg.norm(np.ptp(pattern.vertices, axis=0))
+    for k in range(relaxed.path.num_steps):
+        j = int(np.argmin(np.abs(halved.path.load_factor - relaxed.path.load_factor[k])))
+        assert halved.path.load_factor[j] == pytest.approx(relaxed.path.load_factor[k])
+        np.testing.assert_allclose(relaxed.path.displacement[k], halved.path.displacement[j],
+                                   rtol=0, atol=2e-8 * extent)

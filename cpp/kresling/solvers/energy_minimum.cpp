@@ -72,13 +72,17 @@ bool line_search(assembly::Assembler& assembler, VectorX& u, VectorX step, doubl
 
 }  // namespace
 
+void check_descent(double tolerance, double max_step, double escape_step, int max_iterations) {
+  require_positive("tolerance", tolerance);
+  require_positive("escape_step", escape_step);
+  require_positive("max_step", max_step);
+  if (max_iterations < 1) throw_invalid("max_iterations", max_iterations, "an integer >= 1");
+}
+
 EnergyMinimum minimize_energy(assembly::Assembler& assembler, VectorX& u,
                               const EnergyMinimumOptions& o, const VectorX* external) {
-  require_positive("tolerance", o.tolerance);
-  require_positive("escape_step", o.escape_step);
+  check_descent(o.tolerance, o.max_step, o.escape_step, o.max_iterations);
   require_positive("min_curvature", o.min_curvature);
-  require_positive("max_step", o.max_step);
-  if (o.max_iterations < 1) throw_invalid("max_iterations", o.max_iterations, "an integer >= 1");
   EnergyMinimum out;
   Evaluation e;
   for (out.iterations = 0; out.iterations < o.max_iterations; ++out.iterations) {

@@ -39,6 +39,10 @@ struct EnergyMinimum {
   std::string failure;               ///< why not converged
 };
 
+/// Throws std::invalid_argument unless a descent's tolerance, longest step and escape step
+/// [mm] are > 0 and its budget of iterations >= 1 (every descent's options).
+void check_descent(double tolerance, double max_step, double escape_step, int max_iterations);
+
 /// Descend from `u` (all DOFs, updated in place) on the assembler's rows (its other DOFs
 /// stay where they are). The assembler should store the full matrix with no diagonal shift
 /// (a shift would hide a zero-stiffness mode from the inertia). `external` (optional, one

@@ -109,6 +109,8 @@ PathResult solve_fold(const model::Model& model, const std::vector<FoldStage>& s
   follow.max_bisections = options.max_bisections;
   follow.extrapolation = options.extrapolation;
   follow.snap = options.snap;
+  follow.relax = options.relax;
+  follow.relax_iterations = options.relax_iterations;
   bool stopped = false;  // the caller's rule ended the fold
   follow.stop = [&](const PathStep& step) {
     stopped = options.stop && options.stop(step);

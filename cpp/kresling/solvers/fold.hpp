@@ -40,6 +40,15 @@ struct FoldOptions {
   /// equilibrium near at the next increment), the sheet snaps to a stable state by an
   /// energy descent and the fold goes on from there (FollowOptions::snap).
   bool snap = false;
+  /// Fold through stable states only, as a sheet actuated slowly comes to rest: an
+  /// increment whose Newton solve fails or ends at an unstable equilibrium (a negative
+  /// eigenvalue of the tangent) is relaxed whole instead, from the last equilibrium, to a
+  /// stable state at its rest angles (FollowOptions::relax), and only where none is found
+  /// halved (its parts then followed as without `relax`); snaps (`snap`) relax too. With `adaptive`, the fixed increments a
+  /// stage falls back to relax.
+  bool relax = false;
+  /// A relaxed increment's budget of relaxation iterations (FollowOptions::relax_iterations).
+  int relax_iterations = 200;
   StopRule stop;
 };
 

@@ -9,6 +9,7 @@
 #include "kresling/solvers/damped_newton.hpp"
 #include "kresling/solvers/energy_minimum.hpp"
 #include "kresling/solvers/increments.hpp"
+#include "kresling/solvers/stable_relaxation.hpp"
 
 namespace kresling::solvers {
 
@@ -34,6 +35,17 @@ void extrapolate(const std::vector<double>& ts, const std::vector<VectorX>& us, 
 // The increments of one path (follow_path), as named steps over the state they share:
 // the accepted state u, the increment being tried and the last equilibria (for the
 // extrapolated or secant start).
+// The relaxation's options from the snap's descent's (the same tolerance, lengths and
+// budget).
+RelaxationOptions relaxation(const EnergyMinimumOptions& descent) {
+  RelaxationOptions out;
+  out.tolerance = descent.tolerance;
+  out.max_iterations = descent.max_iterations;
+  out.max_step = descent.max_step;
+  out.escape_step = descent.escape_step;
+  return out;
+}
+
 class PathFollower {
  public:
   PathFollower(PathControl& control, assembly::Assembler& assembler, TangentSolver& solver,
@@ -49,7 +61,12 @@ class PathFollower {
   bool take(const VectorX& trial, const NewtonOutcome& outcome, std::string& failure);
   void keep(PathStep step, const VectorX& trial, const NewtonOutcome& outcome);
   void remember(double reached);
-  bool snap();
+  // `whole`: an increment relaxed instead of halved (FollowOptions::relax_iterations), else
+  // a snap at the smallest increment.
+  bool snap(bool whole);
+  // Relaxed increments (FollowOptions::relax) until a relaxation fails; then the path is
+  // followed as without them up to the next accepted increment.
+  bool relaxing() const { return options_.relax && !relax_failed_; }
 
   PathControl& control_;
   assembly::Assembler& assembler_;
@@ -74,6 +91,8 @@ class PathFollower {
   // The secant start's last two equilibria: the one before u and the increment between.
   VectorX previous_u_;
   double previous_size_ = 0.0;
+  bool relax_failed_ = false;
+  std::string relax_failure_;  // why the last relaxation found no stable state
 };
 
 // Newton stops at max_iterations even when an increment may take more before it is
@@ -153,6 +172,11 @@ bool PathFollower::attempt(std::string& failure) {
                   : outcome.failure;
     return false;
   }
+  if (relaxing() && outcome.negative_eigenvalues > 0) {
+    failure = "the equilibrium is unstable (" + std::to_string(outcome.negative_eigenvalues) +
+              " negative eigenvalues)";
+    return false;
+  }
   return take(trial, outcome, failure);
 }
 
@@ -167,8 +191,9 @@ NewtonOutcome PathFollower::solve_extrapolated(VectorX& trial) {
   extrapolate(path_t_, path_u_, options_.extrapolation, increment_.to, trial);
   shorten_to_barriers(assembler_.model(), u_, trial);
   NewtonOutcome outcome = solve_at(trial);
+  // (A relaxed path relaxes such an increment instead: FollowOptions::relax.)
   const bool failed = !accepted(outcome);
-  if (failed || outcome.negative_eigenvalues > previous_negative_) {
+  if (!relaxing() && (failed || outcome.negative_eigenvalues > previous_negative_)) {
     VectorX plain = u_;
     const NewtonOutcome retry = solve_at(plain);
     if (accepted(retry) &&
@@ -229,7 +254,7 @@ void PathFollower::remember(double reached) {
 // descends from the last equilibrium to a stable one, which becomes the path's next step.
 // The descent's steps are bounded by the model's size (not in mm), so it follows the
 // landscape at any scale.
-bool PathFollower::snap() {
+bool PathFollower::snap(bool whole) {
   if (control_.changes_model()) assembler_.rebind(control_.model_at(increment_.to));
   VectorX trial = u_;
   control_.advance(increment_, u_, trial, external_);
@@ -240,17 +265,30 @@ bool PathFollower::snap() {
   descent.max_iterations = 2000;
   descent.max_step = 0.01 * size;
   descent.escape_step = 1e-3 * size;
-  // Dense eigen-decompositions up to kMaxSnapDofs, shifted sparse Cholesky beyond.
-  const EnergyMinimum rest =
-      assembler_.size() > kMaxSnapDofs
-          ? minimize_energy_sparse(assembler_, solver_, trial, descent, &external_)
-          : minimize_energy(assembler_, trial, descent, &external_);
-  result_.newton_iterations += rest.iterations;
-  if (!rest.converged) return false;
   NewtonOutcome outcome;
+  if (options_.relax) {
+    RelaxationOptions relax = relaxation(descent);
+    if (whole) relax.max_iterations = options_.relax_iterations;
+    const Relaxation rest = relax_to_stable(assembler_, solver_, trial, relax, &external_);
+    result_.newton_iterations += rest.iterations;
+    if (!rest.converged) {
+      relax_failure_ = rest.failure;
+      return false;
+    }
+    outcome.iterations = rest.iterations;
+    outcome.negative_eigenvalues = 0;
+  } else {
+    // Dense eigen-decompositions up to kMaxSnapDofs, shifted sparse Cholesky beyond.
+    const EnergyMinimum rest =
+        assembler_.size() > kMaxSnapDofs
+            ? minimize_energy_sparse(assembler_, solver_, trial, descent, &external_)
+            : minimize_energy(assembler_, trial, descent, &external_);
+    result_.newton_iterations += rest.iterations;
+    if (!rest.converged) return false;
+    outcome.iterations = rest.iterations;
+    outcome.negative_eigenvalues = rest.negative_eigenvalues;
+  }
   outcome.converged = true;
-  outcome.iterations = rest.iterations;
-  outcome.negative_eigenvalues = rest.negative_eigenvalues;
   PathStep step =
       control_.record(assembler_, trial, increment_.to, outcome, recorded_, sign_, internal_);
   if (!finite_step(step)) return false;
@@ -270,11 +308,18 @@ bool PathFollower::run(StepPolicy& policy) {
     check_interrupt();
     ++result_.attempted_increments;
     std::string failure;
-    if (attempt(failure)) {
+    relax_failure_.clear();
+    const bool accepted_now = attempt(failure) || (relaxing() && snap(true));
+    if (!relax_failure_.empty()) {  // said, and the increment's parts followed unrelaxed
+      failure += "; relaxed, " + relax_failure_;
+      relax_failed_ = true;
+    }
+    if (accepted_now) {
+      relax_failed_ = false;
       policy.accepted(increment_);
     } else if (policy.rejected(increment_, failure)) {
       continue;  // tried again smaller
-    } else if (!(options_.snap && snap() && policy.resume(increment_))) {
+    } else if (!(options_.snap && snap(false) && policy.resume(increment_))) {
       break;
     }
     if (options_.stop && options_.stop(result_.steps.back())) {

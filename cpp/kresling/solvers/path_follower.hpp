@@ -58,6 +58,15 @@ struct FollowOptions {
   /// beyond it sparse (minimize_energy_sparse); a descent that finds no stable state ends
   /// the path as before, saying so.
   bool snap = false;
+  /// Follow stable states: an increment whose Newton solve fails, ends at an unstable
+  /// equilibrium (a negative eigenvalue) or is rejected by the check is relaxed whole: from
+  /// the last equilibrium, the energy at the increment's end is descended to a stable state
+  /// (stable_relaxation.hpp) in at most `relax_iterations` iterations, which is recorded as
+  /// a step (PathStep::snapped). Where that finds none, the increment is halved and its
+  /// parts are followed as without `relax` (unstable equilibria accepted), until one is
+  /// accepted. Snaps (`snap`) relax too, with the snap's budget.
+  bool relax = false;
+  int relax_iterations = 200;
 };
 
 /// The largest model (free DOFs) whose snap descends with dense eigen-decompositions.

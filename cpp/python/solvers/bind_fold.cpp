@@ -10,7 +10,8 @@ void bind_fold(py::module_& m) {
       .def_readwrite("extrapolation", &FoldOptions::extrapolation)
       .def_readwrite("adaptive", &FoldOptions::adaptive)
       .def_readwrite("adaptive_tolerance", &FoldOptions::adaptive_tolerance)
-      .def_readwrite("snap", &FoldOptions::snap);
+      .def_readwrite("snap", &FoldOptions::snap)
+      .def_readwrite("relax", &FoldOptions::relax);
 
   m.def(
       "fold",

@@ -48,6 +48,7 @@ class Fold(PathMethod):
         # halves the Newton iterations (the box-pleat pyramid: 5 instead of 10).
         settings.update(read_increments(t, FOLD_PREDICTOR))
         settings["snap"] = t.get("snap", boolean, False)
+        settings["relax"] = t.get("relax", boolean, None)
         return settings
 
     def check(self, problem, t):
@@ -91,6 +92,7 @@ class Fold(PathMethod):
                           extrapolation=PREDICTORS.index(analysis.predictor),
                           adaptive=analysis.increments == "adaptive",
                           adaptive_tolerance=ADAPTIVE_TOLERANCE, snap=analysis.snap,
+                          relax=relaxes(problem),
                           give_up_after=0 if problem.contact is not None else FOLD_GIVE_UP_AFTER,
                           **common)
 
@@ -108,6 +110,15 @@ class Fold(PathMethod):
         return (100.0 * np.asarray(simulation.path.load_factor, dtype=float),
                 np.asarray(columns["energy_total"], dtype=float), "fold [%]",
                 "energy_total [N*mm]")
+
+
+def relaxes(problem) -> bool:
+    """Whether a fold relaxes the increments its path cannot follow stably (``[analysis]
+    relax``): by default with Origami Simulator's material, whose sheet is meant to come to
+    rest as Origami Simulator's relaxation brings it."""
+    if problem.analysis.relax is not None:
+        return problem.analysis.relax
+    return problem.preset is not None
 
 
 METHOD = Fold()

@@ -65,6 +65,11 @@ class Analysis:
     #: ``method = "fold"``: where the fold's equilibrium path ends, snap to a stable state
     #: and fold on (:func:`kresling.solvers.solve_fold`'s ``snap``).
     snap: bool = False
+    #: ``method = "fold"``: fold through stable states only, relaxing an increment whose
+    #: equilibrium is unstable or not found (:func:`kresling.solvers.solve_fold`'s
+    #: ``relax``); None: the default, on with Origami Simulator's material (a preset), off
+    #: with a material of the problem's own.
+    relax: bool | None = None
     #: ``method = "fold"``: every target fold angle is scaled by fold_percent / 100.
     fold_percent: float = 100.0
     #: ``method = "modes"``: how many of the lowest modes, about which state: "rest" or a
