@@ -185,11 +185,19 @@ def _scheme(scheme, hht_alpha):
     return scheme
 
 
+#: The defaults, as the core declares them (not restated here).
+_IMPLICIT = _core.solvers.TimeIntegrationOptions()
+_EXPLICIT = _core.solvers.ExplicitOptions()
+
+
 def solve_dynamics(model, masses, time_step, duration, *, forces=None, gravity=None,
                    load_table=None, loads=None, scheme=None,
-                   hht_alpha=0.0, mass_damping=0.0, stiffness_damping=0.0, tolerance=1e-6,
-                   max_iterations=50, max_halvings=10, record_every=1, initial=None,
-                   initial_velocity=None, stop=None, cholesky="auto") -> TimeHistory:
+                   hht_alpha=_IMPLICIT.hht_alpha, mass_damping=_IMPLICIT.mass_damping,
+                   stiffness_damping=_IMPLICIT.stiffness_damping,
+                   tolerance=_IMPLICIT.tolerance, max_iterations=_IMPLICIT.max_iterations,
+                   max_halvings=_IMPLICIT.max_halvings, record_every=_EXPLICIT.record_every,
+                   initial=None, initial_velocity=None, stop=None,
+                   cholesky="auto") -> TimeHistory:
     """Integrate the model's motion ``M a + C v + f_int(u) = f(t)`` in time.
 
     Parameters
