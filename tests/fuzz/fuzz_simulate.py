@@ -130,7 +130,8 @@ KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices"
         "point", "normal", "self", "unit", "scale", "frame", "assignments", "dynamics",
         "scheme", "time_step", "duration", "damping", "gravity", "hht_alpha", "record_every",
         "time", "ramp_time", "alpha", "beta", "load_factor", "tangent", "preset", "fold_percent",
-        "snap_tolerance", "formats", "sensitivity", "parameters", "stage", "name", "unknown_key"]
+        "snap_tolerance", "formats", "sensitivity", "parameters", "stage", "name", "relax",
+        "snap", "unknown_key"]
 values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_001, 10**6]),
                    st.sampled_from(
     ["xyz", "z", "w", "N5B8", "N4B5", "auto", "manual", "linear", "mgdcm", "force_control",
