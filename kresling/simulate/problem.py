@@ -61,6 +61,8 @@ class Problem:
     num_nodes : int
         The model's node count the problem was checked against (pattern vertices, then
         N5B8 centre nodes).
+    renumbered : str
+        Where the pattern file writes a vertex twice: the warning of its merge ("" if not).
     material : SheetMaterial or ManualProperties
     merlin2_compat : bool
         Build and drive the model exactly as MERLIN2 v1.1 would.
@@ -88,6 +90,8 @@ class Problem:
     centre: str = "merlin2"
     assignments: str = "fold"
     num_nodes: int | None = None
+    #: The warning of a pattern file whose coincident vertices were merged ("" if none).
+    renumbered: str = ""
     material: object = None
     merlin2_compat: bool = False
     preset: str | None = None

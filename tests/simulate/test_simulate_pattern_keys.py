@@ -53,3 +53,39 @@ def test_unit_scale_frame_and_assignments_reach_the_model(tmp_path):
 def test_bad_pattern_keys_are_named(tmp_path, keys, message):
     with pytest.raises(ValueError, match=message):
         load_problem(_problem(tmp_path, keys))
+
+
+# A 2 x 1 strip whose right square uses a copy (vertex 2) of vertex 1: read, the copy is
+# merged and the vertices after it are numbered one lower.
+_STRIP_WITH_A_COPY = {"vertices_coords": [[0.0, 0.0], [10.0, 0.0], [10.0, 0.0], [20.0, 0.0],
+                                          [0.0, 10.0], [10.0, 10.0], [20.0, 10.0]],
+                      "faces_vertices": [[0, 1, 5, 4], [2, 3, 6, 5]],
+                      "edges_vertices": [[1, 5]], "edges_assignment": ["V"],
+                      "edges_foldAngle": [30]}
+
+
+@pytest.mark.parametrize("named", [
+    {"support": [{"node": 3, "fix": "xyz"}]},
+    {"actuation": [{"edges": [[1, 5]], "fold_angle_deg": 30.0}]},
+])
+def test_node_numbers_of_a_file_with_a_merged_copy_are_refused(tmp_path, named):
+    import json
+
+    path = tmp_path / "strip.fold"
+    path.write_text(json.dumps(_STRIP_WITH_A_COPY))
+    problem = {"pattern": {"file": str(path)}, "analysis": {"method": "fold"},
+               "actuation": [{"family": "fold", "fold_angle_deg": "file"}], **named}
+    # Node 3 of the file is the strip's corner (20, 0); of the merged pattern, (0, 10).
+    with pytest.raises(ValueError, match=r"numbers nodes of a pattern whose file writes a "
+                                         r"vertex twice \(.*strip.fold: 1 coincident vertex"):
+        load_problem(problem)
+
+
+def test_a_file_with_a_merged_copy_folds_when_no_node_is_named(tmp_path):
+    import json
+
+    path = tmp_path / "strip.fold"
+    path.write_text(json.dumps(_STRIP_WITH_A_COPY))
+    problem = load_problem({"pattern": {"file": str(path)}, "analysis": {"method": "fold"},
+                            "actuation": [{"family": "fold", "fold_angle_deg": "file"}]})
+    assert problem.renumbered and problem.pattern.num_vertices == 6

@@ -3,6 +3,7 @@ inline), how its panels are split into triangles and how its edge assignments ar
 
 from __future__ import annotations
 
+import logging
 from pathlib import Path
 
 import numpy as np
@@ -16,6 +17,9 @@ from kresling.simulate.problem_keys import ProblemKey
 from kresling.simulate.problem_table import integer, panels, positive, raw, string
 
 __all__ = ["KEY", "node_count"]
+
+#: The logger whose warning says a pattern file's vertices were merged.
+MERGE_LOGGER = "kresling.io.coincident_vertices"
 
 
 def read_pattern_key(t, context) -> dict:
@@ -33,6 +37,7 @@ def read_pattern_key(t, context) -> dict:
     frame = t.get("frame", integer, 0)
     snap = t.get("snap_tolerance", positive, None)
     convention = "fold"
+    merges = _MergeRecord()
     if snap is not None and not (t.has("file") and str(t.data["file"]).lower().endswith(".svg")):
         t.fail("snap_tolerance", f"= {snap!r} applies only to an SVG drawing's file (its "
                                  "strokes are merged into vertices within it)")
@@ -46,8 +51,9 @@ def read_pattern_key(t, context) -> dict:
         if frame and path.suffix.lower() != ".fold":
             t.fail("frame", f"= {frame} applies only to FOLD files: {name!r} has no frames")
         convention = "origami_simulator" if path.suffix.lower() == ".svg" else "fold"
-        pattern = read_pattern(path, planarity_tolerance=tolerance, unit=unit, scale=scale,
-                               frame=frame, snap_tolerance=snap)
+        with merges:
+            pattern = read_pattern(path, planarity_tolerance=tolerance, unit=unit,
+                                   scale=scale, frame=frame, snap_tolerance=snap)
     elif t.has("vertices"):
         if t.has("frame"):
             t.fail("frame", "applies only to a pattern file (FOLD frames)")
@@ -58,10 +64,47 @@ def read_pattern_key(t, context) -> dict:
     t.finish()
     pattern = separate_cuts(pattern)
     fields = {"pattern": pattern, "split": split, "centre": centre, "assignments": convention,
-              "num_nodes": node_count(pattern, split, centre)}
+              "num_nodes": node_count(pattern, split, centre),
+              "renumbered": merges.message}
     if context.preset is not None:
         fields["material"] = preset_material(context.preset, pattern.vertices)
     return fields
+
+
+class _MergeRecord(logging.Handler):
+    """The warning of a pattern file whose coincident vertices were merged (its vertices
+    renumbered), caught while the file is read."""
+
+    def __init__(self):
+        super().__init__(logging.WARNING)
+        self.message = ""
+
+    def emit(self, record):
+        self.message = record.getMessage()
+
+    def __enter__(self):
+        logging.getLogger(MERGE_LOGGER).addHandler(self)
+        return self
+
+    def __exit__(self, *exc):
+        logging.getLogger(MERGE_LOGGER).removeHandler(self)
+
+
+def check_numbering(problem):
+    """Node numbers of a pattern file whose vertices were merged would count the merged
+    vertices, not the file's: a problem that names nodes or vertices is refused."""
+    if not problem.renumbered:
+        return
+    named = [label for label, given in (
+        ("[[support]]", problem.supports and not problem.held), ("[[load]]", problem.loads),
+        ("[[spring]]", problem.springs), ("[[mass]]", problem.masses),
+        ("[[actuation]] edges", any(a.edges for a in problem.actuations)),
+        ("[analysis.stop]", problem.analysis.stop is not None),
+        ("[output] curve", problem.output.curve is not None)) if given]
+    if named:
+        raise ValueError(f"{problem.source}: {named[0]} numbers nodes of a pattern whose file "
+                         f"writes a vertex twice ({problem.renumbered}): remove the copy from "
+                         "the file, so that its vertex numbers are the problem's")
 
 
 def _inline_pattern(t, tolerance, unit, scale):
@@ -94,4 +137,4 @@ def node_count(pattern, split, centre="merlin2"):
 
 
 KEY = ProblemKey("pattern", rank=20, read=read_pattern_key, required=True,
-                 allowed="a table naming the crease pattern")
+                 allowed="a table naming the crease pattern", check=check_numbering)
