@@ -39,6 +39,7 @@ def build_problem_model(problem) -> PatternModel:
               if key.families is not None]
     families = {name: table for _, tables in by_key for name, table in tables.items()}
     if not families:
+        _check_model(problem, pm.model)
         return pm
     try:
         # The pattern model's own families (the faces' angle springs) stay beside these.
@@ -50,7 +51,15 @@ def build_problem_model(problem) -> PatternModel:
             except ValueError as own:
                 raise ValueError(f"{problem.source}: {key.label}: {own}") from None
         raise ValueError(f"{problem.source}: {error}") from None
+    _check_model(problem, model)
     return dataclasses.replace(pm, model=model)
+
+
+def _check_model(problem, model):
+    """Every key's refusals that need the built model."""
+    for key in problem_keys():
+        if key.model_check is not None:
+            key.model_check(problem, model)
 
 
 def _where(message: str) -> str:

@@ -53,6 +53,9 @@ class ProblemKey:
         ``families(problem, pattern_model) -> dict`` of element families' tables the key
         adds to the model (:meth:`kresling.Model.with_families`); a refusal of the model's
         names this key.
+    model_check : callable, optional
+        ``model_check(problem, model)``: refusals that need the built model (a parameter
+        name the model has not), before any solve.
     history : callable, optional
         ``history(simulation) -> dict`` of history.csv columns the key adds.
     outputs : callable, optional
@@ -70,6 +73,7 @@ class ProblemKey:
     absent: dict | None = None
     check: Callable | None = None
     families: Callable | None = None
+    model_check: Callable | None = None
     history: Callable | None = None
     outputs: Callable | None = None
 

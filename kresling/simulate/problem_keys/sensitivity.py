@@ -172,6 +172,17 @@ def _directions(simulation) -> list:
     return out
 
 
+def check_parameters(problem, model):
+    """Every 'family.column' names a parameter of the built model (before the run)."""
+    if problem.sensitivity is None:
+        return
+    known = set(parameter_names(model))
+    for name in problem.sensitivity.parameters:
+        if "." in name and name.split("[", 1)[0] not in known:
+            raise ValueError(f"{problem.source}: [sensitivity] key 'parameters': {name!r} is "
+                             f"not a parameter of this model (its parameters: {sorted(known)})")
+
+
 def write_sensitivities(simulation, directory, rows) -> dict:
     """sensitivities.csv, at the history's kept increments (nothing for a path that did not
     complete: its derivatives would be those of another problem; a warning says so)."""
@@ -182,11 +193,6 @@ def write_sensitivities(simulation, directory, rows) -> dict:
         logger.warning("%s: sensitivities.csv not written: the path did not complete, so its "
                        "derivatives are refused", problem.source)
         return {}
-    known = set(parameter_names(simulation.model))
-    for name in problem.sensitivity.parameters:
-        if "." in name and name.split("[", 1)[0] not in known:
-            raise ValueError(f"{problem.source}: [sensitivity] key 'parameters': {name!r} is "
-                             f"not a parameter of this model (its parameters: {sorted(known)})")
     directions = _directions(simulation)
     try:
         if simulation.fold is not None:
@@ -217,4 +223,5 @@ def write_sensitivities(simulation, directory, rows) -> dict:
 
 
 KEY = ProblemKey("sensitivity", rank=130, read=read_sensitivity, absent={"sensitivity": None},
-                 check=check_sensitivity, outputs=write_sensitivities)
+                 check=check_sensitivity, model_check=check_parameters,
+                 outputs=write_sensitivities)
