@@ -225,6 +225,10 @@ def snap_in_time(design: Design, *, margin=0.05, damping=0.05, eccentricity=0.1,
     load = (1.0 + margin) * static.snap_force
     forces = np.zeros((model.num_nodes, 3))
     forces[top, 2] = -load / n * (1.0 + 2.0 * eccentricity * np.cos(theta) / design.R)
+    if not np.isfinite(forces).all():
+        raise ValueError(f"eccentricity = {eccentricity!r} is invalid: the top's loads it "
+                         f"shifts are not finite (it must be of the order of R = {design.R:g} mm "
+                         "or less)")
     omega = 2 * math.pi * float(vibration_modes(model, masses, 1).frequencies_hz[0])
     alpha = 2.0 * damping * omega
     history = solve_dynamics(model, masses, time_step, duration, forces=forces,

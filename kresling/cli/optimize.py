@@ -4,6 +4,7 @@ derivatives, under bounds on other metrics."""
 from __future__ import annotations
 
 import math
+import sys
 
 from kresling.cli._output import cli_names, print_json, print_table
 from kresling.cli._specimen import add_specimen_arguments, specimen_parameters_from_args
@@ -79,4 +80,6 @@ def run(args) -> int:
         print_table(rows, ("quantity", "value", "unit"))
         print(f"\nactive bounds: {', '.join(best.active) or 'none'}; {best.evaluations} designs "
               f"evaluated by the optimiser; {best.message}")
+    if not best.success:   # said on stderr too, as every command's exit 1
+        print(f"kresling optimize: {best.message}", file=sys.stderr)
     return 0 if best.success else 1

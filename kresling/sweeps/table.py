@@ -50,8 +50,15 @@ def format_row(row) -> str:
 
 
 def parse_value(name: str, text: str):
+    """A cell of column ``name`` from its text; a ValueError where it is not one (an
+    integer beyond the 64 bits a column holds included)."""
     kind = column_kind(name)
-    return int(text) if kind == "int" else text if kind == "str" else float(text)
+    if kind == "int":
+        value = int(text)
+        if not -2**63 <= value < 2**63:
+            raise ValueError(f"{name} = {text!r} is beyond a 64-bit integer")
+        return value
+    return text if kind == "str" else float(text)
 
 
 class SweepTable:

@@ -101,3 +101,11 @@ def test_linear_bending_never_returns_a_bare_nan():
     with pytest.raises(ValueError, match=r"^design = Design\(n=8, .* has no linearised K_B in "
                                          r"the contracted state: the condensed stiffness is "):
         linear_bending_stiffness(Design(8, 0.584, 1000, 0.001), 0)
+
+
+def test_an_eccentricity_whose_loads_overflow_is_refused_naming_it():
+    # (found by the fuzz target at scale 50: the solver's "forces contains NaN or inf")
+    from kresling.analyses.snap_dynamics import snap_in_time
+
+    with pytest.raises(ValueError, match=r"eccentricity = .* is invalid: the top's loads"):
+        snap_in_time(Design(10, 0.9, 15.0, 30.0), eccentricity=8.98846567431158e+307)

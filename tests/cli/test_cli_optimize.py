@@ -27,3 +27,11 @@ def test_the_kb_con_floor_optimum(capsys):
 def test_bad_input_exits_2_naming_the_option(argv, message, capsys):
     assert main(["optimize", *argv]) == 2
     assert message in capsys.readouterr().err
+
+
+def test_an_optimum_short_of_its_constraints_says_why_on_stderr(capsys):
+    # (found by the fuzz target at scale 50: exit 1 with nothing on stderr)
+    assert main(["optimize", "--n", "6", "--Lc", "0", "0.9", "--polygon-edge-ratio", "0.7",
+                 "--bar-ratio", "0.6"]) == 1
+    err = capsys.readouterr().err
+    assert err.strip().startswith("kresling optimize: ") and "constraints not met" in err

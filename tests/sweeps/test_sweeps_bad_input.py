@@ -85,3 +85,13 @@ def test_sweep_sizes_are_checked():
         sweep(design_grid((4,), 2), ["psi_ratio"], chunk_size=-2, progress=False)
     with pytest.raises(ValueError, match=r"^workers = 100000 is invalid for threads"):
         sweep(design_grid((4,), 2), ["psi_ratio"], workers=100_000, progress=False)
+
+
+def test_an_index_beyond_64_bits_names_the_file_and_line(tmp_path):
+    # (found by the fuzz target at scale 50: an OverflowError from numpy)
+    from kresling.sweeps.table import SweepTable
+
+    path = tmp_path / "results.csv"
+    path.write_text("index,Lc\n" + "9" * 40 + ",15.0\n")
+    with pytest.raises(ValueError, match=r"results.csv, line 2: column 'index'"):
+        SweepTable.read_csv(path)
