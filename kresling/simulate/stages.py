@@ -22,10 +22,10 @@ from kresling.simulate.start_state import StartState
 
 __all__ = ["StagedProblem", "StagedRun", "read_stages", "STAGE_KEYS"]
 
-#: The keys of a stage table that are tables of their own in a problem of one stage.
-STAGE_KEYS = {"load": "load", "actuation": "actuation", "dynamics": "dynamics"}
+#: The keys of a stage table that are top-level tables in a problem of one stage.
+STAGE_KEYS = ("load", "actuation", "dynamics")
 #: Top-level keys a problem in stages gives per stage instead.
-_PER_STAGE = ("analysis", "load", "actuation", "dynamics")
+_PER_STAGE = ("analysis",) + STAGE_KEYS
 
 
 @dataclass(frozen=True)
@@ -60,7 +60,7 @@ def read_stages(data: dict, source: str, base: Path, load_problem) -> StagedProb
         names.add(name)
         problem = {**shared, "analysis": {k: v for k, v in entry.items()
                                           if k != "name" and k not in STAGE_KEYS}}
-        problem.update({STAGE_KEYS[k]: v for k, v in entry.items() if k in STAGE_KEYS})
+        problem.update({k: v for k, v in entry.items() if k in STAGE_KEYS})
         where = f"{source}: stage '{name}'"
         # Read as a problem of its own: relative paths from the problem's folder.
         if isinstance(shared.get("pattern"), dict) and "file" in shared["pattern"]:

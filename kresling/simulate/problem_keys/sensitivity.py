@@ -148,8 +148,7 @@ def _vertex_directions(simulation) -> list:
                     return build_panel_elements(moved, problem.pattern.faces,
                                                 split=problem.split,
                                                 centre=problem.centre).nodes[count:]
-                derivative = _linear_difference(lambda s: centres(s) - centres(0.0),
-                                                1e-3 * size)
+                derivative = _linear_difference(centres, 1e-3 * size)
                 if derivative is None:
                     raise ValueError(f"{problem.source}: [sensitivity] 'vertices': the centre "
                                      "nodes follow their corners non-linearly (MERLIN2's rule); "
