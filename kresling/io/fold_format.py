@@ -114,9 +114,11 @@ def write_fold(path, pattern_or_vertices, faces=None, *, edges=None, edges_assig
         if faces is None:
             raise ValueError("faces is missing: write_fold needs a Pattern, or vertices and "
                              "faces")
+        # No faces but edges: a structure of bars alone (FOLD allows it).
         pattern = pattern_from_arrays(pattern_or_vertices, faces, edges=edges,
                                       edges_assignment=edges_assignment,
-                                      edges_fold_angle=edges_fold_angle)
+                                      edges_fold_angle=edges_fold_angle,
+                                      panels_required=edges is None or len(edges) == 0)
     if frames is None:
         frames = pattern.frames
     else:

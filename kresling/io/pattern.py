@@ -84,7 +84,7 @@ class Pattern:
     def __post_init__(self) -> None:
         vertices = checked_coordinates(self.vertices, "vertices")
         count = len(vertices)
-        faces = checked_faces(self.faces, count, argument_fail("faces"))
+        faces = checked_faces(self.faces, count, argument_fail("faces"), required=False)
         edges = checked_edges(self.edges, count, argument_fail("edges"))
         assignments = checked_assignments(self.edges_assignment, len(edges),
                                       argument_fail("edges_assignment"))
@@ -158,7 +158,8 @@ class Pattern:
 
 
 def pattern_from_arrays(vertices, faces, *, edges=None, edges_assignment=None,
-                        edges_fold_angle=None, planarity_tolerance=1e-3) -> Pattern:
+                        edges_fold_angle=None, planarity_tolerance=1e-3,
+                        panels_required=True) -> Pattern:
     """A checked :class:`Pattern` from arrays (``source = ""``).
 
     Parameters
@@ -179,6 +180,9 @@ def pattern_from_arrays(vertices, faces, *, edges=None, edges_assignment=None,
     planarity_tolerance : float or None, default 1e-3
         Largest distance of a panel's corner from the panel's best-fit plane, as a fraction
         of the panel's diameter; ``None`` skips the check (a deformed mesh).
+    panels_required : bool, default True
+        False accepts ``faces = []``: vertices alone, the nodes of a structure whose bars
+        and hinges are given one by one (:class:`kresling.model.Members`).
 
     Returns
     -------
@@ -192,7 +196,8 @@ def pattern_from_arrays(vertices, faces, *, edges=None, edges_assignment=None,
         length or an unknown letter, a degenerate or non-planar panel.
     """
     coordinates = checked_coordinates(vertices, "vertices")
-    face_list = checked_faces(faces, len(coordinates), argument_fail("faces"))
+    face_list = checked_faces(faces, len(coordinates), argument_fail("faces"),
+                              required=panels_required)
     given = (np.zeros((0, 2), dtype=np.int64) if edges is None
              else checked_edges(edges, len(coordinates), argument_fail("edges")))
     assignments = (None if edges_assignment is None else checked_assignments(
@@ -309,10 +314,10 @@ def check_face(face, count: int, fail: Fail, index: int) -> tuple:
     return tuple(vertices)
 
 
-def checked_faces(faces, count: int, fail: Fail) -> tuple:
+def checked_faces(faces, count: int, fail: Fail, *, required: bool = True) -> tuple:
     faces = tuple(check_face(face, count, fail, index)
                   for index, face in enumerate(_as_list(faces, fail)))
-    if not faces:
+    if not faces and required:
         raise fail(None, "is empty: a pattern needs at least one face (panel)")
     return faces
 

@@ -11,6 +11,7 @@ from kresling.model.kresling_specimen import (EDGE_FAMILIES, MOUNTAIN_CREASES, K
                                               kresling_specimen)
 from kresling.model.calibration import (ManualProperties, SheetMaterial, SheetStiffness,
                                         calibrate_sheet)
+from kresling.model.members import Members
 from kresling.model.model import BAR_LAWS, SPRING_LAWS, Model, family_kinds
 from kresling.model.panel_elements import PanelElements, build_panel_elements
 from kresling.model.pattern_model import (FOLD_FAMILIES, HINGE_FAMILIES, CreaseLaws, HingeLaw,
@@ -22,4 +23,5 @@ __all__ = ["Model", "Topology", "panel_topology", "BAR_LAWS", "SPRING_LAWS",
            "MOUNTAIN_CREASES",
            "alternating_chirality", "PanelElements", "build_panel_elements", "SheetMaterial",
            "ManualProperties", "SheetStiffness", "calibrate_sheet", "HingeLaw", "CreaseLaws",
-           "PatternModel", "build_pattern_model", "FOLD_FAMILIES", "HINGE_FAMILIES", "family_kinds"]
+           "PatternModel", "build_pattern_model", "FOLD_FAMILIES", "HINGE_FAMILIES", "family_kinds",
+           "Members"]

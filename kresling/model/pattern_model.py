@@ -31,18 +31,21 @@ from kresling.model.calibration import (ManualProperties, SheetMaterial, SheetSt
                                         calibrate_sheet)
 from kresling.model.crease_kinds import CONVENTIONS, FAMILY_OF_FOLD, FOLD_FAMILIES, crease_kind
 from kresling.model.crease_laws import CreaseLaws, HingeLaw
+from kresling.model.members import Members  # noqa: F401 (documented with the builder)
 from kresling.model.model import Model
 from kresling.model.panel_elements import PanelElements, build_panel_elements
 from kresling.model.rest_angles import check_rest_angles
 
 __all__ = ["HingeLaw", "CreaseLaws", "PatternModel", "build_pattern_model", "FOLD_FAMILIES",
-           "HINGE_FAMILIES", "CONVENTIONS"]
+           "HINGE_FAMILIES", "CONVENTIONS", "MEMBER"]
 
 #: FOLD edge assignments that carry a fold hinge (in FOLD's convention), and the family
 #: each gives.
 FAMILY_OF_ASSIGNMENT = FAMILY_OF_FOLD
 #: Every hinge family: the fold families and "bend" (hinges inside panels and on joins).
 HINGE_FAMILIES = FOLD_FAMILIES + ("bend",)
+#: The family of the bars and hinges given one by one (:class:`Members`).
+MEMBER = "member"
 
 
 @dataclass(frozen=True)
@@ -56,12 +59,14 @@ class PatternModel:
         fold hinges (cut ones left out), then the bend hinges.
     elements : PanelElements
     hinge_family : tuple of str, length H
-        Family of each model hinge (:data:`HINGE_FAMILIES`).
+        Family of each model hinge (:data:`HINGE_FAMILIES`, or ``"member"`` for the hinges
+        given one by one, which follow the pattern's).
     hinge_element : ndarray of int, shape (H,)
         Index of each model hinge in ``elements.folds`` (fold hinges, and bend hinges on
-        joins: see ``hinge_on_edge``) or ``elements.bends`` (bend hinges inside panels).
+        joins: see ``hinge_on_edge``) or ``elements.bends`` (bend hinges inside panels);
+        -1 for a member hinge.
     bar_family : tuple of str, length B
-        "bend", "fold", "cut" (a bar on a cut edge) or "boundary".
+        "bend", "fold", "cut" (a bar on a cut edge), "boundary" or "member".
     stiffness : SheetStiffness or None
         The calibration, for a sheet material.
     """
@@ -208,7 +213,8 @@ def _vertices_and_panels(pattern):
 
 
 def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", laws=None,
-                        fixed=None, merlin2_compat=False, assignments="fold") -> PatternModel:
+                        fixed=None, merlin2_compat=False, assignments="fold",
+                        members=None) -> PatternModel:
     """Build the bar-and-hinge model of a crease pattern.
 
     Parameters
@@ -239,6 +245,10 @@ def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", la
         :class:`Model`'s ``hinge_angle``).
     assignments : {"fold", "origami_simulator"}
         The convention of the letters (:mod:`kresling.model.crease_kinds`).
+    members : Members, optional
+        Bars and hinges given one by one (:mod:`kresling.model.members`), after the
+        pattern's own (family ``"member"``); a vertex of no panel that a member bar holds is
+        part of the structure. A pattern of no panels is a structure of members alone.
 
     Returns
     -------
@@ -266,7 +276,8 @@ def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", la
         if not source or str(error).startswith(("split", "centre")):
             raise
         raise ValueError(f"{source}: {error}") from None
-    _check_every_vertex_held(pattern, len(vertices), panels, fixed)
+    _check_every_vertex_held(pattern, len(vertices), panels, fixed,
+                             () if members is None else members.nodes)
     letters = _fold_assignments(pattern, elements)
     kinds = [crease_kind(letter, assignments) for letter in letters]
     bar_area, fold_k, bend_k, bar_modulus, stiffness = _material_values(
@@ -300,15 +311,24 @@ def build_pattern_model(pattern, *, material, split="N5B8", centre="merlin2", la
                   families=_face_angle_family(material, elements))
     check_rest_angles(model.hinge_rest_angle, hinges, family,
                       source=getattr(pattern, "source", "") or "pattern")
-    return PatternModel(model, elements, tuple(family), np.asarray(element, dtype=np.int64),
-                        tuple(bar_family), stiffness, on_edge)
+    element = np.asarray(element, dtype=np.int64)
+    if members is not None and len(members):
+        model = members.added_to(model)
+        family += [MEMBER] * len(members.hinges)
+        element = np.concatenate([element, np.full(len(members.hinges), -1)])
+        bar_family += [MEMBER] * len(members.bars)
+        on_edge = np.concatenate([on_edge, np.zeros(len(members.hinges), dtype=bool)])
+    return PatternModel(model, elements, tuple(family), element, tuple(bar_family), stiffness,
+                        on_edge)
 
 
-def _check_every_vertex_held(pattern, count, panels, fixed) -> None:
-    """A vertex on no panel has no bar: its DOFs have no stiffness unless all are supported
-    (the solvers refuse such a node; here the pattern's file is named, and the vertex)."""
+def _check_every_vertex_held(pattern, count, panels, fixed, member_nodes=()) -> None:
+    """A vertex on no panel and no member bar has no bar: its DOFs have no stiffness unless
+    all are supported (the solvers refuse such a node; here the pattern's file is named, and
+    the vertex)."""
     on_panel = np.zeros(count, dtype=bool)
     on_panel[[v for panel in panels for v in panel]] = True
+    on_panel[[v for v in member_nodes if v < count]] = True
     if on_panel.all():
         return
     held = (np.zeros((count, 3), dtype=bool) if fixed is None

@@ -9,11 +9,15 @@ import numpy as np
 
 from kresling.model.fold_angles import hinge_fold_signs, rest_angles_for
 from kresling.model.crease_kinds import FOLD_FAMILIES
+from kresling.model.pattern_model import MEMBER
 
 __all__ = ["FoldPlan", "fold_plan"]
 
 #: What family = "fold" drives: every fold family and the joins.
 _FOLD_FAMILIES = FOLD_FAMILIES + ("join",)
+#: How far from its target a driven crease may end and the fold still reach its end [deg],
+#: unless the analysis's ``target_tolerance_deg`` says otherwise.
+FOLD_TOLERANCE_DEG = 1.0
 
 
 @dataclass(frozen=True)
@@ -41,14 +45,18 @@ class FoldPlan:
 
 
 def _fold_hinge_of_edge(pattern_model) -> dict:
-    """(u, v), u < v -> the model hinge on that crease."""
+    """(u, v), u < v -> the model hinge on that crease (a member hinge: on its axis)."""
     folds = pattern_model.elements.folds
     out = {}
     for h, (family, element) in enumerate(zip(pattern_model.hinge_family,
                                                pattern_model.hinge_element)):
-        if family != "bend":
+        if family == MEMBER:
+            a, b = (int(n) for n in pattern_model.model.hinges[h][:2])
+        elif family != "bend":
             a, b = int(folds[element][0]), int(folds[element][1])
-            out[(min(a, b), max(a, b))] = h
+        else:
+            continue
+        out[(min(a, b), max(a, b))] = h
     return out
 
 

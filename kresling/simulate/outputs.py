@@ -13,7 +13,7 @@ import numpy as np
 from kresling._validation import as_integer
 from kresling.io import write_fold
 from kresling.io.frame_angles import fold_angle_frames
-from kresling.model.pattern_model import FAMILY_OF_ASSIGNMENT
+from kresling.model.pattern_model import FAMILY_OF_ASSIGNMENT, MEMBER
 from kresling.simulate.problem_keys import problem_keys
 
 __all__ = ["write_outputs", "path_fold_edges", "oriented_triangles", "kept_rows", "view_title",
@@ -23,7 +23,8 @@ logger = logging.getLogger(__name__)
 
 #: FOLD assignment of each model hinge family: the fold families' own letters, and "J" (a
 #: join within a face) for the bend hinges, inside panels and on joins.
-_ASSIGNMENT = {family: letter for letter, family in FAMILY_OF_ASSIGNMENT.items()} | {"bend": "J"}
+_ASSIGNMENT = {family: letter for letter, family in FAMILY_OF_ASSIGNMENT.items()} | {
+    "bend": "J", MEMBER: "U"}
 
 
 def write_csv(path: Path, header, rows):
@@ -64,7 +65,7 @@ def oriented_triangles(elements) -> list:
 
 
 def path_fold_edges(pattern_model):
-    """Edges of the model's triangles with their FOLD assignments.
+    """Edges of the model's triangles (and its member bars) with their FOLD assignments.
 
     Fold hinges keep their family's letter (M, V, F, U), a cut keeps "C", bend hinges
     (edges inside panels, and joins) are "J" (FOLD 1.2: a join within one face, which
@@ -83,8 +84,11 @@ def path_fold_edges(pattern_model):
         letters.setdefault(key, {"cut": "C", "boundary": "B", "bend": "J"}.get(family, "U"))
     for hinge, family in zip(pattern_model.model.hinges.tolist(), pattern_model.hinge_family):
         letters[(min(hinge[:2]), max(hinge[:2]))] = _ASSIGNMENT[family]
-    edges = sorted({(min(t[i], t[(i + 1) % 3]), max(t[i], t[(i + 1) % 3]))
-                    for t in elements.triangles.tolist() for i in range(3)})
+    edges = {(min(t[i], t[(i + 1) % 3]), max(t[i], t[(i + 1) % 3]))
+             for t in elements.triangles.tolist() for i in range(3)}
+    # Member bars (a linkage's, a brace) are edges of no face.
+    edges = sorted(edges | {(min(a, b), max(a, b)) for (a, b), family in zip(
+        pattern_model.model.bars.tolist(), pattern_model.bar_family) if family == MEMBER})
     return np.array(edges, dtype=np.int64).reshape(-1, 2), [letters.get(e, "U") for e in edges]
 
 

@@ -203,7 +203,8 @@ def load_problem(problem, *, overrides=None, source=None):
         data = _with_overrides(data, overrides, source)
     root = ProblemTable(data, "", source, text)
     root.where = lambda key: f"{source}: key {key!r}" if key else source
-    context = ReadContext(source, text, base, _peek_method(data))
+    context = ReadContext(source, text, base, _peek_method(data),
+                          data if isinstance(data, dict) else ())
     tables = {}
     for key in problem_keys():
         fields, tables[key.name] = _read_key(root, key, context)

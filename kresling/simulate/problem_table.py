@@ -22,7 +22,8 @@ from kresling._validation import show
 
 __all__ = ["ProblemTable", "QUANTITY_RANGE", "AXES", "raw", "number", "positive", "quantity",
            "quantities", "stiffnesses", "integer", "count", "boolean", "string", "vector3",
-           "array_of_tables", "limits", "panels", "node_list", "line_of", "in_range"]
+           "array_of_tables", "limits", "panels", "node_list", "node_rows", "line_of",
+           "in_range"]
 
 #: A support's or a monitor's axis letter and its DOF offset within a node.
 AXES = {"x": 0, "y": 1, "z": 2}
@@ -238,3 +239,25 @@ def node_list(t, num_nodes):
             t.fail(key, f"= {node} is out of range: nodes are numbered 0 to {num_nodes - 1} "
                         "(pattern vertices, then N5B8 centre nodes)")
     return tuple(nodes)
+
+
+def node_rows(t, key, width, num_nodes, what):
+    """``key = [i, j, ...]`` (one element of ``width`` nodes) or an array of them (several
+    elements alike), shape (E, width), each node in range and no node twice in one row;
+    ``what`` names the element in messages ("a bar: [i, j]")."""
+    value = t.get(key, raw, required=True, allowed=f"{what}, or an array of them")
+    rows = value if isinstance(value, list) and value and isinstance(value[0], list) \
+        else [value]
+    out = []
+    for row in rows:
+        if not isinstance(row, list) or len(row) != width:
+            t.fail(key, f"has {show(row)}: each is {what}")
+        nodes = [integer(t, key, v) for v in row]
+        for node in nodes:
+            if not 0 <= node < num_nodes:
+                t.fail(key, f"has node {node}: out of range, nodes are numbered 0 to "
+                            f"{num_nodes - 1} (pattern vertices, then N5B8 centre nodes)")
+        if len(set(nodes)) != width:
+            t.fail(key, f"has {nodes}: an element names {width} different nodes")
+        out.append(nodes)
+    return np.array(out, dtype=np.int64).reshape(-1, width)

@@ -10,7 +10,7 @@ import numpy as np
 from kresling.model import PatternModel
 from kresling.model.fold_angles import fold_angles_deg
 from kresling.simulate.element_histories import ElementHistories, element_histories
-from kresling.simulate.fold_plan import FoldPlan
+from kresling.simulate.fold_plan import FOLD_TOLERANCE_DEG, FoldPlan
 from kresling.simulate.problem_keys import problem_keys
 from kresling.solvers import PathResult, fold_model_at
 
@@ -18,7 +18,6 @@ __all__ = ["Simulation", "PathState", "FOLD_TOLERANCE_DEG", "largest_bar_strain"
 
 #: A fold reaches its end when every driven crease is within this many degrees of its
 #: target fold angle there (``short_of_target`` counts the others).
-FOLD_TOLERANCE_DEG = 1.0
 
 
 @dataclass(frozen=True)
@@ -89,7 +88,8 @@ class Simulation:
     @property
     def completed(self) -> bool:
         """Whether the run reached its end: the path ran to it and, for a fold, every
-        driven crease is within :data:`FOLD_TOLERANCE_DEG` of its target there."""
+        driven crease is within the analysis's ``target_tolerance_deg`` (default
+        :data:`FOLD_TOLERANCE_DEG`) of its target there."""
         return self.path.completed and not self.interrupted and not self._fold_shortfall()
 
     @property
@@ -109,7 +109,7 @@ class Simulation:
             return ""
         worst = report["worst"]
         return (f"the fold ran to its end but {short} of {report['creases_driven']} driven "
-                f"creases are more than {FOLD_TOLERANCE_DEG:g} deg from their targets (held "
+                f"creases are more than {report['tolerance_deg']:g} deg from their targets (held "
                 f"back by the structure or by their laws' limits); the farthest, hinge "
                 f"{worst['hinge']}, reached {worst['fold_angle_deg']:.4g} deg of "
                 f"{worst['target_deg']:.4g} deg")
@@ -153,13 +153,15 @@ class Simulation:
 
     def fold_report(self) -> dict:
         """``method = "fold"``: how far the driven creases got. ``short_of_target`` counts
-        the creases more than 1 deg from their target fold angle at the end (held at their
+        the creases more than ``tolerance_deg`` (the analysis's ``target_tolerance_deg``,
+        1 deg unless set) from their target fold angle at the end (held at their
         law's limit, by the structure, or by a path that stopped), ``worst`` names the
         farthest; ``left_branch`` counts those folded the other way from their target;
         ``snaps`` the fold fractions (the steps' load factors) where the fold snapped."""
         plan = self.fold
         if plan is None or not self.path.num_steps or not plan.hinges.size:
             return {}
+        tolerance = getattr(self.problem.analysis, "target_tolerance_deg", FOLD_TOLERANCE_DEG)
         final = fold_angles_deg(self.pattern_model, self.path.displacement[-1], plan.signs)
         reached = final[plan.hinges]
         miss = np.abs(reached - plan.target_deg)
@@ -167,8 +169,8 @@ class Simulation:
         other_way = ((np.sign(reached) * np.sign(plan.target_deg) < 0)
                      & (np.abs(reached) > FOLD_TOLERANCE_DEG))
         return {"creases_driven": int(plan.hinges.size),
-                "short_of_target": int(np.count_nonzero(miss > FOLD_TOLERANCE_DEG)),
-                "tolerance_deg": FOLD_TOLERANCE_DEG,
+                "short_of_target": int(np.count_nonzero(miss > tolerance)),
+                "tolerance_deg": tolerance,
                 "largest_shortfall_deg": float(miss[worst]),
                 "worst": {"hinge": int(plan.hinges[worst]),
                           "target_deg": float(plan.target_deg[worst]),

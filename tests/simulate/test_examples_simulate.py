@@ -69,7 +69,8 @@ def test_committed_patterns_are_what_make_patterns_writes(tmp_path):
 
 def test_every_example_has_its_files_and_a_readme_line():
     readme = (EXAMPLES / "README.md").read_text()
-    for folder in ("miura_bending", "single_vertex", "kresling_tower"):
+    for folder in ("miura_bending", "single_vertex", "kresling_tower", "bennett_linkage",
+                   "micro_mirror"):
         problem = EXAMPLES / folder / "problem.toml"
         assert problem.read_text().startswith("#"), f"{problem}: expected behaviour on top"
         assert f"{folder}/" in readme

@@ -7,10 +7,10 @@ import dataclasses
 
 import numpy as np
 
-from kresling.simulate.fold_plan import fold_plan
+from kresling.simulate.fold_plan import FOLD_TOLERANCE_DEG, fold_plan
 from kresling.simulate.methods.method import PathMethod
 from kresling.simulate.methods.path_settings import ADAPTIVE_TOLERANCE, PREDICTORS, read_increments
-from kresling.simulate.problem_table import boolean, number
+from kresling.simulate.problem_table import boolean, number, positive
 from kresling.solvers import solve_fold
 
 __all__ = ["METHOD", "FOLD_STEPS", "FOLD_PREDICTOR", "FOLD_GIVE_UP_AFTER",
@@ -44,6 +44,8 @@ class Fold(PathMethod):
             t.fail("fold_percent", f"= {percent!r} is invalid: must be in (0, 100] (the "
                                    "percentage of every target fold angle folded to)")
         settings["fold_percent"] = percent
+        settings["target_tolerance_deg"] = t.get("target_tolerance_deg", positive,
+                                                 FOLD_TOLERANCE_DEG)
         # Each increment starts from its quadratic extrapolation: along a smooth fold it
         # halves the Newton iterations (the box-pleat pyramid: 5 instead of 10).
         settings.update(read_increments(t, FOLD_PREDICTOR))

@@ -86,12 +86,14 @@ class ProblemKey:
 class ReadContext:
     """What a key's reader may use: ``source`` (the file, or "problem"), ``text`` (its TOML,
     for line numbers), ``base`` (the directory its files are relative to), ``method`` (the
-    ``[analysis] method`` it names, None if none) and, as attributes, every Problem field
-    the keys of lower rank have read (``context.pattern``, ``context.num_nodes``, ...)."""
+    ``[analysis] method`` it names, None if none), ``given`` (the top-level keys the file
+    gives) and, as attributes, every Problem field the keys of lower rank have read
+    (``context.pattern``, ``context.num_nodes``, ...)."""
 
-    def __init__(self, source, text, base, method_name):
+    def __init__(self, source, text, base, method_name, given=frozenset()):
         self.source, self.text, self.base = source, text, base
         self.method_name = method_name
+        self.given = frozenset(given)
         self.fields = {}
 
     @property

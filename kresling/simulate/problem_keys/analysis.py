@@ -10,6 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling import _core
+from kresling.simulate.fold_plan import FOLD_TOLERANCE_DEG
 from kresling.simulate.methods import method_names, method_named
 from kresling.simulate.problem_keys import ProblemKey
 from kresling.simulate.problem_table import AXES, count, node_list, positive, quantity, string
@@ -72,6 +73,9 @@ class Analysis:
     relax: bool | None = None
     #: ``method = "fold"``: every target fold angle is scaled by fold_percent / 100.
     fold_percent: float = 100.0
+    #: ``method = "fold"``: a driven crease farther than this from its target at the end
+    #: [deg] makes the fold fall short (not completed).
+    target_tolerance_deg: float = FOLD_TOLERANCE_DEG
     #: ``method = "modes"``: how many of the lowest modes, about which state: "rest" or a
     #: :class:`~kresling.simulate.methods.modes.LoadedState`.
     modes: int = 10

@@ -6,7 +6,7 @@ from __future__ import annotations
 from kresling.model import ManualProperties, SheetMaterial
 from kresling.model.material_presets import MATERIAL_PRESETS
 from kresling.simulate.problem_keys import ProblemKey
-from kresling.simulate.problem_keys.mass import read_sheet_mass
+from kresling.simulate.problem_keys.mass import SheetMass, read_sheet_mass
 from kresling.simulate.problem_table import (boolean, number, quantities, quantity, stiffnesses,
                                              string)
 
@@ -64,6 +64,13 @@ def _default(context):
     return {"preset": preset} if preset else None
 
 
+def _required(context) -> bool:
+    """A structure of ``[[bar]]`` members alone has no panels to calibrate (the pattern
+    key refuses panels without a material)."""
+    return _default(context) is None and "bar" not in context.given
+
+
 KEY = ProblemKey("material", rank=10, read=read_material, default=_default,
-                 required=lambda context: _default(context) is None,
-                 allowed="a table with the calibration (or a preset)")
+                 required=_required, allowed="a table with the calibration (or a preset)",
+                 absent={"material": None, "merlin2_compat": False, "preset": None,
+                         "sheet_mass": SheetMass()})

@@ -57,16 +57,22 @@ def read_pattern_key(t, context) -> dict:
     elif t.has("vertices"):
         if t.has("frame"):
             t.fail("frame", "applies only to a pattern file (FOLD frames)")
-        pattern = _inline_pattern(t, tolerance, unit, scale)
+        pattern = _inline_pattern(t, tolerance, unit, scale, "bar" in context.given)
     else:
         t.fail(None, "needs 'file' (a .fold, .obj or .svg file) or 'vertices' and 'panels'")
     convention = t.get("assignments", string, convention, choices=CONVENTIONS)
+    if pattern.faces and context.material is None and context.preset is None:
+        t.fail("panels" if t.has("panels") else "file",
+               "gives panels, which need a [material] (only a structure of [[bar]] and "
+               "[[hinge]] members alone, panels = [], goes without one)")
     t.finish()
     pattern = separate_cuts(pattern)
     fields = {"pattern": pattern, "split": split, "centre": centre, "assignments": convention,
               "num_nodes": node_count(pattern, split, centre),
               "renumbered": merges.message}
-    if context.preset is not None:
+    if not pattern.faces:   # members alone: no sheet for a material or a preset
+        fields.update(material=None, preset=None)
+    elif context.preset is not None:
         fields["material"] = preset_material(context.preset, pattern.vertices)
     return fields
 
@@ -107,14 +113,20 @@ def check_numbering(problem):
                          "the file, so that its vertex numbers are the problem's")
 
 
-def _inline_pattern(t, tolerance, unit, scale):
+def _inline_pattern(t, tolerance, unit, scale, members):
     vertices = t.get("vertices", raw)
-    faces = t.get("panels", panels, required=True,
-                  allowed="a list of panels (lists of vertex indices)")
+    given = t.get("panels", raw, required=True,
+                  allowed="a list of panels (lists of vertex indices), or [] for a structure "
+                          "of [[bar]] and [[hinge]] members alone")
+    if given == [] and not members:
+        t.fail("panels", "= [] is invalid: must be a non-empty array of panels (each an array "
+                         "of vertex indices), or [] for a structure of [[bar]] members alone")
+    faces = [] if given == [] else panels(t, "panels", given)
     factor = mm_per_unit(unit or "mm", scale)
     try:
         pattern = pattern_from_arrays(np.asarray(vertices, dtype=float) * factor, faces,
-                                      planarity_tolerance=tolerance)
+                                      planarity_tolerance=tolerance,
+                                      panels_required=False)
         check_duplicate_vertices(pattern.vertices, pattern.faces, pattern.edges,
                                  pattern.edges_assignment, ValueError)
     except (TypeError, ValueError, OverflowError) as error:
