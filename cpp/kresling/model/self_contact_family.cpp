@@ -282,8 +282,9 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
   contact::CcdOptions options;
   options.min_distance = thickness_;  // the mid-surfaces stay t apart
   const double eta = options.conservative_rescaling;
-  // ACCD (contact_ccd.cpp) finds no impact for a pair whose first advance, eta d / l_p from
-  // its gap d - t at x0, already covers the step: it returns t_max without a second distance.
+  // ACCD (contact_ccd.cpp) finds no impact for a pair whose first advance, eta (d - t) / l_p
+  // from its distance d at x0 (t the thickness, ACCD's minimum separation), already covers
+  // the step: it returns t_max without a second distance.
   // Its rate l_p is the largest move on each side after the pair's mean move is taken off;
   // a node's move less the mean of four is at most (3/4 + 3/4) max |dx|, so l_p <= 3 max
   // |dx|. Pairs farther than t plus twice 3 max |dx| / eta at x0 (the factor 2 absorbs the
