@@ -13,6 +13,7 @@
 #include <random>
 
 #include <Eigen/Geometry>
+#include <gtest/gtest.h>
 
 #include "kresling/core/types.hpp"
 #include "finite_differences.hpp"
@@ -78,6 +79,23 @@ contact::ScalarDerivatives<N> finite_differences(F&& f, const Eigen::Matrix<doub
 template <typename A, typename B>
 double relative_error(const A& exact, const B& fd) {
   return (exact - fd).norm() / std::max(exact.norm(), 1e-300);
+}
+
+// Expect the derivatives f(x) gives (a ScalarDerivatives<N>) to match its central
+// differences within kRelTol on the norms of the gradient and the Hessian.
+template <int N, typename F>
+void expect_derivatives_match(F&& f, const Eigen::Matrix<double, N, 1>& x, int trial) {
+  const auto exact = f(x);
+  const auto fd = finite_differences<N>(f, x, kStep);
+  EXPECT_LE(relative_error(exact.gradient, fd.gradient), kRelTol) << "trial " << trial;
+  EXPECT_LE(relative_error(exact.hessian, fd.hessian), kRelTol) << "trial " << trial;
+}
+
+// An edge-edge mollifier threshold for the edges (v[0], v[1]) and (v[2], v[3]) that
+// mollifies them on even trials and not on odd ones: twice or half their |ea x eb|^2.
+inline double alternating_mollifier_threshold(const std::array<Vector3, 4>& v, int trial) {
+  const double cross2 = contact::cross_squared_norm(v[1] - v[0], v[3] - v[2]).value;
+  return cross2 * (trial % 2 == 0 ? 2.0 : 0.5);
 }
 
 }  // namespace kresling::contact_test

@@ -11,12 +11,14 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <string>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
 #include "kresling/assembly/assembler.hpp"
 #include "kresling/contact/contact_closest_points.hpp"
+#include "kresling/core/check.hpp"
 #include "kresling/model/self_contact_family.hpp"
 #include "kresling/solvers/tangent_solver.hpp"
 #include "two_triangles_model.hpp"
@@ -33,6 +35,19 @@ double energy(const model::Model& m, const VectorX& u) {
   VectorX force;
   assembly::Workspace w(m, assembly::all_dofs(m.num_dofs()));
   return assembly::assemble(m, w, u, force, false).total();
+}
+
+// The force the energy's central differences imply at u (h = 1e-6 of the 5 mm geometry).
+VectorX energy_gradient(const model::Model& m, const VectorX& u) {
+  const double h = 1e-6 * 5.0;
+  VectorX fd(u.size());
+  for (Index i = 0; i < u.size(); ++i) {
+    VectorX up = u, down = u;
+    up[i] += h;
+    down[i] -= h;
+    fd[i] = (energy(m, up) - energy(m, down)) / (2 * h);
+  }
+  return fd;
 }
 
 }  // namespace
@@ -78,15 +93,7 @@ TEST(SelfContact, ForceIsTheEnergysGradientAndTheProjectedTangentIsPositiveSemiD
     ASSERT_GT(e, 0.0) << "drop " << drop;
     assembly::assemble(m, w, u, force_only, false);
     EXPECT_EQ(force, force_only);  // the family finds the same pairs itself
-    const double h = 1e-6 * 5.0;
-    VectorX fd(18);
-    for (int i = 0; i < 18; ++i) {
-      VectorX up = u, down = u;
-      up[i] += h;
-      down[i] -= h;
-      fd[i] = (energy(m, up) - energy(m, down)) / (2 * h);
-    }
-    EXPECT_LT((fd - force).norm(), 1e-6 * force.norm()) << "drop " << drop;
+    EXPECT_LT((energy_gradient(m, u) - force).norm(), 1e-6 * force.norm()) << "drop " << drop;
     const Eigen::MatrixXd K = Eigen::MatrixXd(w.matrix());
     const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues();
     EXPECT_GT(eigenvalues.minCoeff(), -1e-9 * eigenvalues.cwiseAbs().maxCoeff());
@@ -154,4 +161,65 @@ TEST(SelfContact, ClosestPointsAreAtTheKernelsDistance) {
     EXPECT_NEAR((x - y).squaredNorm(), contact::edge_edge_distance(p, a, b, e, false).value,
                 1e-12);
   }
+}
+
+// Panels of a thickness t: the barrier acts on the gap d - t between their faces.
+constexpr double kThickness = 0.6;  // [mm]; the triangles start 2 mm apart
+
+TEST(SelfContactThickness, ForceIsTheEnergysGradientWhereTheFacesAreWithinDHat) {
+  // Lowered by 1.1 to 1.3 mm the triangles' mid-surfaces are ~0.7 to 0.9 mm apart: their
+  // faces (0.1 to 0.3 mm apart) within d_hat, where without thickness no pair would act.
+  const model::Model thick = two_triangles(model::SelfContactFamily::TangentForm::Exact,
+                                           kThickness);
+  const model::Model thin = two_triangles(model::SelfContactFamily::TangentForm::Exact);
+  for (double drop : {1.1, 1.2, 1.3}) {
+    const VectorX u = lowered(drop, static_cast<unsigned>(10 * drop));
+    ASSERT_EQ(energy(thin, u), 0.0) << "drop " << drop;
+    assembly::Workspace w(thick, assembly::all_dofs(18));
+    VectorX force;
+    ASSERT_GT(assembly::assemble(thick, w, u, force, true).total(), 0.0) << "drop " << drop;
+    EXPECT_LT((energy_gradient(thick, u) - force).norm(), 1e-6 * force.norm())
+        << "drop " << drop;
+  }
+}
+
+TEST(SelfContactThickness, StepLimitKeepsTheMidSurfacesTheThicknessApart) {
+  const model::Model m = two_triangles(model::SelfContactFamily::TangentForm::Adaptive,
+                                       kThickness);
+  const auto& family = *m.find<model::SelfContactFamily>();
+  // The gap is the mid-surfaces' distance (2 mm at rest, the point (1, 1, 2) over the lower
+  // face) less the thickness.
+  EXPECT_NEAR(family.min_gap(m.nodes()), 2.0 - kThickness, 1e-12);
+  const VectorX u = lowered(1.0);
+  const VectorX through = lowered(4.0) - u;
+  const double t = family.step_limit(m.nodes(), u, through);
+  ASSERT_GT(t, 0.0);
+  ASSERT_LT(t, 1.0);
+  // Independent of the family: the upper triangle's lowest node over the lower face.
+  const NodeMatrix x = m.deformed(u + t * through);
+  EXPECT_GT(x.block(3, 2, 3, 1).minCoeff(), kThickness);
+  EXPECT_GT(family.min_gap(x), 0.0);
+  // Without thickness the same step goes further.
+  const model::Model thin = two_triangles();
+  EXPECT_GT(thin.find<model::SelfContactFamily>()->step_limit(thin.nodes(), u, through), t);
+}
+
+TEST(SelfContactThickness, RestStateCloserThanTheThicknessIsRefused) {
+  // 2 mm apart at rest: a thickness of 2 mm or more would overlap, one of 1.6 mm leaves
+  // the barrier (d_hat 0.5) acting at rest; both refused naming the thickness.
+  for (double thickness : {2.5, 2.0, 1.6}) {
+    try {
+      two_triangles(model::SelfContactFamily::TangentForm::Adaptive, thickness);
+      ADD_FAILURE() << "thickness " << thickness << " accepted";
+    } catch (const std::invalid_argument& error) {
+      EXPECT_NE(std::string(error.what()).find("thickness = " + format_number(thickness)),
+                std::string::npos)
+          << error.what();
+    }
+  }
+  EXPECT_NO_THROW(two_triangles(model::SelfContactFamily::TangentForm::Adaptive, 1.4));
+  EXPECT_THROW(two_triangles(model::SelfContactFamily::TangentForm::Adaptive, -0.1),
+               std::invalid_argument);
+  EXPECT_THROW(two_triangles(model::SelfContactFamily::TangentForm::Adaptive, std::nan("")),
+               std::invalid_argument);
 }

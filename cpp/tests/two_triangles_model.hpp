@@ -15,13 +15,16 @@ namespace kresling::contact_test {
 constexpr double kTwoTrianglesDHat = 0.5;  // [mm]
 
 // Skewed so that point-triangle and edge-edge pairs both enter as the upper one comes down.
+// `thickness` [mm]: the panels' (0: none).
 inline model::Model two_triangles(
-    model::SelfContactFamily::TangentForm form = model::SelfContactFamily::TangentForm::Adaptive) {
+    model::SelfContactFamily::TangentForm form = model::SelfContactFamily::TangentForm::Adaptive,
+    double thickness = 0.0) {
   NodeMatrix X(6, 3);
   X << 0, 0, 0, 4, 0, 0, 0, 4, 0,  //
       1, 1, 2, 5, 1.5, 2, 0.5, 5, 2;
   auto family = std::make_shared<model::SelfContactFamily>(
-      std::vector<Index>{0, 1, 2, 3, 4, 5}, kTwoTrianglesDHat, 10.0, form);
+      std::vector<Index>{0, 1, 2, 3, 4, 5}, kTwoTrianglesDHat, 10.0, form,
+      contact::JoinedNodes{}, thickness);
   return model::Model(X, std::vector<std::uint8_t>(18, 0), {family});
 }
 

@@ -9,6 +9,7 @@
 
 #include "kresling/core/check.hpp"
 #include "kresling/contact/contact_mollifier.hpp"
+#include "kresling/contact/contact_offset.hpp"
 
 namespace kresling::contact {
 
@@ -58,18 +59,21 @@ ScalarDerivatives<N> barrier_energy(const ScalarDerivatives<N>& distance, double
 ScalarDerivatives<12> point_triangle_barrier(const Vector3& p, const Vector3& t0,
                                              const Vector3& t1, const Vector3& t2,
                                              double d_hat, double stiffness,
-                                             BarrierHessian hessian) {
+                                             BarrierHessian hessian, double offset) {
   const bool with_hessian = hessian != BarrierHessian::None;
-  return barrier_energy<12>(point_triangle_distance(p, t0, t1, t2, with_hessian), d_hat,
-                            stiffness, hessian);
+  return barrier_energy<12>(
+      offset_squared_distance<12>(point_triangle_distance(p, t0, t1, t2, with_hessian), offset,
+                                  with_hessian),
+      d_hat, stiffness, hessian);
 }
 
 ScalarDerivatives<12> edge_edge_barrier(const Vector3& ea0, const Vector3& ea1,
                                         const Vector3& eb0, const Vector3& eb1, double eps_x,
                                         double d_hat, double stiffness,
-                                        BarrierHessian hessian) {
+                                        BarrierHessian hessian, double offset) {
   const bool with_hessian = hessian != BarrierHessian::None;
-  const auto distance = edge_edge_distance(ea0, ea1, eb0, eb1, with_hessian);
+  const auto distance = offset_squared_distance<12>(
+      edge_edge_distance(ea0, ea1, eb0, eb1, with_hessian), offset, with_hessian);
   if (distance.value >= d_hat * d_hat) return {};
   // The unmollified energy B = kappa b(s) with its exact Hessian, then the product m B (the
   // projection, if asked for, is of the product's Hessian).
@@ -88,9 +92,10 @@ ScalarDerivatives<12> edge_edge_barrier(const Vector3& ea0, const Vector3& ea1,
 
 ScalarDerivatives<3> point_plane_barrier(const Vector3& p, const Vector3& origin,
                                          const Vector3& normal, double d_hat, double stiffness,
-                                         BarrierHessian hessian) {
-  return barrier_energy<3>(point_rigid_plane_distance(p, origin, normal), d_hat, stiffness,
-                           hessian);
+                                         BarrierHessian hessian, double offset) {
+  return barrier_energy<3>(
+      offset_squared_distance<3>(point_rigid_plane_distance(p, origin, normal), offset),
+      d_hat, stiffness, hessian);
 }
 
 void check_barrier_parameters(double d_hat, double stiffness) {

@@ -22,6 +22,13 @@
 /// Pairs: point-triangle (p, t0, t1, t2) and edge-edge (ea0, ea1, eb0, eb1) with 12
 /// coordinates, point-rigid plane with 3. The edge-edge energy is mollified,
 /// m(x) kappa b(s) (contact_mollifier.hpp).
+///
+/// Thickness: with an offset t > 0 (the panels' thickness for two panels, half of it for a
+/// panel and a plane) the barrier acts on the gap between the offset surfaces, s = (d - t)^2
+/// (contact_offset.hpp): it acts while d < t + d_hat and grows without bound as d -> t. The
+/// mollifier multiplies the offset barrier as it does the plain one: it depends on the
+/// edges' directions alone, so the product stays continuously differentiable where two
+/// edges turn parallel at any distance.
 
 #include "kresling/core/types.hpp"
 #include "kresling/contact/contact_distance.hpp"
@@ -54,24 +61,29 @@ template <int N>
 ScalarDerivatives<N> barrier_energy(const ScalarDerivatives<N>& distance, double d_hat,
                                     double stiffness, BarrierHessian hessian);
 
-/// Contact energy of a point and a triangle at distance d_hat > 0 and stiffness kappa.
+/// Contact energy of a point and a triangle at distance d_hat > 0 and stiffness kappa, the
+/// barrier on the gap beyond `offset` >= 0 (0: the distance itself).
 ScalarDerivatives<12> point_triangle_barrier(const Vector3& p, const Vector3& t0,
                                              const Vector3& t1, const Vector3& t2,
                                              double d_hat, double stiffness,
-                                             BarrierHessian hessian = BarrierHessian::Exact);
+                                             BarrierHessian hessian = BarrierHessian::Exact,
+                                             double offset = 0.0);
 
 /// Contact energy of two edges, mollified with threshold eps_x > 0
 /// (edge_edge_mollifier_threshold of the edges at rest).
 ScalarDerivatives<12> edge_edge_barrier(const Vector3& ea0, const Vector3& ea1,
                                         const Vector3& eb0, const Vector3& eb1, double eps_x,
                                         double d_hat, double stiffness,
-                                        BarrierHessian hessian = BarrierHessian::Exact);
+                                        BarrierHessian hessian = BarrierHessian::Exact,
+                                        double offset = 0.0);
 
 /// Contact energy of a point and a rigid plane (origin, normal of any non-zero length), in
-/// the point's 3 coordinates. Unsigned: a point is kept on the side where it starts.
+/// the point's 3 coordinates. Unsigned: a point is kept on the side where it starts, at
+/// least `offset` >= 0 from the plane.
 ScalarDerivatives<3> point_plane_barrier(const Vector3& p, const Vector3& origin,
                                          const Vector3& normal, double d_hat, double stiffness,
-                                         BarrierHessian hessian = BarrierHessian::Exact);
+                                         BarrierHessian hessian = BarrierHessian::Exact,
+                                         double offset = 0.0);
 
 /// The symmetric matrix nearest to `matrix` (in the Frobenius norm) that is positive
 /// semi-definite: its eigen-decomposition with negative eigenvalues set to zero.

@@ -106,21 +106,24 @@ void for_each_kept_within(const contact::KeptView& view, double distance,
 
 SelfContactFamily::SelfContactFamily(std::vector<Index> triangles, double d_hat,
                                      double stiffness, TangentForm tangent,
-                                     contact::JoinedNodes joined)
+                                     contact::JoinedNodes joined, double thickness)
     : triangles_(Eigen::Map<const contact::TriangleMatrix>(
           triangles.data(), static_cast<Index>(triangles.size() / 3), 3)),
       edges_(contact::triangle_edges(triangles_)),
       d_hat_(d_hat),
       stiffness_(stiffness),
+      thickness_(thickness),
+      reach_(thickness + d_hat),
       tangent_(tangent),
       joined_(std::move(joined)),
       // A skin of d_hat: the list holds while no node moves d_hat / 2 (Newton's iterates
-      // near contact move far less), at the cost of the pairs within 2 d_hat.
-      cache_(std::make_unique<contact::ContactCandidateCache>(d_hat, d_hat, joined_)) {}
+      // near contact move far less), at the cost of the pairs within t + 2 d_hat.
+      cache_(std::make_unique<contact::ContactCandidateCache>(reach_, d_hat, joined_)) {}
 
 void SelfContactFamily::check(const NodeMatrix& X, double) const {
   require_positive("self_contact: distance", d_hat_);
   require_positive("self_contact: stiffness", stiffness_);
+  require_positive("self_contact: thickness", thickness_, true);
   try {
     contact::check_contact_mesh(X, triangles_, edges_, d_hat_);
   } catch (const std::invalid_argument& error) {
@@ -140,28 +143,46 @@ void SelfContactFamily::check(const NodeMatrix& X, double) const {
   }
   NearestPair nearest;
   const double gap = nearest_pair(X, &nearest);
-  if (!(gap < d_hat_)) return;
-  // A pair within d_hat at rest: the barrier would push the model before anything moves.
+  if (!(gap < reach_)) return;
+  // A pair within t + d_hat at rest: the barrier would push the model before anything
+  // moves (or, within t, the panels would overlap from the start).
   std::string nodes;
   for (int k = 0; k < 4; ++k) nodes += (k ? ", " : "") + std::to_string(nearest.nodes[k]);
+  const std::string pair = std::string(nearest.edge_edge ? "edge and edge" : "node and triangle") +
+                           ", nodes " + nodes;
+  if (thickness_ > 0) throw_thick_at_rest(gap, pair);
   throw std::invalid_argument(
       "self_contact: distance = " + format_number(d_hat_) + " mm is invalid: two panels are " +
       format_number(gap) + " mm apart at rest (" +
-      (nearest.edge_edge ? "edge and edge" : "node and triangle") + ", nodes " + nodes +
-      "), and the barrier would act before anything moves; must be below " +
+      pair + "), and the barrier would act before anything moves; must be below " +
       format_number(gap) + " mm");
+}
+
+void SelfContactFamily::throw_thick_at_rest(double gap, const std::string& pair) const {
+  const std::string apart = format_number(gap) + " mm apart at rest (" + pair + ")";
+  if (!(gap > thickness_)) {
+    throw std::invalid_argument(
+        "self_contact: thickness = " + format_number(thickness_) + " mm is invalid: the " +
+        "mid-surfaces of two panels are " + apart + ", so panels this thick would overlap " +
+        "before anything moves; must be below " + format_number(gap) + " mm");
+  }
+  throw std::invalid_argument(
+      "self_contact: thickness = " + format_number(thickness_) + " mm with distance = " +
+      format_number(d_hat_) + " mm is invalid: the mid-surfaces of two panels are " + apart +
+      ", and the barrier, acting below thickness + distance, would act before anything " +
+      "moves; thickness + distance must be below " + format_number(gap) + " mm");
 }
 
 void SelfContactFamily::find_active(const NodeMatrix& x, ActiveElements& out) const {
   out = ActiveElements{};
   out.width = 4;
-  const double s_hat = d_hat_ * d_hat_;
-  // Only pairs that may be within d_hat: the others would fail the tests below.
+  const double s_reach = reach_ * reach_;
+  // Only pairs that may be within t + d_hat: the others would fail the tests below.
   const contact::KeptView view = cache_->candidates(x, triangles_, edges_);
-  for_each_kept_within(view, d_hat_, triangles_, edges_,
+  for_each_kept_within(view, reach_, triangles_, edges_,
                        [&](const std::array<Index, 4>& n, bool edge_edge) {
-    if (box_gap(x, n, edge_edge) >= d_hat_) return;  // the list holds pairs to 2 d_hat
-    if (squared_distance(x, n, edge_edge) >= s_hat) return;  // beyond d_hat: no energy
+    if (box_gap(x, n, edge_edge) >= reach_) return;  // the list holds pairs to t + 2 d_hat
+    if (squared_distance(x, n, edge_edge) >= s_reach) return;  // beyond: no energy
     out.nodes.insert(out.nodes.end(), n.begin(), n.end());
     out.kinds.push_back(edge_edge ? EdgeEdge : PointTriangle);
   });
@@ -178,12 +199,13 @@ contact::ScalarDerivatives<12> SelfContactFamily::pair_energy(
   const Index* n = active.nodes.data() + 4 * e;
   const Vector3 a = row(x, n[0]), b = row(x, n[1]), c = row(x, n[2]), d = row(x, n[3]);
   if (active.kinds[e] == PointTriangle) {
-    return contact::point_triangle_barrier(a, b, c, d, d_hat_, stiffness_, hessian);
+    return contact::point_triangle_barrier(a, b, c, d, d_hat_, stiffness_, hessian, thickness_);
   }
   // The mollifier's threshold from the edges as built, as IPC takes it.
   const double eps_x = contact::edge_edge_mollifier_threshold(row(X, n[0]), row(X, n[1]),
                                                                row(X, n[2]), row(X, n[3]));
-  return contact::edge_edge_barrier(a, b, c, d, eps_x, d_hat_, stiffness_, hessian);
+  return contact::edge_edge_barrier(a, b, c, d, eps_x, d_hat_, stiffness_, hessian,
+                                    thickness_);
 }
 
 double SelfContactFamily::assemble(const NodeMatrix& X, const VectorX& u,
@@ -198,11 +220,11 @@ double SelfContactFamily::assemble(const NodeMatrix& X, const VectorX& u,
                        : exact        ? contact::BarrierHessian::Exact
                                       : contact::BarrierHessian::Projected;
   double energy = 0.0;
-  const double s_hat = d_hat_ * d_hat_;
+  const double s_reach = reach_ * reach_;
   for (std::size_t e = 0; e < active.size(); ++e) {
     // The workspace's pattern may keep pairs that have parted: no energy, no entries.
     const Index* n = active.nodes.data() + 4 * e;
-    if (squared_distance(x, {n[0], n[1], n[2], n[3]}, active.kinds[e] == EdgeEdge) >= s_hat) {
+    if (squared_distance(x, {n[0], n[1], n[2], n[3]}, active.kinds[e] == EdgeEdge) >= s_reach) {
       continue;
     }
     const auto b = pair_energy(X, x, active, e, hessian);
@@ -214,7 +236,9 @@ double SelfContactFamily::assemble(const NodeMatrix& X, const VectorX& u,
   return energy;
 }
 
-double SelfContactFamily::min_gap(const NodeMatrix& x) const { return nearest_pair(x, nullptr); }
+double SelfContactFamily::min_gap(const NodeMatrix& x) const {
+  return nearest_pair(x, nullptr) - thickness_;
+}
 
 double SelfContactFamily::nearest_pair(const NodeMatrix& x, NearestPair* pair) const {
   // Candidates within r hold every pair closer than r: grow r until the nearest candidate
@@ -256,15 +280,17 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
   const NodeMatrix x0 = deformed(X, u);
   const NodeMatrix dx = Eigen::Map<const NodeMatrix>(du.data(), X.rows(), 3);
   contact::CcdOptions options;
+  options.min_distance = thickness_;  // the mid-surfaces stay t apart
   const double eta = options.conservative_rescaling;
-  // ACCD (contact_ccd.cpp) finds no impact for a pair whose first advance, eta d / l_p from
-  // its gap d at x0, already covers the step: it returns t_max without a second distance.
+  // ACCD (contact_ccd.cpp) finds no impact for a pair whose first advance, eta (d - t) / l_p
+  // from its distance d at x0 (t the thickness, ACCD's minimum separation), already covers
+  // the step: it returns t_max without a second distance.
   // Its rate l_p is the largest move on each side after the pair's mean move is taken off;
   // a node's move less the mean of four is at most (3/4 + 3/4) max |dx|, so l_p <= 3 max
-  // |dx|. Pairs farther than twice 3 max |dx| / eta at x0 (the factor 2 absorbs the rounding
-  // of the distances and of l_p) thus cannot shorten the step.
+  // |dx|. Pairs farther than t plus twice 3 max |dx| / eta at x0 (the factor 2 absorbs the
+  // rounding of the distances and of l_p) thus cannot shorten the step.
   const double largest = dx.rows() ? dx.rowwise().norm().maxCoeff() : 0.0;
-  const double far = 2.0 * 3.0 * largest / eta;
+  const double far = thickness_ + 2.0 * 3.0 * largest / eta;
   // The kept candidates cover the step when it is short beside the list's skin; otherwise
   // those of the swept boxes, which hold every pair that may meet along it.
   const contact::KeptView view = cache_->candidates(x0, triangles_, edges_, &dx);
@@ -281,7 +307,8 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
     options.t_max = fraction;  // only an earlier impact can shorten the step further
     // ACCD's first advance, eta gap / rate, from a lower bound of the gap: when it already
     // reaches t_max, ACCD would find no impact (most candidates, at a fraction of its cost).
-    const double gap = box_gap(x0, n, edge_edge), rate = closing_rate(dx, n, edge_edge);
+    const double gap = box_gap(x0, n, edge_edge) - thickness_;
+    const double rate = closing_rate(dx, n, edge_edge);
     if (gap > 0 && options.conservative_rescaling * gap >= options.t_max * rate) return;
     const auto toi = ccd(row(x0, n[0]), row(x0, n[1]), row(x0, n[2]), row(x0, n[3]),
                          row(x1, n[0]), row(x1, n[1]), row(x1, n[2]), row(x1, n[3]), options);
@@ -291,7 +318,8 @@ double SelfContactFamily::step_limit(const NodeMatrix& X, const VectorX& u,
     // Only the kept pairs that may be within `far` of each other at x0.
     for_each_kept_within(view, far, triangles_, edges_, check);
   } else {
-    for_each_pair(contact::contact_candidates(x0, triangles_, edges_, 0.0, dx, joined_),
+    // (Those that may come within t of each other along the step.)
+    for_each_pair(contact::contact_candidates(x0, triangles_, edges_, thickness_, dx, joined_),
                   triangles_, edges_, check);
   }
   return fraction;
@@ -305,12 +333,14 @@ Table SelfContactFamily::table() const {
     out.emplace("tangent", real_column({static_cast<double>(tangent_)}));
   }
   if (!joined_.empty()) out.emplace("joined", index_column(joined_));
+  if (thickness_ != 0.0) out.emplace("thickness", real_column({thickness_}));
   return out;
 }
 
 FamilyPtr SelfContactFamily::from_table(const Table& t) {
   require_known_columns(t, "self_contact",
-                        {"triangles", "distance", "stiffness", "tangent", "joined"});
+                        {"triangles", "distance", "stiffness", "tangent", "joined",
+                         "thickness"});
   const auto& triangles = require_column(t, "self_contact", "triangles", true, 3);
   const auto& d_hat = require_column(t, "self_contact", "distance", false, 1, 1).reals;
   const auto& kappa = require_column(t, "self_contact", "stiffness", false, 1, 1).reals;
@@ -326,8 +356,12 @@ FamilyPtr SelfContactFamily::from_table(const Table& t) {
   }
   contact::JoinedNodes joined;
   if (t.count("joined")) joined = require_column(t, "self_contact", "joined", true, 1).indices;
+  const double thickness =
+      t.count("thickness")
+          ? require_column(t, "self_contact", "thickness", false, 1, 1).reals[0]
+          : 0.0;
   return std::make_shared<SelfContactFamily>(triangles.indices, d_hat[0], kappa[0], tangent,
-                                             std::move(joined));
+                                             std::move(joined), thickness);
 }
 
 }  // namespace kresling::model

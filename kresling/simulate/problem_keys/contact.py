@@ -1,6 +1,7 @@
 """``[contact]``: rigid planes the pattern's nodes may not pass, and panels that may not
-pass through each other (``self = true``): the model's ``contact`` and ``self_contact``
-families, and history.csv's ``min_gap`` and the planes' reaction."""
+pass through each other (``self = true``), the panels optionally of a thickness: the model's
+``contact`` and ``self_contact`` families, and history.csv's ``min_gap`` and the planes'
+reaction."""
 
 from __future__ import annotations
 
@@ -9,7 +10,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling.simulate.problem_keys import ProblemKey
-from kresling.simulate.problem_table import boolean, positive, raw, string, vector3
+from kresling.simulate.problem_table import (boolean, in_range, number, positive, raw, string,
+                                             vector3)
 
 __all__ = ["KEY", "Contact", "auto_barrier_stiffness", "TANGENTS"]
 
@@ -25,13 +27,16 @@ class Contact:
     ``self_contact``: whether panels are kept off each other; ``tangent``: how the panel
     pairs' Hessians enter Newton's tangent: ``"projected"`` onto the positive semi-definite
     cone, ``"exact"``, or ``"adaptive"`` (exact where the whole tangent is positive
-    definite, projected at the iterates where it is not)."""
+    definite, projected at the iterates where it is not); ``thickness``: t [mm], the panels'
+    thickness: their mid-surfaces are kept at least t apart and t/2 off the planes, d_hat
+    measured from the faces (0: the mid-surfaces themselves)."""
 
     distance: float
     stiffness: float | None
     planes: tuple
     self_contact: bool = False
     tangent: str = "adaptive"
+    thickness: float = 0.0
 
 
 def read_contact(t, context) -> dict:
@@ -42,6 +47,7 @@ def read_contact(t, context) -> dict:
     stiffness = None if given == "auto" else positive(t, "stiffness", given)
     self_contact = t.get("self", boolean, False)
     tangent = t.get("tangent", string, "adaptive", choices=TANGENTS)
+    thickness = t.get("thickness", _thickness, 0.0)
     planes = t.get("planes", raw, [], required=not self_contact,
                    allowed="an array of { point = [x, y, z], normal = [nx, ny, nz] }")
     if not isinstance(planes, list) or not (planes or self_contact):
@@ -58,7 +64,16 @@ def read_contact(t, context) -> dict:
             t.fail("planes", f"has normal {list(normal)}: must not be zero")
         out.append((point, normal))
     t.finish()
-    return {"contact": Contact(distance, stiffness, tuple(out), bool(self_contact), tangent)}
+    return {"contact": Contact(distance, stiffness, tuple(out), bool(self_contact), tangent,
+                               thickness)}
+
+
+def _thickness(t, key, value, allowed=None):
+    """The panels' thickness [mm]: a finite number >= 0."""
+    value = number(t, key, value)
+    if value < 0:
+        t.fail(key, f"= {value!r} is invalid: must be >= 0 [mm] (0: panels without thickness)")
+    return in_range(t, key, value, zero=True)
 
 
 def _barrier_curvature(d_hat: float) -> float:
@@ -95,7 +110,8 @@ def _contact_table(problem, model) -> dict:
             "origin": np.array([p for p, _ in contact.planes], dtype=float),
             "normal": np.array([n for _, n in contact.planes], dtype=float),
             "distance": np.array([contact.distance]),
-            "stiffness": np.array([_barrier_stiffness(problem, model)])}
+            "stiffness": np.array([_barrier_stiffness(problem, model)]),
+            **_thickness_column(contact)}
 
 
 def _self_contact_table(problem, pm) -> dict:
@@ -103,13 +119,36 @@ def _self_contact_table(problem, pm) -> dict:
     included), kept off each other."""
     table = {"triangles": np.asarray(pm.elements.triangles, dtype=np.int64),
              "distance": np.array([problem.contact.distance]),
-             "stiffness": np.array([_barrier_stiffness(problem, pm.model)])}
+             "stiffness": np.array([_barrier_stiffness(problem, pm.model)]),
+             **_thickness_column(problem.contact)}
     if problem.contact.tangent != "adaptive":
         table["tangent"] = np.array([float(TANGENTS.index(problem.contact.tangent))])
     joined = _joined_at_rest(pm.model.nodes)
     if joined is not None:
         table["joined"] = joined
     return table
+
+
+def _thickness_column(contact) -> dict:
+    """The families' ``thickness`` column: none for panels without thickness (the families'
+    default), so that their tables are those of a problem without the key."""
+    return {"thickness": np.array([contact.thickness])} if contact.thickness > 0 else {}
+
+
+def _check_thickness(problem, pm):
+    """Refuse a thickness no smaller than a panel: the shortest edge of the pattern's
+    triangles at rest [mm]. (A thickness two panels are closer than at rest is refused by
+    the self-contact family, which measures their distances.)"""
+    thickness = problem.contact.thickness
+    if thickness == 0:
+        return
+    nodes, triangles = pm.model.nodes, np.asarray(pm.elements.triangles)
+    edges = nodes[np.roll(triangles, -1, axis=1)] - nodes[triangles]
+    shortest = float(np.linalg.norm(edges, axis=2).min())
+    if thickness >= shortest:
+        raise ValueError(f"{problem.source}: [contact] key 'thickness' = {thickness:g} mm is "
+                         f"invalid: must be below the size of every panel, here the shortest "
+                         f"edge of its triangles at rest, {shortest:.6g} mm")
 
 
 def _joined_at_rest(nodes):
@@ -127,7 +166,9 @@ def _joined_at_rest(nodes):
 
 def _contact_columns(model, path) -> dict:
     """The contact columns of ``history.csv`` along ``path``: ``min_gap`` [mm] (with planes
-    or panel contact) and, with planes, ``reaction_planes_x/y/z`` [N], the planes' force on
+    or panel contact: the smallest gap between two panels' faces or a panel's face and a
+    plane, the mid-surfaces' distance less the thickness t, a node's distance from a plane
+    less t / 2) and, with planes, ``reaction_planes_x/y/z`` [N], the planes' force on
     the model (the barrier's force on its nodes, summed over every node and plane)."""
     if not {"contact", "self_contact"} & set(path.families):
         return {}
@@ -145,8 +186,8 @@ def _contact_columns(model, path) -> dict:
 
 
 def _min_gap(state: dict) -> float | None:
-    """The smallest node-plane and panel-panel distance of an element state [mm], or None
-    when there is neither."""
+    """The smallest node-plane and panel-panel gap of an element state (the distances less
+    the thickness, t / 2 from a plane) [mm], or None when there is neither."""
     gaps = [state[k].min() for k in ("contact_gap", "self_contact_gap")
             if k in state and state[k].size]
     return float(min(gaps)) if gaps else None
@@ -156,6 +197,8 @@ def contact_families(problem, pattern_model) -> dict:
     """The contact families' tables: every node against every plane, and the panels'
     triangles kept off each other."""
     families = {}
+    if problem.contact is not None:
+        _check_thickness(problem, pattern_model)
     if problem.contact is not None and problem.contact.planes:
         families["contact"] = _contact_table(problem, pattern_model.model)
     if problem.contact is not None and problem.contact.self_contact:
