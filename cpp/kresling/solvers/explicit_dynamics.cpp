@@ -124,10 +124,10 @@ class CentralDifferenceControl final : public TimeControl {
       if (!finite || grown) {
         stopped_step = step_at(t, u);
         record_motion(v_, kinetic_, strain, dissipated_, work_);
-        out.failure = "unstable at t = " + format_number(t) + " s: " +
-                      (finite ? "the energy grew to " + format_number(kinetic_ + strain) +
-                                    " N mm, over " + format_number(kEnergyGrowthLimit) +
-                                    " times the " + format_number(put_in_ + ahead) +
+        out.failure = "unstable at t = " + format_rounded(t) + " s: " +
+                      (finite ? "the energy grew to " + format_rounded(kinetic_ + strain) +
+                                    " N mm, over " + format_rounded(kEnergyGrowthLimit) +
+                                    " times the " + format_rounded(put_in_ + ahead) +
                                     " N mm put in (the tangent stiffened beyond the start's "
                                     "stable step: take a smaller time_step)"
                               : std::string("the state is not finite"));

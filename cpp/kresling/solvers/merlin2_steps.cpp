@@ -53,7 +53,7 @@ void Merlin2Steps::finish(const PathControl&, PathResult& result) const {
   if (result.completed) return;
   result.failed_increment = result.attempted_increments;
   result.message = "increment " + std::to_string(result.steps.size() + 1) + " (at " +
-                   format_number(moved_) + " of the prescribed motion) was rejected 21 times " +
+                   format_rounded(moved_) + " of the prescribed motion) was rejected 21 times " +
                    "in a row; last: " + last_failure_;
 }
 

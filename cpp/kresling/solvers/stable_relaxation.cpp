@@ -276,9 +276,9 @@ class Relaxer {
       // tangent definite is what held them: its curvature is sharply negative there, as
       // where an element nears a singular state (a panel's triangle flattened to a line).
       return fail("the relaxation stopped where no step lowers the energy (out-of-balance "
-                  "force " + format_number(s_.gradient.norm()) + " N, most negative "
-                  "curvature " + format_number(curvature) + " N/mm, shift " +
-                  format_number(mu_) + " N/mm: a saddle, or an element near a singular "
+                  "force " + format_rounded(s_.gradient.norm()) + " N, most negative "
+                  "curvature " + format_rounded(curvature) + " N/mm, shift " +
+                  format_rounded(mu_) + " N/mm: a saddle, or an element near a singular "
                   "state such as a panel's triangle flattened to a line)");
     }
     ++out_.steps;
