@@ -29,7 +29,9 @@ one run (``--only`` picks some):
    triangulated sheet) up to ~100,000 DOFs, positive definite and indefinite
    (benchmarks/pattern_scaling.py);
 8. ``mgdcm``: MGDCM on a one-layer Kresling whose path crosses a double bifurcation at a
-   tolerance of 1e-10 mm (the accuracy-floor case of docs/model.md, 'MGDCM').
+   tolerance of 1e-10 mm (the accuracy-floor case of docs/model.md, 'MGDCM');
+9. ``sweeps``: the K_B-ratio map's CPU time per design against the same designs' bending
+   tests run alone (benchmarks/sweep_speed.py, ``map_overhead``).
 
 Times are best of ``--repeat`` runs (the sheets: one run); a shared machine makes absolute
 times noisy: the load average is printed first. Run:
@@ -54,11 +56,13 @@ import cli_startup  # noqa: E402
 import new_physics_speed  # noqa: E402
 import pattern_scaling  # noqa: E402
 import simulate_speed  # noqa: E402  (the examples' runners and MERLIN2 live under Octave)
+import sweep_speed  # noqa: E402
 
 from kresling import Design, data  # noqa: E402
 from kresling.analyses import BendingTester  # noqa: E402
 
-TABLES = ("bending", "examples", "sheets", "outputs", "startup", "physics", "patterns", "mgdcm")
+TABLES = ("bending", "examples", "sheets", "outputs", "startup", "physics", "patterns", "mgdcm",
+          "sweeps")
 OPTIMUM = (10, 15.0, 0.9)     # n, Lc [mm], lam: the thesis's optimum, K_ext / K_con largest
 
 
@@ -299,6 +303,9 @@ def main(argv=None) -> int:
         pattern_scaling.table(list(pattern_scaling.SIZES), max_dofs)
     if "mgdcm" in tables:
         mgdcm_table()
+    if "sweeps" in tables:
+        print("\n9. Sweeps: the K_B-ratio map against its bending tests run alone")
+        sweep_speed.map_overhead(2 if args.quick else 4, repeat)
     print("\n" + machine())
     return 0
 

@@ -2,7 +2,8 @@
 speed-up from 1 to 2 workers (threads and processes), the time per design against MERLIN2
 under Octave (kresling/data/merlin2/timing_octave.csv), and the time of the full K_B-ratio
 map (4 x 100 x 100 designs x 2 states): extrapolated from a measured subset, or measured
-with --full.
+with --full; and the map's CPU time per design against the same designs' bending tests run
+alone (``map_overhead``, ``--overhead`` alone).
 
 Run: ``python benchmarks/sweep_speed.py [--size 8] [--workers 2] [--full]``
 
@@ -20,7 +21,7 @@ from concurrent.futures import ProcessPoolExecutor
 import numpy as np
 
 from kresling import Design, data
-from kresling.analyses import BendingTester
+from kresling.analyses import BendingTester, bending_test
 from kresling.sweeps import design_grid, sweep
 
 THESIS_GRID = 100 * 100  # designs per n
@@ -101,6 +102,35 @@ def against_merlin2(per_n: dict) -> None:
               f"~{merlin / ours:.0f}x")
 
 
+def map_overhead(size: int, repeat: int = 3) -> float:
+    """The K_B-ratio map's CPU time per design against the same designs' bending tests run
+    alone (``bending_test`` in both states, 0.001 rad), side by side, best of ``repeat``
+    each; returns the ratio."""
+    grid = design_grid(size=size)
+    designs = list(grid)
+
+    def sweep_cpu():
+        start = time.process_time()
+        sweep(grid, ["kb_ratio"], workers=1, progress=False)
+        return time.process_time() - start
+
+    def alone_cpu():
+        start = time.process_time()
+        for design in designs:
+            for state in (0, 1):
+                bending_test(design, state, "0.001rad")
+        return time.process_time() - start
+
+    sweep_cpu(), alone_cpu()    # warm both (imports, the first tester's set-up)
+    mapped = min(sweep_cpu() for _ in range(repeat))
+    alone = min(alone_cpu() for _ in range(repeat))
+    ratio = mapped / alone
+    print(f"\nK_B-ratio map against the bending tests alone ({len(designs)} designs, both "
+          f"states, CPU time, best of {repeat}): map {1e3 * mapped / len(designs):.2f} ms "
+          f"per design, alone {1e3 * alone / len(designs):.2f} ms: {ratio:.2f}x")
+    return ratio
+
+
 def full_map(per_n: dict, workers: int, measure: bool) -> None:
     """The full K_B-ratio map: extrapolated from the per-design times, or measured."""
     single = sum(per_n["kb_ratio"][n] * THESIS_GRID for n in (4, 6, 8, 10))
@@ -129,7 +159,12 @@ def main() -> None:
                         "the rates (default 8: 256 designs; a third of that for 5 mm)")
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--full", action="store_true", help="also time the full map")
+    parser.add_argument("--overhead", action="store_true",
+                        help="only the map against the bending tests alone")
     args = parser.parse_args()
+    if args.overhead:
+        map_overhead(max(2, args.size // 2))
+        return
     print(f"{os.cpu_count()} cores; load average before: "
           f"{', '.join(f'{v:.2f}' for v in os.getloadavg())}")
     per_n = metric_rates(args.size, args.workers)
@@ -137,6 +172,7 @@ def main() -> None:
     for name, times in per_n.items():
         print(f"  {name:14s} " + "  ".join(f"n={n}: {1e3 * t:7.2f}" for n, t in times.items()))
     against_merlin2(per_n)
+    map_overhead(max(2, args.size // 2))
     full_map(per_n, args.workers, args.full)
     print(f"\nload average after: {', '.join(f'{v:.2f}' for v in os.getloadavg())}")
 
