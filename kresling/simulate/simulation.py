@@ -156,7 +156,9 @@ class Simulation:
         the creases more than ``tolerance_deg`` (the analysis's ``target_tolerance_deg``,
         1 deg unless set) from their target fold angle at the end (held at their
         law's limit, by the structure, or by a path that stopped), ``worst`` names the
-        farthest; ``left_branch`` counts those folded the other way from their target;
+        farthest (angles compared on the circle: -164 deg is 16 deg from 180 deg);
+        ``left_branch`` counts those folded the other way from their target (past flat on
+        the other side, farther from the target than flat is);
         ``snaps`` the fold fractions (the steps' load factors) where the fold snapped."""
         plan = self.fold
         if plan is None or not self.path.num_steps or not plan.hinges.size:
@@ -164,10 +166,15 @@ class Simulation:
         tolerance = getattr(self.problem.analysis, "target_tolerance_deg", FOLD_TOLERANCE_DEG)
         final = fold_angles_deg(self.pattern_model, self.path.displacement[-1], plan.signs)
         reached = final[plan.hinges]
-        miss = np.abs(reached - plan.target_deg)
+        # Fold angles live on a circle: a crease folded 16 deg past flat reads -164 deg,
+        # 16 deg from a target of 180, not 344.
+        miss = np.abs((reached - plan.target_deg + 180.0) % 360.0 - 180.0)
         worst = int(np.argmax(miss))
+        # The other way: on the far side of flat, farther from the target than flat is (a
+        # crease folded past 180 deg is past its target, not the other way).
         other_way = ((np.sign(reached) * np.sign(plan.target_deg) < 0)
-                     & (np.abs(reached) > FOLD_TOLERANCE_DEG))
+                     & (np.abs(reached) > FOLD_TOLERANCE_DEG)
+                     & (miss > np.abs(plan.target_deg)))
         return {"creases_driven": int(plan.hinges.size),
                 "short_of_target": int(np.count_nonzero(miss > tolerance)),
                 "tolerance_deg": tolerance,

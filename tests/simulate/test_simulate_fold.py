@@ -13,6 +13,7 @@ import pytest
 from kresling.io import write_fold
 from kresling.io.miura import miura_sheet
 from kresling.simulate import load_problem, simulate
+from small_models import CREASED_SQUARE
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -179,3 +180,39 @@ def test_adaptive_fold_increments_refuse_a_predictor(tmp_path):
     problem.write_text(text + 'increments = "adaptive"\npredictor = "cubic"\n')
     with pytest.raises(ValueError, match="predictor"):
         load_problem(problem)
+
+
+def test_the_fold_report_reads_angles_on_the_circle():
+    """A crease folded past flat reads as the other sign (-164 deg for 196 deg): it is
+    16 deg from a target of 180 deg and not folded the other way; one short of a small
+    target on the far side of flat is the other way."""
+    problem = dict(CREASED_SQUARE, actuation=[{"edges": [[0, 2]], "fold_angle_deg": 180.0}],
+                   analysis={"method": "fold", "steps": 2})
+    sim = simulate(problem, progress=False)
+    nodes = sim.model.nodes
+
+    def turned(degrees):
+        """The free corner turned about the crease 0 -> 2 by ``degrees`` from flat."""
+        axis = (nodes[2] - nodes[0]) / np.linalg.norm(nodes[2] - nodes[0])
+        r = nodes[3] - nodes[0]
+        a = np.radians(degrees)
+        rotated = (r * np.cos(a) + np.cross(axis, r) * np.sin(a)
+                   + axis * np.dot(axis, r) * (1 - np.cos(a)))
+        u = np.zeros_like(nodes)
+        u[3] = nodes[0] + rotated - nodes[3]
+        return u.ravel()
+
+    def report_at(degrees, target):
+        plan = dataclasses.replace(sim.fold, target_deg=np.array([target]))
+        path = dataclasses.replace(sim.path, displacement=turned(degrees)[None, :])
+        return dataclasses.replace(sim, path=path, fold=plan).fold_report()
+
+    # Which way the corner turns for a valley: the reached fold angle's sign says.
+    sign = np.sign(report_at(30.0, 30.0)["worst"]["fold_angle_deg"])
+    past = report_at(sign * 196.0, 180.0)
+    assert past["worst"]["fold_angle_deg"] == pytest.approx(-164.0, abs=1e-6)
+    assert past["largest_shortfall_deg"] == pytest.approx(16.0, abs=1e-6)
+    assert past["left_branch"] == 0
+    other = report_at(-sign * 10.0, 30.0)
+    assert other["largest_shortfall_deg"] == pytest.approx(40.0, abs=1e-6)
+    assert other["left_branch"] == 1
