@@ -256,6 +256,9 @@ class NewmarkControl final : public TimeControl {
     if (full_) {  // the next step's damping stiffness: this step's end tangent
       k_.swap(next_k_);
       k_values_.swap(next_k_values_);
+      // The factorisation held is of the damping this step had: chord iterations with it
+      // would converge only linearly, Newton's iterations take over from the start.
+      factorised_dt_ = 0.0;
     }
     s_.t = increment.to;
     s_.u = u;
