@@ -171,3 +171,31 @@ def test_actuation_times_and_schemes_are_refused_where_they_do_not_apply():
     forces["analysis"] = {"method": "force_control", "steps": 4}
     with pytest.raises(ValueError, match=r"method = 'fold' or 'dynamic'"):
         load_problem(forces)
+
+
+def test_a_driven_stage_starts_where_a_fold_left_the_crease_and_hands_on_its_rest_angle():
+    from kresling.model.fold_angles import fold_angles_deg, hinge_fold_signs, rest_angles_for
+
+    p = copy.deepcopy(CREASED_SQUARE)
+    p["stage"] = [
+        {"name": "fold", "method": "fold", "steps": 5,
+         "actuation": [{"edges": [[0, 2]], "fold_angle_deg": 45.0}]},
+        {"name": "drive", "method": "dynamic", "tolerance": 1e-12,
+         "dynamics": {"scheme": "newmark", "time_step": 1e-4, "duration": 0.05},
+         "actuation": [{"edges": [[0, 2]], "fold_angle_deg": 60.0, "time": "ramp",
+                        "ramp_time": 0.02}]},
+        {"name": "modes", "method": "modes", "modes": 1}]
+    run = simulate(p)
+    assert run.completed
+    drive, modes = run.runs[1][1], run.runs[2][1]
+    sign = hinge_fold_signs(drive.pattern_model)[0]
+    # The drive's rest angle starts at the fold's 45 deg (the ramp's factor 0) and the
+    # motion from rest there.
+    assert drive.model.hinge_rest_angle[0] == pytest.approx(rest_angles_for(45.0, sign),
+                                                            abs=1e-12)
+    first = fold_angles_deg(drive.pattern_model, drive.path.displacement[0])[0]
+    assert first == pytest.approx(45.0, abs=1e-3)
+    # After the ramp the crease rests at 60 deg, and the next stage starts there.
+    target = rest_angles_for(60.0, sign)
+    assert drive.model_at(-1).hinge_rest_angle[0] == pytest.approx(target, abs=1e-12)
+    assert modes.model.hinge_rest_angle[0] == pytest.approx(target, abs=1e-12)
