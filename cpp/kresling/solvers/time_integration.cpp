@@ -127,6 +127,15 @@ void check_options(const TimeIntegrationOptions& o) {
   check_shift(o.shift);
 }
 
+// x (zero when empty) with the supported DOFs at zero.
+VectorX held_at_zero(const model::Model& model, const VectorX& x) {
+  VectorX out = x.size() ? x : VectorX::Zero(model.num_dofs());
+  for (Index i = 0; i < out.size(); ++i) {
+    if (model.fixed()[i]) out[i] = 0.0;
+  }
+  return out;
+}
+
 // Chord iterations a step tries with the factorisation kept from an earlier step before it
 // refactorises (Newton's method).
 constexpr int kChordIterations = 6;
@@ -354,11 +363,8 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
   assembler.rebind(start_model);
   TangentSolver solver(options.newton.cholesky);
   StepStart s;
-  s.u = u0.size() ? u0 : VectorX::Zero(n);
-  s.v = v0.size() ? v0 : VectorX::Zero(n);
-  for (Index i = 0; i < n; ++i) {
-    if (model.fixed()[i]) s.u[i] = s.v[i] = 0.0;
-  }
+  s.u = held_at_zero(model, u0);
+  s.v = held_at_zero(model, v0);
   // Stiffness-proportional damping needs the initial stiffness: of every DOF (for C v) and
   // in the solver's pattern (its share of the tangent). Without it neither is built (a
   // workspace of every DOF and two tangent assemblies: a small model's run pays for them
