@@ -146,7 +146,7 @@ def stable_time_step(model, masses, u=None, *, mass_damping=0.0,
     return StableStep(core.time_step, core.omega_max, core.omega_bound, core.iterations)
 
 
-def _time_function(value, name="a load's time"):
+def _time_function(value, name="a load's time", table_name="load_table"):
     """A time function as the core's (times, factors, amplitude, frequency_hz,
     end_frequency_hz, sweep_time): None (the factor 1), a ``[t, factor]`` table,
     ``{"harmonic": (amplitude, frequency_hz)}`` or ``{"chirp": (amplitude, f0_hz, f1_hz,
@@ -166,10 +166,10 @@ def _time_function(value, name="a load's time"):
         if kind == "harmonic":
             return empty, empty, float(numbers[0]), float(numbers[1]), 0.0, 0.0
         return (empty, empty, *(float(x) for x in numbers))
-    table = as_float_array("load_table", value)
+    table = as_float_array(table_name, value)
     if table.ndim != 2 or table.shape[1] != 2 or not len(table) or \
             not np.isfinite(table).all() or (np.diff(table[:, 0]) <= 0).any():
-        raise ValueError("load_table must be rows [t, factor] with increasing t")
+        raise ValueError(f"{table_name} must be rows [t, factor] with increasing t")
     return (np.ascontiguousarray(table[:, 0]), np.ascontiguousarray(table[:, 1]), 0.0, 0.0,
             0.0, 0.0)
 
@@ -216,7 +216,8 @@ def _actuation_terms(model, actuation):
                              f"finite rest-angle change [rad] per hinge ({len(hinges)})")
         hinges = hinges.astype(np.int64)
         terms.append((hinges.tolist(), np.ascontiguousarray(rest[hinges]), delta,
-                      _time_function(entry[2], f"actuation[{i}] time")))
+                      _time_function(entry[2], f"actuation[{i}] time",
+                                     f"actuation[{i}] time")))
     return terms
 
 
