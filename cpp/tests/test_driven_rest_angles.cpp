@@ -16,6 +16,7 @@
 #include "kresling/model/model.hpp"
 #include "kresling/solvers/time_integration.hpp"
 #include "oscillator_test_helpers.hpp"
+#include "wing_test_helpers.hpp"
 
 using namespace kresling;
 
@@ -26,15 +27,7 @@ constexpr double kPi = 3.14159265358979323846;
 // A wing (node 3) turning about the axis 0 -> 1 against a held wing (node 2), on stiff bars
 // and a linear hinge of stiffness 1 N mm/rad at rest angle `rest`.
 model::Model wing(double rest) {
-  NodeMatrix X(4, 3);
-  X << 0, 0, 0, 1, 0, 0, 0.5, -1, 0, 0.5, 1, 0;
-  std::vector<model::Bar> bars(2);
-  bars[0].nodes = {0, 3};
-  bars[1].nodes = {1, 3};
-  for (auto& b : bars) {
-    b.rest_length = (X.row(b.nodes[1]) - X.row(b.nodes[0])).norm();
-    b.law = {elements::BarLawKind::Linear, 1e6};
-  }
+  const NodeMatrix X = test::wing_nodes();
   model::Hinge h;
   h.nodes = {0, 1, 2, 3};
   h.stiffness = 1.0;
@@ -44,7 +37,7 @@ model::Model wing(double rest) {
   std::vector<std::uint8_t> fixed(12, 1);
   fixed[9] = fixed[10] = fixed[11] = 0;
   return model::Model(X, fixed,
-                      {std::make_shared<model::BarFamily>(bars),
+                      {std::make_shared<model::BarFamily>(test::wing_bars(X)),
                        std::make_shared<model::HingeFamily>(std::vector<model::Hinge>{h})});
 }
 
