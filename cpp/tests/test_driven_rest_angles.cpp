@@ -42,11 +42,7 @@ model::Model wing(double rest) {
 }
 
 solvers::TimeIntegrationOptions options(double dt, double duration) {
-  solvers::TimeIntegrationOptions o;
-  o.time_step = dt;
-  o.duration = duration;
-  o.newton.tolerance = 1e-13;
-  return o;
+  return test::newmark_options(dt, duration, 1e-13);
 }
 
 solvers::RestAngleSchedule drive(double start, double delta, std::function<double(double)> f) {
