@@ -157,7 +157,8 @@ def _time_function(value, name="a load's time", table_name="load_table"):
     if isinstance(value, dict):
         kind = next(iter(value)) if len(value) == 1 else None
         size = {"harmonic": 2, "chirp": 4}.get(kind)
-        numbers = None if size is None else as_float_array(kind, value[kind]).ravel()
+        numbers = None if size is None else as_float_array(f"{name}: {kind}",
+                                                           value[kind]).ravel()
         if numbers is None or numbers.shape != (size,) or not np.isfinite(numbers).all() or \
                 (numbers[1:] <= 0).any():
             raise ValueError(f"{name} = {value!r} is invalid: must be "
