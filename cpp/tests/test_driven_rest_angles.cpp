@@ -102,6 +102,10 @@ TEST(DrivenRestAngles, RefusesHingesOutOfRangeAndMismatchedSizes) {
   o.actuation = drive(kPi, 0.1, [](double) { return NAN; });
   EXPECT_THROW(solvers::integrate_newmark(wing(kPi), kMasses, VectorX::Zero(12), {}, o),
                std::invalid_argument);
+  // A rest angle driven beyond a flat fold (2 pi) at t = 5 ms.
+  o.actuation = drive(kPi, 4.0, [](double t) { return t > 5e-3 ? 1.0 : 0.0; });
+  EXPECT_THROW(solvers::integrate_newmark(wing(kPi), kMasses, VectorX::Zero(12), {}, o),
+               std::invalid_argument);
 }
 
 TEST(CurrentTangentDamping, OnALinearOscillatorIsTheStartsTangents) {

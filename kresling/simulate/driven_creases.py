@@ -55,7 +55,7 @@ class CreaseDrive:
 def crease_drives(problem, pattern_model) -> tuple:
     """The problem's actuation as drives in time, from the model's rest angles (where the
     run starts). A ValueError names an entry whose creases it would take beyond a flat
-    fold (a rest angle outside [0, 2 pi]) at some time."""
+    fold (a rest angle outside [0, 2 pi)) at some time."""
     start = np.asarray(pattern_model.model.hinge_rest_angle, dtype=float)
     signs = hinge_fold_signs(pattern_model)
     creases = actuated_creases(problem, pattern_model)
@@ -74,7 +74,7 @@ def crease_drives(problem, pattern_model) -> tuple:
             delta = rest_angles_for([angle for _, _, angle in kept], signs[hinges]) - start[hinges]
         for factor in (time or LoadTime()).factor_range():
             reached = start[hinges] + factor * delta
-            beyond = np.flatnonzero((reached < 0.0) | (reached > 2.0 * np.pi))
+            beyond = np.flatnonzero((reached < 0.0) | (reached >= 2.0 * np.pi))
             if beyond.size:
                 k = int(beyond[0])
                 fold = np.degrees(signs[hinges[k]] * (np.pi - start[hinges[k]]))

@@ -285,7 +285,8 @@ def solve_dynamics(model, masses, time_step, duration, *, forces=None, gravity=N
         ``hinges`` (model hinge indices, shape (K,)) is its rest angle in ``model`` plus
         ``factor(t) * delta`` (``delta`` shape (K,) [rad]), ``time`` a time function as
         ``loads`` take it; a hinge in two entries follows the later. The internal force
-        of each step uses the rest angles at its end.
+        of each step uses the rest angles at its end; a rest angle leaving [0, 2 pi) (a
+        fold beyond flat) ends the run with a ValueError naming the entry and the time.
     record_every : int
         The explicit scheme keeps every ``record_every``-th step (and the last).
     stop : callable, optional

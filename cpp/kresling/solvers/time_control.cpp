@@ -9,6 +9,10 @@
 
 namespace kresling::solvers {
 
+namespace {
+constexpr double kTwoPi = 6.28318530717958647692;
+}  // namespace
+
 DrivenRestAngles::DrivenRestAngles(const model::Model& model, const RestAngleSchedule& schedule)
     : base_(model), schedule_(schedule) {
   if (schedule.empty()) return;
@@ -37,15 +41,23 @@ DrivenRestAngles::DrivenRestAngles(const model::Model& model, const RestAngleSch
 }
 
 void DrivenRestAngles::set_rest_angles(double t) {
-  for (const auto& term : schedule_.terms) {
+  for (std::size_t n = 0; n < schedule_.terms.size(); ++n) {
+    const auto& term = schedule_.terms[n];
     const double f = term.factor ? term.factor(t) : 1.0;
     if (!std::isfinite(f)) {
-      throw std::invalid_argument("actuation factor: not finite at t = " + format_number(t));
+      throw std::invalid_argument("actuation[" + std::to_string(n) +
+                                  "]: factor not finite at t = " + format_number(t) + " s");
     }
     for (std::size_t i = 0; i < term.hinges.size(); ++i) {
       const auto k = static_cast<Index>(i);
-      scratch_[static_cast<std::size_t>(term.hinges[i])].rest_angle =
-          term.start[k] + f * term.delta[k];
+      const double rest = term.start[k] + f * term.delta[k];
+      if (!(rest >= 0.0 && rest < kTwoPi)) {  // a fold beyond flat
+        throw std::invalid_argument(
+            "actuation[" + std::to_string(n) + "]: hinge " + std::to_string(term.hinges[i]) +
+            " at t = " + format_number(t) + " s: rest angle = " + format_number(rest) +
+            " is invalid: must be in [0, 2 pi) rad");
+      }
+      scratch_[static_cast<std::size_t>(term.hinges[i])].rest_angle = rest;
     }
   }
 }
