@@ -2,6 +2,7 @@
 step, a ramp, a harmonic, a chirp), against a hinge's closed form, and their refusals."""
 
 import copy
+import re
 
 import numpy as np
 import pytest
@@ -199,3 +200,19 @@ def test_a_driven_stage_starts_where_a_fold_left_the_crease_and_hands_on_its_res
     target = rest_angles_for(60.0, sign)
     assert drive.model_at(-1).hinge_rest_angle[0] == pytest.approx(target, abs=1e-12)
     assert modes.model.hinge_rest_angle[0] == pytest.approx(target, abs=1e-12)
+
+
+def test_kresling_simulate_refuses_a_bad_chirp_in_one_line_naming_the_file_and_key(tmp_path):
+    from pathlib import Path
+
+    from cli_helpers import run_kresling
+
+    example = Path(__file__).resolve().parents[2] / "examples" / "fold_then_chirp"
+    bad = tmp_path / "bad.toml"
+    bad.write_text((example / "problem.toml").read_text().replace(
+        "chirp = [2.0, 5.0, 25.0, 0.6]", "chirp = [2.0, 5.0, -25.0, 0.6]"))
+    result = run_kresling("simulate", str(bad), "--out", str(tmp_path / "out"), cwd=tmp_path)
+    assert result.returncode == 2 and "Traceback" not in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert re.search(r"bad.toml.*\[actuation\] key 'time' = .* the chirp's frequencies",
+                     result.stderr)
