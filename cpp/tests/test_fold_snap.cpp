@@ -28,6 +28,7 @@
 
 #include "kresling/elements/dihedral.hpp"
 #include "kresling/model/bar_family.hpp"
+#include "wing_test_helpers.hpp"
 #include "kresling/model/hinge_family.hpp"
 #include "kresling/model/model.hpp"
 #include "kresling/model/spring_family.hpp"
@@ -77,18 +78,11 @@ struct Wing {
 // Axis 0 -> 1 along x, held wing 2 at -y, turning wing 3 at +y; the spring's anchor at
 // distance 1.5 in the direction phi_a.
 Wing make_wing() {
-  NodeMatrix X(4, 3);
-  X << 0, 0, 0, 1, 0, 0, 0.5, -1, 0, 0.5, 1, 0;
+  const NodeMatrix X = test::wing_nodes();
   const double turned = elements::dihedral_angle(X.row(0), X.row(1), X.row(2),
                                                  Vector3(0.5, std::cos(0.1), std::sin(0.1)));
   const double sign = turned > kPi ? 1.0 : -1.0;
-  std::vector<model::Bar> bars(2);
-  bars[0].nodes = {0, 3};
-  bars[1].nodes = {1, 3};
-  for (auto& b : bars) {
-    b.rest_length = (X.row(b.nodes[1]) - X.row(b.nodes[0])).norm();
-    b.law = {elements::BarLawKind::Linear, 1e6};
-  }
+  const std::vector<model::Bar> bars = test::wing_bars(X);
   model::Hinge h;
   h.nodes = {0, 1, 2, 3};
   h.stiffness = 1.0;

@@ -27,11 +27,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 solvers::TimeIntegrationOptions options(double dt, double duration) {
-  solvers::TimeIntegrationOptions o;
-  o.time_step = dt;
-  o.duration = duration;
-  o.newton.tolerance = 1e-12;
-  return o;
+  return test::newmark_options(dt, duration);
 }
 
 }  // namespace

@@ -10,8 +10,9 @@ import numpy as np
 from kresling.model.fold_angles import hinge_fold_signs, rest_angles_for
 from kresling.model.crease_kinds import FOLD_FAMILIES
 from kresling.model.pattern_model import MEMBER
+from kresling.simulate.problem_keys.dynamics import OSCILLATING
 
-__all__ = ["FoldPlan", "fold_plan"]
+__all__ = ["FoldPlan", "fold_plan", "actuated_creases"]
 
 #: What family = "fold" drives: every fold family and the joins.
 _FOLD_FAMILIES = FOLD_FAMILIES + ("join",)
@@ -60,43 +61,59 @@ def _fold_hinge_of_edge(pattern_model) -> dict:
     return out
 
 
-def fold_plan(problem, pattern_model) -> FoldPlan:
-    """The problem's actuation as stages; a ValueError names an entry that drives no hinge
-    (an edge that is no crease, a family with no member, no fold angle in the file)."""
+def actuated_creases(problem, pattern_model) -> list:
+    """Per ``[[actuation]]`` entry, its creases as a dict {(u, v): (model hinge, target fold
+    angle [deg] or None)} (None: an entry whose harmonic or chirp drives to no target). A
+    ValueError names an entry that drives no hinge (an edge that is no crease, a family
+    with no member, no fold angle in the file)."""
     by_edge = _fold_hinge_of_edge(pattern_model)
     pattern = problem.pattern
     file_angle = {(int(min(u, v)), int(max(u, v))): float(a)
                   for (u, v), a in zip(pattern.edges, pattern.edges_fold_angle)}
+    out = []
+    for i, entry in enumerate(problem.actuations):
+        where = f"{problem.source}: actuation[{i}]"
+        if entry.edges is not None:
+            edges = entry.edges
+            missing = [e for e in edges if e not in by_edge]
+            if missing:
+                raise ValueError(f"{where} key 'edges': {list(missing[0])} is not a crease "
+                                 "with a hinge (a boundary, a cut, or no edge at all)")
+        else:
+            wanted = _FOLD_FAMILIES if entry.family == "fold" else (entry.family,)
+            edges = [e for e, h in by_edge.items() if pattern_model.hinge_family[h] in wanted]
+            if not edges:
+                raise ValueError(f"{where} key 'family': the pattern has no "
+                                 f"{entry.family!r} crease")
+        swings = entry.time is not None and entry.time.kind in OSCILLATING
+        creases = {}
+        for edge in edges:
+            angle = entry.fold_angle_deg
+            if angle is None and not swings:
+                angle = file_angle.get(edge, np.nan)
+                if not np.isfinite(angle):
+                    raise ValueError(f"{where} key 'fold_angle_deg': = \"file\" but the "
+                                     f"pattern gives crease {list(edge)} no "
+                                     "edges_foldAngle")
+            creases[edge] = (by_edge[edge], angle)
+        out.append(creases)
+    return out
+
+
+def fold_plan(problem, pattern_model) -> FoldPlan:
+    """The problem's actuation as stages; a ValueError names an entry that drives no hinge
+    (:func:`actuated_creases`)."""
+    creases = actuated_creases(problem, pattern_model)
     signs = hinge_fold_signs(pattern_model)
     fraction = problem.analysis.fold_percent / 100.0
     stages, order, last = [], [], {}
     for stage in range(1, max(a.stage for a in problem.actuations) + 1):
         targets = {}
-        for i, entry in enumerate(problem.actuations):
+        for entry, driven in zip(problem.actuations, creases):
             if entry.stage != stage:
                 continue
-            where = f"{problem.source}: actuation[{i}]"
-            if entry.edges is not None:
-                edges = entry.edges
-                missing = [e for e in edges if e not in by_edge]
-                if missing:
-                    raise ValueError(f"{where} key 'edges': {list(missing[0])} is not a crease "
-                                     "with a hinge (a boundary, a cut, or no edge at all)")
-            else:
-                wanted = _FOLD_FAMILIES if entry.family == "fold" else (entry.family,)
-                edges = [e for e, h in by_edge.items() if pattern_model.hinge_family[h] in wanted]
-                if not edges:
-                    raise ValueError(f"{where} key 'family': the pattern has no "
-                                     f"{entry.family!r} crease")
-            for edge in edges:
-                angle = entry.fold_angle_deg
-                if angle is None:
-                    angle = file_angle.get(edge, np.nan)
-                    if not np.isfinite(angle):
-                        raise ValueError(f"{where} key 'fold_angle_deg': = \"file\" but the "
-                                         f"pattern gives crease {list(edge)} no "
-                                         "edges_foldAngle")
-                targets[by_edge[edge]] = fraction * angle  # a later entry overrides
+            for hinge, angle in driven.values():
+                targets[hinge] = fraction * angle  # a later entry overrides
         if not targets:
             continue
         hinges = np.array(sorted(targets), dtype=np.int64)

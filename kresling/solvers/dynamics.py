@@ -19,10 +19,13 @@ from kresling._validation import as_float_array, as_integer, as_positive_real, a
 from kresling.solvers._inputs import cholesky_choice, dof_vector
 from kresling.solvers.path import PathResult
 
-__all__ = ["solve_dynamics", "stable_time_step", "TimeHistory", "StableStep", "SCHEMES"]
+__all__ = ["solve_dynamics", "stable_time_step", "time_factor", "TimeHistory", "StableStep",
+           "SCHEMES", "DAMPING_TANGENTS"]
 
 #: The time integration schemes.
 SCHEMES = ("newmark", "hht", "explicit")
+#: The tangent in the stiffness-proportional damping: the start's or each step's start's.
+DAMPING_TANGENTS = ("initial", "current")
 
 
 @dataclass(frozen=True)
@@ -39,8 +42,12 @@ class TimeHistory:
     kinetic, strain, dissipated, work : ndarray, shape (S,)
         Kinetic energy, the model's stored energy, the energy the damping has dissipated
         and the work the loads have done, up to each step [N*mm]: kinetic + strain +
-        dissipated - work stays at its initial value (exactly, for a linear model under
-        the average acceleration scheme; to O((w dt)^2) under the explicit one).
+        dissipated - work - actuation_work stays at its initial value (exactly, for a
+        linear model under the average acceleration scheme; to O((w dt)^2) under the
+        explicit one).
+    actuation_work : ndarray, shape (S,)
+        The work the driven creases' rest angles have done on the sheet up to each step
+        [N*mm] (zeros without an actuation).
     stable_time_step : float
         The explicit scheme's stable step at the start [s]; NaN for the implicit schemes.
     time_step : float
@@ -56,6 +63,7 @@ class TimeHistory:
     strain: np.ndarray
     dissipated: np.ndarray
     work: np.ndarray
+    actuation_work: np.ndarray
     stable_time_step: float = float("nan")
     time_step: float = float("nan")
     scheme: str = "newmark"
@@ -138,24 +146,40 @@ def stable_time_step(model, masses, u=None, *, mass_damping=0.0,
     return StableStep(core.time_step, core.omega_max, core.omega_bound, core.iterations)
 
 
-def _time_function(value):
-    """A load's time function as the core's (times, factors, amplitude, frequency_hz)."""
+def _time_function(value, name="a load's time", table_name="load_table"):
+    """A time function as the core's (times, factors, amplitude, frequency_hz,
+    end_frequency_hz, sweep_time): None (the factor 1), a ``[t, factor]`` table,
+    ``{"harmonic": (amplitude, frequency_hz)}`` or ``{"chirp": (amplitude, f0_hz, f1_hz,
+    sweep_s)}``."""
     empty = np.zeros(0)
     if value is None:
-        return empty, empty, 0.0, 0.0
+        return empty, empty, 0.0, 0.0, 0.0, 0.0
     if isinstance(value, dict):
-        harmonic = value.get("harmonic") if set(value) == {"harmonic"} else None
-        pair = None if harmonic is None else as_float_array("harmonic", harmonic).ravel()
-        if pair is None or pair.shape != (2,) or not np.isfinite(pair).all() or pair[1] <= 0:
-            raise ValueError(f"a load's time = {value!r} is invalid: must be "
-                             "{'harmonic': (amplitude, frequency_hz)} with a frequency > 0")
-        amplitude, frequency = pair.tolist()
-        return empty, empty, float(amplitude), float(frequency)
-    table = as_float_array("load_table", value)
+        kind = next(iter(value)) if len(value) == 1 else None
+        size = {"harmonic": 2, "chirp": 4}.get(kind)
+        numbers = None if size is None else as_float_array(f"{name}: {kind}",
+                                                           value[kind]).ravel()
+        if numbers is None or numbers.shape != (size,) or not np.isfinite(numbers).all() or \
+                (numbers[1:] <= 0).any():
+            raise ValueError(f"{name} = {value!r} is invalid: must be "
+                             "{'harmonic': (amplitude, frequency_hz)} or {'chirp': (amplitude, "
+                             "f0_hz, f1_hz, sweep_s)}, its frequencies and sweep > 0")
+        if kind == "harmonic":
+            return empty, empty, float(numbers[0]), float(numbers[1]), 0.0, 0.0
+        return (empty, empty, *(float(x) for x in numbers))
+    table = as_float_array(table_name, value)
     if table.ndim != 2 or table.shape[1] != 2 or not len(table) or \
             not np.isfinite(table).all() or (np.diff(table[:, 0]) <= 0).any():
-        raise ValueError("load_table must be rows [t, factor] with increasing t")
-    return np.ascontiguousarray(table[:, 0]), np.ascontiguousarray(table[:, 1]), 0.0, 0.0
+        raise ValueError(f"{table_name} must be rows [t, factor] with increasing t")
+    return (np.ascontiguousarray(table[:, 0]), np.ascontiguousarray(table[:, 1]), 0.0, 0.0,
+            0.0, 0.0)
+
+
+def time_factor(time, times) -> np.ndarray:
+    """A time function (as ``loads`` and ``actuation`` of :func:`solve_dynamics` take it)
+    at ``times`` [s], shape (T,), as the integrator evaluates it."""
+    return np.asarray(_core.solvers.time_factor(
+        _time_function(time), np.ascontiguousarray(np.atleast_1d(times), dtype=float)))
 
 
 def _load_terms(model, masses, forces, gravity, load_table, loads):
@@ -166,12 +190,35 @@ def _load_terms(model, masses, forces, gravity, load_table, loads):
         if g.shape != (3,) or not np.isfinite(g).all():
             raise ValueError(f"gravity has shape {g.shape}: must be 3 finite numbers [mm/s^2]")
         load = load + masses * np.tile(g, model.num_nodes)
-    terms = [(load, *_time_function(load_table))]
+    terms = [(load, _time_function(load_table))]
     for i, entry in enumerate(loads or ()):
         if not isinstance(entry, (tuple, list)) or len(entry) != 2:
             raise ValueError(f"loads[{i}] must be a pair (forces, time)")
         terms.append((dof_vector(model, f"loads[{i}] forces", entry[0]),
-                      *_time_function(entry[1])))
+                      _time_function(entry[1])))
+    return terms
+
+
+def _actuation_terms(model, actuation):
+    """The core's rest-angle terms (hinges, start, delta, time function) of ``actuation``."""
+    rest = np.asarray(model.hinge_rest_angle, dtype=float)
+    terms = []
+    for i, entry in enumerate(actuation or ()):
+        if not isinstance(entry, (tuple, list)) or len(entry) != 3:
+            raise ValueError(f"actuation[{i}] must be a triple (hinges, delta, time)")
+        hinges = np.asarray(entry[0]).ravel()
+        if not len(hinges) or not np.issubdtype(hinges.dtype, np.integer) or \
+                hinges.min() < 0 or hinges.max() >= len(rest):
+            raise ValueError(f"actuation[{i}] hinges = {entry[0]!r} is invalid: must be "
+                             f"model hinge indices in [0, {len(rest)})")
+        delta = as_float_array(f"actuation[{i}] delta", entry[1]).ravel()
+        if delta.shape != hinges.shape or not np.isfinite(delta).all():
+            raise ValueError(f"actuation[{i}] delta has shape {delta.shape}: must be one "
+                             f"finite rest-angle change [rad] per hinge ({len(hinges)})")
+        hinges = hinges.astype(np.int64)
+        terms.append((hinges.tolist(), np.ascontiguousarray(rest[hinges]), delta,
+                      _time_function(entry[2], f"actuation[{i}] time",
+                                     f"actuation[{i}] time")))
     return terms
 
 
@@ -193,8 +240,8 @@ _EXPLICIT = _core.solvers.ExplicitOptions()
 def solve_dynamics(model, masses, time_step, duration, *, forces=None, gravity=None,
                    load_table=None, loads=None, scheme=None,
                    hht_alpha=_IMPLICIT.hht_alpha, mass_damping=_IMPLICIT.mass_damping,
-                   stiffness_damping=_IMPLICIT.stiffness_damping,
-                   tolerance=_IMPLICIT.tolerance, max_iterations=_IMPLICIT.max_iterations,
+                   stiffness_damping=_IMPLICIT.stiffness_damping, damping_tangent="initial",
+                   actuation=None, tolerance=_IMPLICIT.tolerance, max_iterations=_IMPLICIT.max_iterations,
                    max_halvings=_IMPLICIT.max_halvings, record_every=_EXPLICIT.record_every,
                    initial=None, initial_velocity=None, stop=None,
                    cholesky="auto") -> TimeHistory:
@@ -218,15 +265,28 @@ def solve_dynamics(model, masses, time_step, duration, *, forces=None, gravity=N
         and constant beyond the table's ends (a step: ``[[0, 1]]``; a ramp:
         ``[[0, 0], [T, 1]]``). Default: 1.
     loads : sequence of (forces, time), optional
-        More loads, each with its own time function: None (1), a ``[t, factor]`` table or
-        ``{"harmonic": (amplitude, frequency_hz)}`` (``amplitude sin(2 pi f t)``).
+        More loads, each with its own time function: None (1), a ``[t, factor]`` table,
+        ``{"harmonic": (amplitude, frequency_hz)}`` (``amplitude sin(2 pi f t)``) or
+        ``{"chirp": (amplitude, f0_hz, f1_hz, sweep_s)}`` (``amplitude sin(phi(t))``, the
+        frequency ``phi'(t) / 2 pi`` going linearly from f0 at t = 0 to f1 at
+        ``sweep_s``, and held at f1 beyond, the phase continuous).
     scheme : {"newmark", "hht", "explicit"}, optional
         Default: "hht" when ``hht_alpha`` is non-zero, else "newmark".
     hht_alpha : float in [-1/3, 0]
         HHT-alpha's parameter: below 0 it damps the modes the step does not resolve.
     mass_damping, stiffness_damping : float
-        Rayleigh damping ``C = mass_damping M + stiffness_damping K0`` [1/s, s], K0 the
-        tangent at the start.
+        Rayleigh damping ``C = mass_damping M + stiffness_damping K`` [1/s, s].
+    damping_tangent : {"initial", "current"}
+        K in the damping: the tangent at the start ("initial": C is constant), or the
+        tangent of the state each step starts from, held over the step ("current", the
+        implicit schemes only).
+    actuation : sequence of (hinges, delta, time), optional
+        Creases driven in time (the implicit schemes only): the rest angle of each of
+        ``hinges`` (model hinge indices, shape (K,)) is its rest angle in ``model`` plus
+        ``factor(t) * delta`` (``delta`` shape (K,) [rad]), ``time`` a time function as
+        ``loads`` take it; a hinge in two entries follows the later. The internal force
+        of each step uses the rest angles at its end; a rest angle leaving [0, 2 pi) (a
+        fold beyond flat) ends the run with a ValueError naming the entry and the time.
     record_every : int
         The explicit scheme keeps every ``record_every``-th step (and the last).
     stop : callable, optional
@@ -245,7 +305,17 @@ def solve_dynamics(model, masses, time_step, duration, *, forces=None, gravity=N
         raise ValueError(f"stop = {stop!r} is invalid: must be None or a callable")
     start = (dof_vector(model, "initial", initial, allow_none=True),
              dof_vector(model, "initial_velocity", initial_velocity, allow_none=True))
+    if damping_tangent not in DAMPING_TANGENTS:
+        raise ValueError(f"damping_tangent = {damping_tangent!r} is invalid: must be one of "
+                         f"{list(DAMPING_TANGENTS)}")
+    schedule = _actuation_terms(model, actuation)
     if scheme == "explicit":
+        if schedule:
+            raise ValueError("actuation: the explicit scheme drives no creases: use scheme "
+                             "'newmark' or 'hht'")
+        if damping_tangent != "initial":
+            raise ValueError(f"damping_tangent = {damping_tangent!r} is invalid with the "
+                             "explicit scheme: must be 'initial'")
         o = _core.solvers.ExplicitOptions()
         o.record_every = as_integer("record_every", record_every, minimum=1)
     else:
@@ -255,6 +325,8 @@ def solve_dynamics(model, masses, time_step, duration, *, forces=None, gravity=N
         o.max_iterations = as_integer("max_iterations", max_iterations, minimum=1)
         o.max_halvings = as_integer("max_halvings", max_halvings, minimum=0)
         o.cholesky = cholesky_choice(cholesky)
+        o.damping_current_tangent = damping_tangent == "current"
+        o.actuation = schedule
     o.time_step = as_positive_real("time_step", time_step)
     o.duration = as_positive_real("duration", duration)
     o.mass_damping = as_real("mass_damping", mass_damping)
@@ -266,5 +338,6 @@ def solve_dynamics(model, masses, time_step, duration, *, forces=None, gravity=N
     stable = core.stable_time_step if scheme == "explicit" else float("nan")
     return TimeHistory(PathResult._from_core(core.path), np.asarray(core.velocity),
                        np.asarray(core.kinetic), np.asarray(core.strain),
-                       np.asarray(core.dissipated), np.asarray(core.work), stable,
+                       np.asarray(core.dissipated), np.asarray(core.work),
+                       np.asarray(core.actuation_work), stable,
                        core.time_step, scheme)

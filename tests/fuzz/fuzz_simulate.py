@@ -129,7 +129,7 @@ KEYS = ["pattern", "material", "laws", "support", "load", "analysis", "vertices"
         "predictor", "density", "mass", "modes", "about", "contact", "distance", "planes",
         "point", "normal", "self", "unit", "scale", "frame", "assignments", "dynamics",
         "scheme", "time_step", "duration", "damping", "gravity", "hht_alpha", "record_every",
-        "time", "ramp_time", "alpha", "beta", "load_factor", "tangent", "preset", "fold_percent",
+        "time", "ramp_time", "alpha", "beta", "damping_tangent", "load_factor", "tangent", "preset", "fold_percent",
         "snap_tolerance", "formats", "sensitivity", "parameters", "stage", "name", "relax",
         "snap", "unknown_key"]
 values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_001, 10**6]),
@@ -144,7 +144,8 @@ values = st.one_of(junk, edgy_floats, st.integers(-3, 8), st.sampled_from([100_0
      [{"nodes": [2], "mass": -1.0}], {"distance": 0.2, "planes": []}, "cm", "unit", "in",
      "origami_simulator", ["stl"], ["obj", "obj"], ["ply"], 0.0, 100.0, 150.0, "dynamic", "newmark", "hht", "explicit", "step", "ramp",
      [[0.0, 0.0], [1e-3, 1.0]], [[1e-3, 0.0], [0.0, 1.0]], [[0.0]], {"harmonic": [1.0, 50.0]},
-     {"harmonic": [1.0, 0.0]}, {"harmonic": [1e300, 1e300]}, {"alpha": 5.0}, {"beta": -1.0},
+     {"harmonic": [1.0, 0.0]}, {"harmonic": [1e300, 1e300]}, {"chirp": [1.0, 5.0, 50.0, 1e-3]},
+     {"chirp": [1.0, 0.0, 5.0, 1.0]}, "current", "initial", {"alpha": 5.0}, {"beta": -1.0},
      {"gamma": 1.0}, [0.0, 0.0, -9810.0], 1e-9, 1e-4, -0.05, -0.5,
      {"load_factor": 1.0, "steps": 2}, {"load_factor": 1e300},
      {"distance": 0.2, "self": True}, {"distance": 5.0, "self": True}, True, "exact",

@@ -45,8 +45,10 @@ VARIANTS = [
     {"load": [{"nodes": [3], "force": [0.0, 0.0, 0.1], "time": "ramp", "ramp_time": 0.1}],
      "mass": [{"node": 3, "mass": 1e-6}],
      "dynamics": {"scheme": "hht", "time_step": 1e-3, "duration": 0.01,
-                  "damping": {"alpha": 1.0}, "gravity": [0.0, 0.0, -9810.0],
-                  "hht_alpha": -0.1},
+                  "damping": {"alpha": 1.0, "beta": 1e-4}, "damping_tangent": "current",
+                  "gravity": [0.0, 0.0, -9810.0], "hht_alpha": -0.1},
+     "actuation": [{"edges": [[0, 2]], "fold_angle_deg": 10.0, "time": "ramp",
+                    "ramp_time": 0.01}],
      "analysis": {"method": "dynamic", "stop": {"node": 3, "axis": "z", "beyond": 1.0}}},
     {**FORCE, "mass": [{"node": 3, "mass": 1e-6}],
      "dynamics": {"scheme": "explicit", "time_step": 1e-5, "duration": 0.01,
@@ -56,7 +58,7 @@ VARIANTS = [
      "analysis": {"method": "fold", "steps": 2, "snap": True,
                   "stop": {"node": 3, "axis": "z", "beyond": 1.0}}},
     {**FORCE, "material": {"preset": "origami_simulator"},
-     "actuation": [{"edges": [[0, 2]], "fold_angle_deg": 10.0}],
+     "actuation": [{"family": "fold", "fold_angle_deg": 10.0}],
      "analysis": {"method": "fold", "stop": {"node": 3, "axis": "z", "beyond": 1.0}}},
 ]
 # The page's heading of each table, and where in the problem the unknown key goes.
@@ -68,6 +70,7 @@ TABLES = {
     "[[load]]": (("load", 0),),
     "[analysis]": (("analysis",), ("analysis", "stop")),
     "[dynamics]": (("dynamics",),),
+    "[[actuation]]": (("actuation", 0),),
 }
 
 

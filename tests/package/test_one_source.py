@@ -165,3 +165,21 @@ def test_the_analysis_tables_defaults_and_bounds_are_the_codes():
                          ("method", METHODS)):
         named = [c.strip('"') for c in rows[key][1].replace(" or ", ", ").split(", ")]
         assert [c.strip('`"') for c in named] == list(choices), key
+
+
+def test_the_damping_tangents_default_is_one_in_the_core_the_library_and_the_file():
+    from pathlib import Path
+
+    from kresling.simulate.problem_keys.dynamics import DAMPING_TANGENTS, Dynamics
+    from kresling.solvers import solve_dynamics
+    from kresling.solvers.dynamics import DAMPING_TANGENTS as LIBRARY_TANGENTS
+
+    assert _core.solvers.TimeIntegrationOptions().damping_current_tangent is False
+    default = inspect.signature(solve_dynamics).parameters["damping_tangent"].default
+    assert default == Dynamics("newmark", 1.0, 1.0).damping_tangent == "initial"
+    assert DAMPING_TANGENTS == LIBRARY_TANGENTS
+    text = (Path(__file__).resolve().parents[2] / "docs" / "simulate.md").read_text()
+    row = next(line for line in text.splitlines() if line.startswith("| `damping_tangent` |"))
+    cells = [c.strip() for c in row.strip("|").split("|")]
+    assert cells[1] == " or ".join(f'`"{t}"`' for t in DAMPING_TANGENTS)
+    assert cells[2] == f'`"{default}"`'

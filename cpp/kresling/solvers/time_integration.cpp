@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -81,6 +82,19 @@ class StepTerms final : public ExtraTerms {
   VectorX a_, v_, c_, kv_;  // add_force's buffers
 };
 
+// The stiffness of the damping at u in `model`: of every DOF into `k` (for C v, through the
+// workspace `full`) and in the assembler's pattern into `values` (its share of the step's
+// tangent); the internal force at u into `force`.
+void damping_stiffness(const model::Model& model, assembly::Workspace& full,
+                       assembly::Assembler& assembler, const VectorX& u, VectorX& force,
+                       assembly::SparseMatrix& k, std::vector<double>& values) {
+  assembly::assemble(model, full, u, force, true);
+  k = full.matrix();
+  assembler.assemble(u, force, true);
+  values.assign(assembler.matrix().valuePtr(),
+                assembler.matrix().valuePtr() + assembler.matrix().nonZeros());
+}
+
 // The damping matrix bk K0 is added in the tangent's first pattern, which changes as
 // contact pairs come and go.
 void refuse_stiffness_damping_with_changing_elements(const model::Model& model,
@@ -113,6 +127,15 @@ void check_options(const TimeIntegrationOptions& o) {
   check_shift(o.shift);
 }
 
+// x (zero when empty) with the supported DOFs at zero.
+VectorX held_at_zero(const model::Model& model, const VectorX& x) {
+  VectorX out = x.size() ? x : VectorX::Zero(model.num_dofs());
+  for (Index i = 0; i < out.size(); ++i) {
+    if (model.fixed()[i]) out[i] = 0.0;
+  }
+  return out;
+}
+
 // Chord iterations a step tries with the factorisation kept from an earlier step before it
 // refactorises (Newton's method).
 constexpr int kChordIterations = 6;
@@ -121,22 +144,43 @@ constexpr int kChordIterations = 6;
 // of dt = increment.size from the accepted state `s_` (displacement, velocity,
 // acceleration), started at Newmark's predictor, with the step's inertia and damping as
 // extra terms; an accepted step moves the state on and records its motion and energies.
+// With the damping of the current tangent, an accepted step's tangent (recorded with it)
+// becomes the damping's stiffness for the next step; with an actuation, the rest angles at
+// the step's end are the model's (TimeControl::model_at) and the step's work of the
+// actuation is added up (time_integration.hpp).
 class NewmarkControl final : public TimeControl {
  public:
   NewmarkControl(const model::Model& model, const TimeLoad& load, const VectorX& masses,
                  const TimeIntegrationOptions& options, StepStart start,
-                 const assembly::SparseMatrix& k0, const std::vector<double>& k0_values)
-      : TimeControl(model, load),
+                 assembly::SparseMatrix k0, std::vector<double> k0_values,
+                 assembly::Workspace* full)
+      : TimeControl(model, load, options.actuation),
+        k_(std::move(k0)),
+        k_values_(std::move(k0_values)),
+        full_(options.damping_current_tangent ? full : nullptr),
         s_(std::move(start)),
         alpha_(options.hht_alpha),
         beta_(0.25 * (1.0 - alpha_) * (1.0 - alpha_)),
         gamma_(0.5 - alpha_),
         masses_(masses),
         terms_(s_, alpha_, beta_, gamma_, masses, options.mass_damping,
-               options.stiffness_damping, k0, k0_values),
+               options.stiffness_damping, k_, k_values_),
         // A model whose elements limit each correction (a barrier) takes Newton's own
         // iterations, which respect the limits, every step.
-        chords_allowed_(!families_limit_steps(model)) {}
+        chords_allowed_(!families_limit_steps(model)),
+        hinge_energy_(driven_.hinge_energy(s_.t, s_.u)) {}
+
+  // The step's state, and (damping of the current tangent) its tangent for the next step.
+  PathStep record(assembly::Assembler& assembler, const VectorX& u, double t,
+                  const NewtonOutcome& outcome, const std::vector<Index>& recorded,
+                  double sign, VectorX& internal) override {
+    PathStep step = PathControl::record(assembler, u, t, outcome, recorded, sign, internal);
+    if (full_) {
+      damping_stiffness(assembler.model(), *full_, assembler, u, next_force_, next_k_,
+                        next_k_values_);
+    }
+    return step;
+  }
 
   // The step's external force (1 + alpha) f(t_{n+1}) - alpha f(t_n) and its predictor.
   void advance(const Increment& increment, const VectorX&, VectorX& u,
@@ -212,6 +256,19 @@ class NewmarkControl final : public TimeControl {
     du_ = u - s_.u;
     dissipated_ += 0.5 * du_.dot(s_.damping + damping_);
     work_ += 0.5 * du_.dot(s_.load + next_load_);
+    if (driven_.driven()) {
+      const double end = driven_.hinge_energy(increment.to, u);
+      actuation_work_ += 0.5 * (driven_.hinge_energy(increment.to, s_.u) - hinge_energy_ +
+                                end - driven_.hinge_energy(s_.t, u));
+      hinge_energy_ = end;
+    }
+    if (full_) {  // the next step's damping stiffness: this step's end tangent
+      k_.swap(next_k_);
+      k_values_.swap(next_k_values_);
+      // The factorisation held is of the damping this step had: chord iterations with it
+      // would converge only linearly, Newton's iterations take over from the start.
+      factorised_dt_ = 0.0;
+    }
     s_.t = increment.to;
     s_.u = u;
     s_.v.swap(v_);
@@ -220,10 +277,16 @@ class NewmarkControl final : public TimeControl {
     s_.damping.swap(damping_);
     s_.load.swap(next_load_);
     record_motion(s_.v, 0.5 * s_.v.dot(masses_.cwiseProduct(s_.v)), step.energy(), dissipated_,
-                  work_);
+                  work_, actuation_work_);
   }
 
  private:
+  assembly::SparseMatrix k_;       // the damping's stiffness (K0, or the step start's tangent)
+  std::vector<double> k_values_;   // the same in the solver's pattern
+  assembly::Workspace* full_;      // every DOF's tangent, for the current tangent's damping
+  assembly::SparseMatrix next_k_;  // the recorded step's tangent, its values and force
+  std::vector<double> next_k_values_;
+  VectorX next_force_;
   StepStart s_;
   double alpha_, beta_, gamma_;
   const VectorX& masses_;
@@ -234,7 +297,8 @@ class NewmarkControl final : public TimeControl {
   VectorX chord_force_, chord_trial_;  // the chord iterations
   double factorised_dt_ = 0;  // the dt whose effective tangent the solver holds (0: none)
   int negative_ = -1;         // the stability that factorisation reported
-  double dissipated_ = 0.0, work_ = 0.0;
+  double dissipated_ = 0.0, work_ = 0.0, actuation_work_ = 0.0;
+  double hinge_energy_;  // the hinges' energy at the step's start (an actuation's work)
 };
 
 }  // namespace
@@ -291,15 +355,16 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
   check_motion_input(model, masses, time_load, u0, v0);
   refuse_stiffness_damping_with_changing_elements(model, options);
   const Index n = model.num_dofs();
+  // The start's rest angles (the model's own without an actuation).
+  DrivenRestAngles driven(model, options.actuation);
+  const model::Model& start_model = driven.model_at(0.0);
   assembly::Assembler assembler(model, assembly::unmasked_dofs(model.fixed()), options.shift,
                                 assembly::Storage::Lower);
+  assembler.rebind(start_model);
   TangentSolver solver(options.newton.cholesky);
   StepStart s;
-  s.u = u0.size() ? u0 : VectorX::Zero(n);
-  s.v = v0.size() ? v0 : VectorX::Zero(n);
-  for (Index i = 0; i < n; ++i) {
-    if (model.fixed()[i]) s.u[i] = s.v[i] = 0.0;
-  }
+  s.u = held_at_zero(model, u0);
+  s.v = held_at_zero(model, v0);
   // Stiffness-proportional damping needs the initial stiffness: of every DOF (for C v) and
   // in the solver's pattern (its share of the tangent). Without it neither is built (a
   // workspace of every DOF and two tangent assemblies: a small model's run pays for them
@@ -307,16 +372,13 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
   const bool stiffness_damped = options.stiffness_damping != 0.0;
   VectorX force;
   assembly::SparseMatrix k0;
-  if (stiffness_damped) {
-    assembly::Workspace full(model, assembly::all_dofs(n), 0.0, assembly::Storage::Lower);
-    assembly::assemble(model, full, s.u, force, true);
-    k0 = full.matrix();
-  }
-  assembler.assemble(s.u, force, stiffness_damped);
   std::vector<double> k0_values;
+  std::optional<assembly::Workspace> full;
   if (stiffness_damped) {
-    k0_values.assign(assembler.matrix().valuePtr(),
-                     assembler.matrix().valuePtr() + assembler.matrix().nonZeros());
+    full.emplace(model, assembly::all_dofs(n), 0.0, assembly::Storage::Lower);
+    damping_stiffness(start_model, *full, assembler, s.u, force, k0, k0_values);
+  } else {
+    assembler.assemble(s.u, force, false);
   }
   s.internal = force;
   s.load = time_load.at(0.0, n);
@@ -331,7 +393,8 @@ TimeHistory integrate_newmark(const model::Model& model, const VectorX& masses,
     if (!model.fixed()[i]) s.a[i] = (s.load[i] - s.damping[i] - s.internal[i]) / masses[i];
   }
   VectorX u = s.u;
-  NewmarkControl control(model, time_load, masses, options, std::move(s), k0, k0_values);
+  NewmarkControl control(model, time_load, masses, options, std::move(s), std::move(k0),
+                         std::move(k0_values), full ? &*full : nullptr);
   HalvedTimeSteps policy(options.time_step, options.duration, options.max_halvings);
   FollowOptions follow;
   follow.newton = options.newton;

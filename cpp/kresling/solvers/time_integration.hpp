@@ -15,15 +15,43 @@
 /// stable, no numerical damping, energy conserving for linear models, its period
 /// lengthened as tan(w_h dt / 2) = w dt / 2. alpha < 0 damps the highest modes.
 /// Rayleigh damping C = alpha_m M + beta_k K0, K0 the tangent at the start (an initial-
-/// stiffness Rayleigh damping: constant, so the dissipation is a quadratic form).
+/// stiffness Rayleigh damping: constant, so the dissipation is a quadratic form), or with
+/// `damping_current_tangent` C_n = alpha_m M + beta_k K_t(u_n): the tangent of the state
+/// each step starts from, held over that step (so Newton's tangent of the step, with
+/// beta_k K_t(u_n) in it, is exact and Newton converges quadratically). The damping force
+/// at a step's start is the one the step before balanced (C_{n-1} v_n), so the energy
+/// balance below holds as with a constant C.
+///
+/// Creases driven in time (`actuation`, a RestAngleSchedule): the hinges' rest angles at
+/// t_{n+1} in the step's internal force, its tangent and its recorded energy. The work the
+/// actuation does on the sheet is the trapezoidal rule in the rest angles,
+///     W_{n+1} - W_n = 1/2 [E(u_n, r_{n+1}) - E(u_n, r_n) + E(u_{n+1}, r_{n+1}) - E(u_{n+1}, r_n)],
+/// E the hinges' energy at displacement u and rest angles r: for a moment affine in the rest
+/// angle (every hinge law's) it is 1/2 (r_{n+1} - r_n) . (dE/dr_n + dE/dr_{n+1}), which the
+/// average acceleration scheme balances exactly for a linear model (as its loads' work).
 
 #include <functional>
 #include <vector>
 
 #include "kresling/model/model.hpp"
 #include "kresling/solvers/path.hpp"
+#include "kresling/solvers/time_function.hpp"
 
 namespace kresling::solvers {
+
+/// Creases driven in time: the rest angle of each hinge of a term at time t is
+/// start + factor(t) delta [rad] (the hinge's own rest angle where no term drives it; a
+/// hinge in two terms: the later's).
+struct RestAngleSchedule {
+  struct Term {
+    std::vector<Index> hinges;  ///< the model's hinge indices
+    VectorX start, delta;       ///< one per hinge [rad]
+    std::function<double(double)> factor;  ///< of t [s]; empty: 1
+  };
+  std::vector<Term> terms;
+
+  bool empty() const { return terms.empty(); }
+};
 
 struct TimeIntegrationOptions {
   NewtonOptions newton;
@@ -32,6 +60,10 @@ struct TimeIntegrationOptions {
   double hht_alpha = 0.0;    ///< in [-1/3, 0]; 0: average acceleration (Newmark)
   double mass_damping = 0.0;       ///< Rayleigh alpha [1/s]
   double stiffness_damping = 0.0;  ///< Rayleigh beta [s]
+  /// The stiffness in the damping: false K0, the tangent at the start; true the tangent at
+  /// each step's start.
+  bool damping_current_tangent = false;
+  RestAngleSchedule actuation;  ///< creases driven in time (none: empty)
   int max_halvings = 10;     ///< a failed step is halved up to this many times
   double shift = 0.0;        ///< diagonal shift of the effective tangent (the mass term
                              ///< makes it definite; 0 keeps the equations exact)
@@ -45,6 +77,9 @@ struct TimeHistory {
   std::vector<double> strain;     ///< the model's stored energy per step [N mm]
   std::vector<double> dissipated; ///< damping's dissipated energy up to each step [N mm]
   std::vector<double> work;       ///< the loads' work up to each step [N mm]
+  /// The work the driven creases' rest angles have done up to each step [N mm] (0 without
+  /// an actuation).
+  std::vector<double> actuation_work;
   /// Explicit integration: the stable step at the start [s] (stable_time_step.hpp) and
   /// the step taken; implicit: 0 and the nominal step.
   double stable_time_step = 0.0;

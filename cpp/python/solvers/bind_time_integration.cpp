@@ -12,6 +12,21 @@ void bind_time_integration(py::module_& m) {
       .def_readwrite("hht_alpha", &TimeIntegrationOptions::hht_alpha)
       .def_readwrite("mass_damping", &TimeIntegrationOptions::mass_damping)
       .def_readwrite("stiffness_damping", &TimeIntegrationOptions::stiffness_damping)
+      .def_readwrite("damping_current_tangent", &TimeIntegrationOptions::damping_current_tangent)
+      // Creases driven in time: terms (hinges, start [rad], delta [rad], time function);
+      // read back as the number of terms.
+      .def_property(
+          "actuation",
+          [](const TimeIntegrationOptions& o) { return o.actuation.terms.size(); },
+          [](TimeIntegrationOptions& o,
+             const std::vector<std::tuple<std::vector<Index>, VectorX, VectorX,
+                                          TimeFunctionTuple>>& terms) {
+            RestAngleSchedule schedule;
+            for (const auto& [hinges, start, delta, time] : terms) {
+              schedule.terms.push_back({hinges, start, delta, time_factor_of(time)});
+            }
+            o.actuation = std::move(schedule);
+          })
       .def_readwrite("max_halvings", &TimeIntegrationOptions::max_halvings);
   py::class_<TimeHistory>(m, "TimeHistory")
       .def_readonly("path", &TimeHistory::path)
@@ -25,8 +40,21 @@ void bind_time_integration(py::module_& m) {
       .def_readonly("strain", &TimeHistory::strain)
       .def_readonly("dissipated", &TimeHistory::dissipated)
       .def_readonly("work", &TimeHistory::work)
+      .def_readonly("actuation_work", &TimeHistory::actuation_work)
       .def_readonly("stable_time_step", &TimeHistory::stable_time_step)
       .def_readonly("time_step", &TimeHistory::time_step);
+
+  m.def(
+      "time_factor",
+      [](const TimeFunctionTuple& f, const VectorX& times) {
+        const auto factor = time_factor_of(f);
+        VectorX out(times.size());
+        for (Index i = 0; i < times.size(); ++i) out[i] = factor ? factor(times[i]) : 1.0;
+        return out;
+      },
+      py::arg("function"), py::arg("times"),
+      "A time function (times, factors, amplitude, frequency_hz, end_frequency_hz, "
+      "sweep_time) at the given times [s]");
 
   bind_integrator<TimeIntegrationOptions>(
       m, "integrate_newmark",

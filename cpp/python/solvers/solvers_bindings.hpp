@@ -89,38 +89,26 @@ py::class_<Options> bind_path_options(py::module_& m, const char* name) {
   return options;
 }
 
-// The load's time function: piecewise linear through the table [t, factor], constant
-// beyond its ends (no table: empty, a factor of 1).
-std::function<double(double)> table_factor(const VectorX& times, const VectorX& factors) {
-  if (times.size() != factors.size()) {
-    throw std::invalid_argument("load table: needs one factor per time");
-  }
-  if (!times.size()) return {};
-  return [times, factors](double t) {
-    if (t <= times[0]) return factors[0];
-    for (Index i = 1; i < times.size(); ++i) {
-      if (t <= times[i]) {
-        const double s = (t - times[i - 1]) / (times[i] - times[i - 1]);
-        return factors[i - 1] + s * (factors[i] - factors[i - 1]);
-      }
-    }
-    return factors[times.size() - 1];
-  };
+// A time function as the tuple (times, factors, amplitude, frequency_hz, end_frequency_hz,
+// sweep_time) (solvers/time_function.hpp).
+using TimeFunctionTuple = std::tuple<VectorX, VectorX, double, double, double, double>;
+std::function<double(double)> time_factor_of(const TimeFunctionTuple& f) {
+  const auto& [times, factors, amplitude, frequency, end_frequency, sweep_time] = f;
+  TimeFunction out;
+  out.times = times;
+  out.factors = factors;
+  out.amplitude = amplitude;
+  out.frequency_hz = frequency;
+  out.end_frequency_hz = end_frequency;
+  out.sweep_time = sweep_time;
+  return time_factor(out);
 }
 
-// A load of terms (forces, times, factors, amplitude, frequency_hz): a harmonic factor
-// amplitude sin(2 pi frequency_hz t) when frequency_hz > 0, else the table's.
-using LoadTerm = std::tuple<VectorX, VectorX, VectorX, double, double>;
+// A load of terms (forces, time function): the forces times the function's factor.
+using LoadTerm = std::tuple<VectorX, TimeFunctionTuple>;
 TimeLoad time_load(const std::vector<LoadTerm>& terms) {
   TimeLoad load;
-  for (const auto& [forces, times, factors, amplitude, frequency] : terms) {
-    if (frequency > 0.0) {
-      const double w = 2.0 * 3.14159265358979323846 * frequency, a = amplitude;
-      load.terms.push_back({forces, [w, a](double t) { return a * std::sin(w * t); }});
-    } else {
-      load.terms.push_back({forces, table_factor(times, factors)});
-    }
-  }
+  for (const auto& [forces, time] : terms) load.terms.push_back({forces, time_factor_of(time)});
   return load;
 }
 

@@ -1,5 +1,6 @@
-"""``[[actuation]]``: creases driven to fold angles, by edge or by family, in stages one
-after another (``method = "fold"``)."""
+"""``[[actuation]]``: creases driven to fold angles, by edge or by family: in stages one
+after another (``method = "fold"``), or in time (``method = "dynamic"``, each entry with its
+``time`` as a load's: docs/dynamics.md, 'Creases driven in time')."""
 
 from __future__ import annotations
 
@@ -7,6 +8,7 @@ from dataclasses import dataclass
 
 from kresling.model.crease_kinds import FOLD_FAMILIES
 from kresling.simulate.problem_keys import ProblemKey
+from kresling.simulate.problem_keys.dynamics import OSCILLATING, read_load_time
 from kresling.simulate.problem_table import integer, number, raw, string
 
 __all__ = ["KEY", "Actuation", "ACTUATION_FAMILIES"]
@@ -27,15 +29,21 @@ class Actuation:
         A whole family (:data:`ACTUATION_FAMILIES`).
     fold_angle_deg : float or None
         Target fold angle [deg], FOLD's convention (+ valley, - mountain, 0 flat); None:
-        the pattern file's ``edges_foldAngle``.
+        the pattern file's ``edges_foldAngle`` (or, with a harmonic or chirp ``time``, no
+        target: the time function's amplitude is the fold angle's swing [deg]).
     stage : int
         Stages fold one after another, 1 first.
+    time : LoadTime or None
+        ``method = "dynamic"``: the factor in time of the way from the rest angle at the
+        start to the target (or, harmonic or chirp, the fold angle's change [deg]); None:
+        a step.
     """
 
     edges: tuple | None
     family: str | None
     fold_angle_deg: float | None
     stage: int = 1
+    time: object = None
 
 
 def read_actuations(entries, context) -> dict:
@@ -67,11 +75,17 @@ def read_actuations(entries, context) -> dict:
             edges = tuple(pairs)
         else:
             family = t.get("family", string, choices=ACTUATION_FAMILIES)
-        if not t.has("fold_angle_deg"):
+        time = read_load_time(t)
+        oscillating = time is not None and time.kind in OSCILLATING
+        if oscillating and t.has("fold_angle_deg"):
+            t.fail("fold_angle_deg", f"applies only to a time that drives to a target: a "
+                                     f"{time.kind} swings the fold angle about its start by "
+                                     "its amplitude [deg]")
+        if not t.has("fold_angle_deg") and not oscillating:
             t.fail("fold_angle_deg", "is missing: must be a target fold angle in [-180, 180] "
                                      "deg, or \"file\" for the pattern's edges_foldAngle")
-        given = t.get("fold_angle_deg", raw)
-        if given == "file":
+        given = t.get("fold_angle_deg", raw, None)
+        if given is None or given == "file":
             angle = None
         else:
             if isinstance(given, str):
@@ -85,15 +99,33 @@ def read_actuations(entries, context) -> dict:
         if not 1 <= stage <= 1000:
             t.fail("stage", f"= {stage!r} is invalid: must be an integer in [1, 1000]")
         t.finish()
-        out.append(Actuation(edges, family, angle, stage))
+        out.append(Actuation(edges, family, angle, stage, time))
     return {"actuations": tuple(out)}
 
 
 def check_actuations(problem):
-    """Creases are driven by a method that drives them."""
-    if problem.actuations and not problem.method.drives_creases:
+    """Creases are driven by a method that drives them: a fold in stages, a motion in time
+    (implicit) by each entry's time function."""
+    if not problem.actuations:
+        return
+    method = problem.analysis.method
+    if not (problem.method.drives_creases or problem.method.in_time):
         raise ValueError(f"{problem.source}: [[actuation]] drives creases only with "
-                         f"[analysis] method = 'fold' (given: {problem.analysis.method!r})")
+                         f"[analysis] method = 'fold' or 'dynamic' (given: {method!r})")
+    for i, entry in enumerate(problem.actuations):
+        where = f"{problem.source}: actuation[{i}]"
+        if problem.method.drives_creases and entry.time is not None:
+            raise ValueError(f"{where} key 'time' applies only with [analysis] method = "
+                             f"'dynamic' (given: {method!r}): a fold drives its creases in "
+                             "stages")
+        if problem.method.in_time and entry.stage != 1:
+            raise ValueError(f"{where} key 'stage' = {entry.stage} applies only with "
+                             f"[analysis] method = 'fold': in a motion each entry's time "
+                             "drives its creases")
+    if problem.method.in_time and problem.dynamics is not None and \
+            problem.dynamics.scheme == "explicit":
+        raise ValueError(f"{problem.source}: [[actuation]] drives creases only with "
+                         "[dynamics] scheme = 'newmark' or 'hht' (given: 'explicit')")
 
 
 KEY = ProblemKey("actuation", rank=80, read=read_actuations, array=True,
