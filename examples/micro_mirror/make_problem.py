@@ -31,6 +31,10 @@ LA = 340e-6                   # the folding length of a beam (its ends are under
 FOLD_DEG = 45.0               # each beam's fold
 MIRROR_DEG = 1.0              # the mirror panel's bend
 V_DC, D31 = 5.0, -100e-12     # bias [V], piezoelectric coefficient [m/V]
+V_PP = 10.0                   # the AC drive's peak-to-peak voltage [V]
+F0, F1, SWEEP = 200.0, 700.0, 0.02   # the drive's linear sweep [Hz], [Hz], [s]
+STEP = 2e-5                   # the time step [s]: ~150 steps per period at 318 Hz
+ALPHA, BETA = 90.0, 1e-7      # Rayleigh damping [1/s], [s]
 
 # -- layers (thickness [m], modulus [Pa], density [kg/m^3]) ------------------------------
 T_SIO2, T_PT_TOP, T_PZT, T_PT_BOTTOM, T_AL = 1e-6, 0.1e-6, 1e-6, 0.15e-6, 1e-6
@@ -170,9 +174,13 @@ def structure():
         target[h] = np.pi * (FOLD_DEG / 180 / (S - 1) + dc_deg / 180 / (S - 1) + 1)
     for h in mirror:
         target[h] = np.pi * (MIRROR_DEG / 180 + 1)
+    pp_deg = np.degrees(D31 * V_PP / T_PZT * E_PZT * L2 * T_PZT * z_pzt / ei * LA)
+    # A dihedral angle theta0 + A y(t) is a fold angle rho0 - A y(t): the sweep's amplitude
+    # per crease in fold angle, for y(t) = -sin(phi(t)).
+    amplitude = pp_deg / 2 / (S - 1)
     return (X[1:], np.array(bars) - 1, np.array(areas), np.array(springs) - 1,
             np.array(stiffness), mass[1:], [s - 1 for s in supported],
-            {h - 1: t for h, t in target.items()})
+            {h - 1: t for h, t in target.items()}, [h - 1 for h in right], amplitude)
 
 
 HEADER = """\
@@ -182,10 +190,14 @@ HEADER = """\
 # and angle convention); lengths are in mm, so the whole structure is under 1.5 mm across.
 #
 # Stage "flat_modes": the three lowest vibration modes of the flat structure. Stage "fold":
-# each beam's four inner creases driven to fold it by 45 deg (the right one a further
-# -0.046 deg by the 5 V bias's piezoelectric moment) and the mirror panel bent by 1 deg,
-# with the nodes' weights ramped on over the same 20 increments. Stage "folded_modes":
-# the modes about the folded state, with its rest angles and stress.
+# each beam's four inner creases told to fold it by 45 deg (11.25 deg each; the right
+# beam's 1.03 deg more each, the 5 V bias's piezoelectric moment), the mirror panel bent by
+# 1 deg, with the nodes' weights ramped on over the same 20 increments; the segments'
+# undriven diagonal creases hold the driven ones back. Stage "folded_modes": the modes about
+# the folded state, with its rest angles and stress. Stage "chirp": the right beam's creases
+# driven by the 10 V peak-to-peak AC voltage, +-1.03 deg of rest angle each, swept linearly
+# from 200 to 700 Hz in 20 ms (Rayleigh damping, the weights held): the mirror's centre
+# moves by up to 20 um peak to peak and the mirror twists by up to 0.15 deg (4_chirp/).
 #
 # Made by make_problem.py (edit that, not this file).
 """
@@ -198,7 +210,8 @@ def _rows(values, per=4, fmt="{:.17g}"):
 
 
 def problem_text() -> str:
-    X, bars, areas, springs, k, mass, supported, target = structure()
+    X, bars, areas, springs, k, mass, supported, target, right_creases, amplitude = \
+        structure()
     mm, n_per_mm2, mm2, nmm, t = 1e3, 1e-6, 1e6, 1e3, 1e-3
     out = [HEADER]
     out.append("[pattern]\nvertices = " + _rows(X * mm, per=2) + "\npanels = []\n")
@@ -227,6 +240,17 @@ def problem_text() -> str:
                "target_tolerance_deg = 10.0\n"
                f"actuation = [{actuation}]\nload = [{gravity}]\n")
     out.append('[[stage]]\nname = "folded_modes"\nmethod = "modes"\nmodes = 3\n')
+    # The right beam's creases driven by the AC half of the voltage, swept from F0 to F1 Hz
+    # (Sim-FAST's phase 90 deg cosine is this sine turned over: the same sweep), under the
+    # weights the fold left on, with Rayleigh damping.
+    swing = ", ".join(
+        f"{{ edges = [[{springs[h][1]}, {springs[h][2]}]], "
+        f"time = {{ chirp = [{amplitude:.17g}, {F0:g}, {F1:g}, {SWEEP:g}] }} }}"
+        for h in right_creases)
+    out.append('[[stage]]\nname = "chirp"\nmethod = "dynamic"\n'
+               f'dynamics = {{ scheme = "newmark", time_step = {STEP:g}, duration = {SWEEP:g}, '
+               f"damping = {{ alpha = {ALPHA:g}, beta = {BETA:g} }} }}\n"
+               f"actuation = [{swing}]\n")
     return "\n".join(out)
 
 
