@@ -25,7 +25,8 @@ from kresling.arm.analyses import DEFAULT_PRETENSION, ArmSolver, ArmState
 from kresling.arm.structure import Arm, all_configurations, build_arm, parse_configuration
 from kresling.solvers.sensitivity import Parameter, equilibrium_sensitivity, with_parameter
 
-__all__ = ["tip_jacobian", "ReachResult", "reach", "reach_with", "REACH_TOLERANCE"]
+__all__ = ["tip_jacobian", "ReachResult", "reach", "reach_with", "reach_candidates",
+           "reach_answer", "Solution", "REACH_TOLERANCE"]
 
 #: A target counts as reached when the tip is within this distance of it [mm].
 REACH_TOLERANCE = 1e-3
@@ -260,6 +261,46 @@ def reach(target, *, configurations=None, prefer="travel", tolerance=REACH_TOLER
     target = _target(target)
     if prefer not in ("travel", "stiffness"):
         raise ValueError(f"prefer = {show(prefer)} is invalid: must be 'travel' or 'stiffness'")
+    target, solutions, candidates = reach_candidates(
+        target, configurations=configurations, tolerance=tolerance, pretension=pretension,
+        gravity=gravity, measured_mass=measured_mass, **arm_options)
+    tolerance = as_positive_real("tolerance", tolerance)
+
+    def key(c):
+        s = solutions[c]
+        missed = s.error > tolerance
+        return (missed, s.error if missed else 0.0,
+                s.travel if prefer == "travel" else s.compliance)
+    return reach_answer(target, min(solutions, key=key), solutions, candidates, tolerance,
+                        gravity)
+
+
+@dataclass(frozen=True)
+class Solution:
+    """One configuration's answer in :func:`reach_candidates`: ``pulls`` (3,) [mm], its
+    equilibrium ``state``, the tip's ``error`` [mm], the tendon ``travel`` (sum of the
+    pulls) [mm] and the tip's largest ``compliance`` [mm/N]."""
+
+    pulls: np.ndarray
+    state: ArmState = field(repr=False)
+    error: float
+    travel: float
+    compliance: float
+
+
+def reach_candidates(target, *, configurations=None, tolerance=REACH_TOLERANCE,
+                     pretension: float = DEFAULT_PRETENSION, gravity: str | None = None,
+                     measured_mass: bool = False, **arm_options) -> tuple:
+    """Every configuration's nearest approach to ``target`` (parameters as :func:`reach`):
+    ``(target (3,), {configuration: Solution}, candidates)``, ``candidates`` as
+    :attr:`ReachResult.candidates`.
+
+    Raises
+    ------
+    ValueError
+        Naming the parameter; or when no configuration could be pulled toward the target.
+    """
+    target = _target(target)
     tolerance = as_positive_real("tolerance", tolerance)
     if gravity is not None:
         from kresling.arm.gravity import ORIENTATIONS
@@ -277,7 +318,7 @@ def reach(target, *, configurations=None, prefer="travel", tolerance=REACH_TOLER
                              "configurations such as ['101', '111']")
         configurations = ["".join(str(s) for s in parse_configuration(c, modules))
                           for c in given]
-    best, candidates = None, {}
+    solutions, candidates = {}, {}
     # Pulling only shortens an arm: one whose built tip is nearer the base than the target
     # cannot reach it (unless none is taller: then the tallest gives the nearest point). A
     # module's two cells stand at their state's height.
@@ -302,22 +343,26 @@ def reach(target, *, configurations=None, prefer="travel", tolerance=REACH_TOLER
         error = float(np.linalg.norm(state.tip_position - target))
         compliance = float(np.linalg.eigvalsh(_symmetric(solver.tip_compliance(state)))
                            .max())
-        travel = float(pulls.sum())
-        candidates[configuration] = (error, travel, compliance)
-        key = (error > tolerance, error if error > tolerance else 0.0,
-               travel if prefer == "travel" else compliance)
-        if best is None or key < best[0]:
-            best = (key, configuration, pulls, state, error)
-    if best is None:
+        solutions[configuration] = Solution(pulls, state, error, float(pulls.sum()), compliance)
+        candidates[configuration] = (error, float(pulls.sum()), compliance)
+    if not solutions:
         raise ValueError(f"target {target.tolist()}: no configuration could be pulled toward it "
                          f"({candidates})")
-    _, configuration, pulls, state, error = best
-    reached = error <= tolerance
+    return target, solutions, candidates
+
+
+def reach_answer(target, configuration: str, solutions: dict, candidates: dict,
+                 tolerance: float = REACH_TOLERANCE, gravity: str | None = None) -> ReachResult:
+    """The :class:`ReachResult` of ``configuration`` among :func:`reach_candidates`'
+    ``solutions``."""
+    s = solutions[configuration]
+    reached = s.error <= tolerance
     message = ("" if reached else
-               f"target out of reach: the nearest point reached is {error:.3g} mm away "
-               f"({state.tip_position.round(3).tolist()}, configuration {configuration})")
-    return ReachResult(target, configuration, pulls, state.tip_position.copy(), error, reached,
-                       state, candidates, message, gravity)
+               f"target out of reach: the nearest point reached is {s.error:.3g} mm away "
+               f"({s.state.tip_position.round(3).tolist()}, configuration {configuration})")
+    return ReachResult(np.asarray(target, dtype=float), configuration, s.pulls,
+                       s.state.tip_position.copy(), s.error, reached, s.state, candidates,
+                       message, gravity)
 
 
 def _symmetric(C):
