@@ -90,6 +90,9 @@ class SwitchStep:
     attempts : tuple of str
         What failed before this means succeeded.
     state : ArmState
+    positions : ndarray (N, 3)
+        Every node where the arm rests after the switch [mm] (the arms of all
+        configurations have the same nodes).
     """
 
     module: int
@@ -102,6 +105,7 @@ class SwitchStep:
     tip_position: np.ndarray
     attempts: tuple
     state: ArmState = field(repr=False)
+    positions: np.ndarray = field(repr=False)
 
 
 @dataclass(frozen=True)
@@ -273,7 +277,8 @@ def switch_module(configuration: str, module: int, *, means=("tendon", "crease")
             continue
         return SwitchStep(module, to, m, configuration, state.configuration, actuation,
                           state.module_length.copy(), state.tip_position.copy(),
-                          tuple(attempts), state)
+                          tuple(attempts), state,
+                          arm.model.nodes + state.displacement.reshape(-1, 3))
     raise ValueError(f"module {module} of {configuration} cannot be switched to {after} on the "
                      f"model: " + "; ".join(attempts))
 

@@ -328,11 +328,11 @@ def _run_reach(args) -> int:
     if args.prefer == "switches" and args.start is None:
         raise ValueError("prefer: --prefer switches counts the switches from where the arm "
                          "rests; add --from CONFIG")
-    if args.start is not None:
-        return _run_plan(args)
     if args.gravity is not None and (args.closed_loop or args.view):
         raise ValueError("gravity: --closed-loop and --view run the arm without its weight; "
                          "leave --gravity out")
+    if args.start is not None:
+        return _run_plan(args)
     prefer = args.prefer or "travel"
     if args.pulls is not None:
         raise ValueError("pulls: --reach finds the pulls; leave --pulls out")
@@ -393,9 +393,13 @@ def _run_plan(args) -> int:
     """--reach with --from: the switches from the arm's configuration, then the move."""
     from kresling.arm.plan import plan_reach
 
-    if args.closed_loop or args.view:
+    if args.closed_loop:
         raise ValueError("from: --from plans the switches and the move; leave --closed-loop "
-                         "and --view out")
+                         "out")
+    if args.view:
+        from kresling.view import check_writable
+
+        check_writable(args.view)   # before the planning, not after
     if args.pulls is not None:
         raise ValueError("pulls: --reach finds the pulls; leave --pulls out")
     start = args.start
@@ -421,6 +425,10 @@ def _run_plan(args) -> int:
     out.update(start_configuration=start, switches=plan.switches,
                plan=[_step_summary(s) for s in plan.steps],
                passed_over=plan.passed_over)
+    if args.view:
+        _write_reach_view(args, r, plan)
+        print(f"wrote {args.view} (interactive page)", file=sys.stderr if args.json
+              else sys.stdout)
     if args.json:
         print_json(out)
         return 0 if r.reached else 1
@@ -468,9 +476,10 @@ def _step_summary(step) -> dict:
     return out
 
 
-def _write_reach_view(args, result) -> None:
+def _write_reach_view(args, result, plan=None) -> None:
     """The arm pulled from its pretensioned state to ``result``'s pulls in 20 increments,
-    beside the tip's distance from the target."""
+    beside the tip's distance from the target; with a ``plan``, first where the arm rests
+    in its start configuration and after each switch."""
     from types import SimpleNamespace
 
     import numpy as np
@@ -482,14 +491,28 @@ def _write_reach_view(args, result) -> None:
     solver = ArmSolver(arm, steps=20, max_bisections=0)
     base = solver.pretension(_pretension(args))
     states, _, _ = solver.ramp(base, base.pulls + result.tendon_displacements)
-    states = [base, *states]
-    fraction = np.linspace(0.0, 1.0, len(states))
-    miss = [float(np.linalg.norm(s.tip_position - result.target)) for s in states]
-    path = SimpleNamespace(displacement=np.array([s.displacement for s in states]),
-                           load_factor=fraction, completed=True, message="")
-    page = view_path(arm, path, curve=(fraction, miss, "fraction of the pulls",
+    # Every configuration's arm has the same nodes: a state of another is drawn on this
+    # one's by its positions.
+    rests = []
+    if plan is not None:
+        start = build_arm(plan.start_configuration, **_arm_options(args))
+        rests = [start.model.nodes.ravel()]
+        rests += [step.positions.ravel() for step in plan.steps[:-1]]
+    moving = [base, *states]
+    displacement = [x - arm.model.nodes.ravel() for x in rests] + \
+        [s.displacement for s in moving]
+    tips = [x.reshape(-1, 3)[arm.tip_node] for x in rests] + [s.tip_position for s in moving]
+    fraction = np.concatenate([np.arange(-len(rests), 0.0),
+                               np.linspace(0.0, 1.0, len(moving))])
+    miss = [float(np.linalg.norm(t - result.target)) for t in tips]
+    path = SimpleNamespace(displacement=np.array(displacement), load_factor=fraction,
+                           completed=True, message="")
+    steps = "" if plan is None else \
+        f"from {plan.start_configuration} by {plan.switches} switches, then "
+    page = view_path(arm, path, curve=(fraction, miss, "switches (< 0), then fraction of "
+                                       "the pulls" if rests else "fraction of the pulls",
                                        "tip's distance from the target [mm]"),
-                     title=f"configuration {result.configuration} reaching "
+                     title=f"{steps}configuration {result.configuration} reaching "
                            f"{np.round(result.target, 2).tolist()} mm "
                            f"(pulls {np.round(result.tendon_displacements, 3).tolist()} mm)")
     write_html(page, args.view)
@@ -645,7 +668,10 @@ def _print_text(out: dict) -> None:
             ("tip_height_built", out["tip_height_built"], "mm", "sum of the modules' heights"),
             ("tension", _fmt(out["tension"]), "N", "tendons 1, 2, 3"),
             ("module_length", _fmt(out["module_length"]), "mm", "guide centre to guide centre")]
-    for key, unit, meaning in (("tip_displacement", "mm", "caused by the tip load"),
+    for key, unit, meaning in (("gravity", "", "the arm carries its own weight, tendon lengths "
+                                "held"),
+                               ("tip_position_without_gravity", "mm", "the tip before"),
+                               ("tip_displacement", "mm", "caused by the tip load"),
                                ("snap_tendon_force", "N", "sum of the tensions at the snap"),
                                ("snapped_module", "", "0-based from the base"),
                                ("snap_pull", "mm", "tendon pull at the snap"),

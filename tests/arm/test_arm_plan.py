@@ -119,10 +119,13 @@ def test_bad_plans_are_refused(kwargs, message):
         plan_reach([0.0, 0.0, 100.0], **kwargs)
 
 
-def test_the_command_line_plan_and_its_check(capsys):
+def test_the_command_line_plan_and_its_check(capsys, tmp_path):
     target = [f"{v:.9g}" for v in _pulled_tip("10")]
-    assert main(["arm", "--reach", *target, "--from", "00", "--json"]) == 0
+    page = tmp_path / "plan.html"
+    assert main(["arm", "--reach", *target, "--from", "00", "--json", "--view",
+                 str(page)]) == 0
     out = json.loads(capsys.readouterr().out)
+    assert "from 00 by 1 switches, then configuration 10 reaching" in page.read_text()
     assert out["start_configuration"] == "00" and out["switches"] == 1
     switch, move = out["plan"]
     assert switch["kind"] == "switch" and switch["means"] == "crease"
