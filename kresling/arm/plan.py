@@ -386,5 +386,13 @@ def plan_reach(target, start_configuration: str, *, prefer: str = "switches",
         move = MoveStep(configuration, result.tendon_displacements.copy(),
                         result.tip_position.copy())
         return ReachPlan(result, start_configuration, [*steps, move], len(steps), passed_over)
-    raise ValueError(f"target {target.tolist()}: no configuration the arm reaches it in can be "
-                     f"switched to from {start_configuration} on the model ({passed_over})")
+    # None could be switched to: the start's own nearest approach (it needs no switch).
+    _, own, more = reach_candidates(
+        target, configurations=[start_configuration], tolerance=tolerance,
+        pretension=pretension, gravity=gravity, measured_mass=measured_mass,
+        modules=len(start_configuration), **arm_options)
+    result = reach_answer(target, start_configuration, own, {**candidates, **more}, tolerance,
+                          gravity)
+    move = MoveStep(start_configuration, result.tendon_displacements.copy(),
+                    result.tip_position.copy())
+    return ReachPlan(result, start_configuration, [move], 0, passed_over)

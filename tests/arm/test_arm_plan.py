@@ -108,6 +108,17 @@ def test_a_configuration_whose_switch_fails_is_passed_over():
     assert _states_from_heights(step.state, build_arm("11").design) == "10"
 
 
+def test_where_no_configuration_can_be_switched_to_the_arm_stays():
+    target = _pulled_tip("01")
+    plan = plan_reach(target, "11", configurations=["01"])
+    assert "01" in plan.passed_over
+    assert plan.configuration == "11" and plan.switches == 0 and not plan.reach.reached
+    assert len(plan.steps) == 1 and isinstance(plan.steps[0], MoveStep)
+    # Its nearest point is the reach of "11" alone.
+    alone = reach(target, configurations=["11"], modules=2)
+    assert plan.reach.error == pytest.approx(alone.error, abs=1e-6)
+
+
 @pytest.mark.parametrize("kwargs, message", [
     (dict(start_configuration="0a"), "start_configuration = '0a' is invalid"),
     (dict(start_configuration=11), "start_configuration = 11 is invalid"),
