@@ -8,9 +8,11 @@ the tip to a target. An arm resting in another configuration has to get there fi
 - **switch** steps, one module each. A module is contracted by the tendons where pulling can
   snap it (:func:`~kresling.arm.analyses.pull_until_snap`, all three tendons together: a
   single tendon bends the arm so far that, without panel contact, the panels pass through
-  each other): a pull snaps one of its cells, the tendons slacken as that cell drops and
-  the other re-extends; a second pull snaps the other cell, which stays contracted only if
-  the tendons hold it further down before they are let out (:data:`HOLD_PULLS`). Tendons
+  each other), each pull until the arm loses equilibrium, then the tendons let out: a
+  first pull snaps one of its cells (the tendons slacken as that cell drops and the other
+  re-extends); a second takes the other cell just below the height at which it counts as
+  contracted, from where, let out, it re-extends; a third pulls it past its unstable
+  equilibrium, where the tendons go slack, and it stays (up to :data:`MAX_PULLS`). Tendons
   cannot extend a module; its creases can (:func:`~kresling.arm.creases.crease_switch`,
   one crease group after another, :data:`CREASE_GROUPS`), and they are tried for a
   contraction where the tendons fail. After every switch the tendons are let out and the
@@ -49,17 +51,16 @@ from kresling.arm.reach import REACH_TOLERANCE, ReachResult, reach_answer, reach
 from kresling.arm.structure import build_arm, parse_configuration
 
 __all__ = ["SwitchStep", "MoveStep", "ReachPlan", "plan_reach", "switch_module",
-           "COMPARABLE", "HOLD_PULLS", "CREASE_GROUPS", "PREFERENCES"]
+           "COMPARABLE", "MAX_PULLS", "CREASE_GROUPS", "PREFERENCES"]
 
 #: How the configuration is chosen (see the module).
 PREFERENCES = ("travel", "stiffness", "switches")
 #: Travels (or compliances) within this fraction of the best, or within 1 mm of travel,
 #: count as comparable: among them the fewest switches win.
 COMPARABLE = 0.2
-#: After a module's second cell snaps under the tendons, how much further the tendons
-#: hold it down before they are let out [fractions of a cell's travel Le - Lc], tried in
-#: turn: just past its snap the cell re-extends when released.
-HOLD_PULLS = (0.25, 0.5, 0.75)
+#: Pulls of all tendons (each until the arm loses equilibrium, then let out) a contraction
+#: may take: a pull snaps one cell, and the second cell needs two (see the module).
+MAX_PULLS = 4
 #: The crease groups a crease switch drives, in turn (all folds first: the least change).
 CREASE_GROUPS = ("fold", "valley", "polygon")
 
@@ -79,9 +80,9 @@ class SwitchStep:
     configuration_before, configuration_after : str
         The latter read from the cells' heights where the arm rests, tendons let out.
     actuation : dict
-        Tendons: ``pulls`` (each pull's three tendon pulls at its snap [mm]),
-        ``tension_sums`` [N], ``hold_pull`` (the further pull of every tendon that holds the
-        second cell down [mm]). Creases: ``group``, ``creases``, ``change_deg`` (the rest
+        Tendons: ``pulls`` (each pull's three tendon pulls [mm] at the last equilibrium
+        before the arm lost it, or, where another module snapped, before the tendons were
+        let out) and ``tension_sums`` there [N]. Creases: ``group``, ``creases``, ``change_deg`` (the rest
         angles' change at the snap), ``moment`` [N mm], ``work`` [N mm].
     module_length : ndarray (m,)
         Each module's length where the arm rests after the switch [mm].
@@ -160,35 +161,38 @@ def _measured(solver: ArmSolver, state: ArmState, let_out: float) -> ArmState:
     return rest
 
 
-def _tendon_contraction(arm, module, solver, let_out):
-    """Pull all tendons until a cell of ``module`` snaps, twice, hold the second cell down
-    and let the tendons out: (state, actuation), or _Failed."""
-    travel = arm.design.Le - arm.design.Lc
+def _tendon_contraction(arm, module, solver, let_out, goal):
+    """Pull all tendons until the arm loses equilibrium, let them out and read where it
+    rests; again from the pulled state, up to :data:`MAX_PULLS` times, until ``module``
+    rests contracted: (state, actuation), or _Failed. Where another module snaps first,
+    the tendons are let out from the last equilibrium of that pull with ``module``
+    contracted and every other module in its state, if there is one."""
     state, pulls, tensions = solver.built(), [], []
-    for _ in range(2):
+
+    def done(rest):
+        return rest, {"pulls": pulls, "tension_sums": tensions}
+    for _ in range(MAX_PULLS):
         r = pull_until_snap(arm, start=state, solver=solver)
-        if not r.snapped:
+        if not r.snapped or r.after is None:
             raise _Failed(f"pulling all tendons snaps no module ({r.message})")
-        if r.snapped_module != module:
-            raise _Failed(f"pulling all tendons snaps module {r.snapped_module}, not {module}")
         pulls.append(r.pulls.tolist())
         tensions.append(r.tension_sum)
+        rest = _measured(solver, r.after, let_out)
+        if rest.configuration == goal:
+            return done(rest)
+        others = [j for j in range(len(goal)) if j != module and rest.configuration[j] != goal[j]]
+        if others:
+            held = [s for s in r.states if s.configuration == goal]
+            if held:
+                pulls[-1], tensions[-1] = held[-1].pulls.tolist(), held[-1].tension_sum
+                rest = _measured(solver, held[-1], let_out)
+                if rest.configuration == goal:
+                    return done(rest)
+            raise _Failed(f"pulling all tendons snaps module {others[0]} before module "
+                          f"{module} rests contracted")
         state = r.after
-        if state.configuration[module] == "0":
-            break
-    held = state
-    for fraction in (0.0, *HOLD_PULLS):
-        if fraction:
-            states, _, _ = solver.ramp(held, held.pulls + fraction * travel)
-            if not states:
-                continue
-            state = states[-1]
-        rest = _measured(solver, state, let_out)
-        if rest.configuration[module] == "0":
-            return rest, {"pulls": pulls, "tension_sums": tensions,
-                          "hold_pull": float(fraction * travel)}
-    raise _Failed(f"the module's second cell re-extends when the tendons are let out, held "
-                  f"down by up to {HOLD_PULLS[-1] * travel:.3g} mm past its snap")
+    raise _Failed(f"after {MAX_PULLS} pulls of all tendons, each let out, module {module} "
+                  f"rests {rest.configuration[module]!r}")
 
 
 def _crease_switch(arm, module, start, to, let_out):
@@ -265,7 +269,7 @@ def switch_module(configuration: str, module: int, *, means=("tendon", "crease")
                                   f"{start.configuration}, not {configuration}")
                 state, actuation = _crease_switch(arm, module, start, to, let_out)
             elif m == "tendon":
-                state, actuation = _tendon_contraction(arm, module, solver, let_out)
+                state, actuation = _tendon_contraction(arm, module, solver, let_out, after)
             else:
                 state, actuation = _crease_switch(arm, module, None, to, let_out)
             state = _measured(solver, state, let_out)

@@ -435,9 +435,9 @@ def _run_plan(args) -> int:
     rows = []
     for k, s in enumerate(out["plan"], 1):
         if s["kind"] == "switch":
-            how = (f"pull all tendons {len(s['tendon_pulls'])}x to "
-                   + ", ".join(f"{p[0]:.3g}" for p in s["tendon_pulls"])
-                   + f" mm, hold {s['hold_pull']:.3g} mm" if s["means"] == "tendon" else
+            how = (f"pull all tendons {len(s['tendon_pulls'])}x, to "
+                   + ", ".join(f"{max(p):.3g}" for p in s["tendon_pulls"]) + " mm"
+                   if s["means"] == "tendon" else
                    f"{s['crease_group']} creases by {s['crease_change_deg']:.4g} deg")
             rows.append((k, f"switch module {s['module']} to {s['to']}", s["means"], how,
                          s["configuration_after"]))
@@ -467,8 +467,7 @@ def _step_summary(step) -> dict:
            "tip_position": step.tip_position.tolist(), "attempts": list(step.attempts)}
     a = step.actuation
     if step.means == "tendon":
-        out.update(tendon_pulls=a["pulls"], tension_sums=a["tension_sums"],
-                   hold_pull=a["hold_pull"])
+        out.update(tendon_pulls=a["pulls"], tension_sums=a["tension_sums"])
     else:
         out.update(crease_group=a["group"], creases=a["creases"],
                    crease_change_deg=a["change_deg"], crease_moment=a["moment"],

@@ -55,15 +55,19 @@ def test_a_plan_extends_a_module_by_its_creases_then_moves():
     assert np.linalg.norm(again - target) < REACH_TOLERANCE
 
 
-def test_tendons_contract_the_tip_module_and_hold_its_second_cell():
-    step = switch_module("01", 1)
+@pytest.mark.parametrize("configuration, module, after", [("01", 1, "00"), ("10", 0, "00")])
+def test_tendons_contract_a_module_cell_by_cell(configuration, module, after):
+    step = switch_module(configuration, module)
     assert step.means == "tendon" and step.to == "contracted"
-    assert _states_from_heights(step.state, build_arm("01").design) == "00"
-    # Two pulls of all tendons (one cell each), the second cell held down before release.
-    assert len(step.actuation["pulls"]) == 2 and step.actuation["hold_pull"] > 0
+    assert _states_from_heights(step.state, build_arm(configuration).design) == after
+    # A pull per cell, and a third past the second cell's unstable equilibrium, where the
+    # tendons go slack (measured: 0.01 N against about 8 N at the first cell's snap).
+    pulls, tensions = step.actuation["pulls"], step.actuation["tension_sums"]
+    assert len(pulls) == 3 and tensions[0] > 7.0 and tensions[-1] < 0.1
+    assert np.all(np.diff([max(p) for p in pulls]) > 0)   # each pull goes further
     # Resting contracted, the module made extended stands taller than one built contracted
-    # (two cells of ~15 mm), but below two cells' (Le + Lc) / 2.
-    assert 30.0 < step.module_length[1] < 70.0
+    # (two cells of 15 mm), but below two cells' (Le + Lc) / 2.
+    assert 30.0 < step.module_length[module] < 70.0
 
 
 def test_a_module_that_pulling_does_not_snap_first_is_refused_with_the_reasons():
@@ -71,7 +75,7 @@ def test_a_module_that_pulling_does_not_snap_first_is_refused_with_the_reasons()
     # contract a module: neither means contracts the base module alone.
     with pytest.raises(ValueError, match=r"module 0 of 11 cannot be switched to 01") as error:
         switch_module("11", 0)
-    assert "snaps module 1, not 0" in str(error.value) and "crease" in str(error.value)
+    assert "snaps module 1 before module 0" in str(error.value) and "crease" in str(error.value)
 
 
 def test_the_fewest_switches_and_comparable_travels():
@@ -100,7 +104,7 @@ def test_a_configuration_whose_switch_fails_is_passed_over():
     plan = plan_reach(target, "11", configurations=["01", "10"])
     # Only "01" reaches the target, but it needs the base module contracted, which fails on
     # the model: the plan goes to the nearest point "10" reaches, and says so.
-    assert "01" in plan.passed_over and "snaps module 1, not 0" in plan.passed_over["01"]
+    assert "01" in plan.passed_over and "snaps module 1 before module 0" in plan.passed_over["01"]
     assert plan.configuration == "10" and plan.switches == 1
     assert not plan.reach.reached and "out of reach" in plan.reach.message
     step = plan.steps[0]
