@@ -18,7 +18,8 @@ the tip to a target. An arm resting in another configuration has to get there fi
   contraction where the tendons fail. After every switch the tendons are let out and the
   configuration is read from the cells' heights where the arm comes to rest: the step
   counts only if the intended module changed and no other one did; otherwise the next
-  means, then another module first, is tried.
+  means, then another module first, is tried. Only the modules that differ from the target
+  configuration are switched (no detour through other configurations).
 - one **move** step: the pulls after the pretension that :func:`reach` finds for the
   configuration reached (the arm of that configuration as built, pretensioned).
 
