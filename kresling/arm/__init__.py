@@ -10,7 +10,9 @@ guide (:mod:`kresling.arm.structure`). On it, in the C++ core:
 - :func:`pull_until_snap`: pull tendons (all, or some) until a module snaps: which one, the
   tendon force and the configuration it lands in;
 - :func:`reach`: the configuration and tendon pulls that bring the tip to a point, on the
-  exact tip Jacobian (:func:`tip_jacobian`).
+  exact tip Jacobian (:func:`tip_jacobian`), with or without the arm's own weight;
+- :func:`plan_reach`: from the configuration the arm rests in, the module switches (tendon
+  pulls, or crease actuation where tendons cannot), each checked on the model, then the move.
 
 Submodules beyond these: ``capacity`` (the load-capacity table of every configuration),
 ``actuation`` (tendon commands in, the structure's shape out, beside the constant-curvature
@@ -23,6 +25,7 @@ from kresling.arm.analyses import (CAPACITY_DIRECTIONS, DEFAULT_PRETENSION, ArmS
                                    CapacityResult, EquilibriumNotReached, SnapResult,
                                    TipLoadResult, arm_summary, load_capacity, pull_until_snap,
                                    tip_load)
+from kresling.arm.plan import ReachPlan, plan_reach
 from kresling.arm.reach import ReachResult, reach, tip_jacobian
 from kresling.arm.structure import (THESIS_DESIGN, Arm, ArmParameters, all_configurations,
                                     build_arm, parse_configuration)
@@ -31,4 +34,5 @@ __all__ = ["Arm", "ArmParameters", "build_arm", "parse_configuration", "all_conf
            "THESIS_DESIGN", "ArmSolver", "ArmState", "EquilibriumNotReached",
            "DEFAULT_PRETENSION", "TipLoadResult",
            "tip_load", "SnapResult", "pull_until_snap", "CapacityResult", "load_capacity",
-           "CAPACITY_DIRECTIONS", "arm_summary", "reach", "ReachResult", "tip_jacobian"]
+           "CAPACITY_DIRECTIONS", "arm_summary", "reach", "ReachResult", "tip_jacobian", "plan_reach",
+           "ReachPlan"]

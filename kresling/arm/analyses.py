@@ -169,6 +169,19 @@ class ArmSolver:
         """The built, unloaded arm."""
         return ArmState.from_core(self._core.built())
 
+    def state_at(self, displacement, pulls, load=None) -> ArmState:
+        """The arm at ``displacement`` (3 N,) [mm] with ``pulls`` (3,) [mm] (negative: let
+        out) and tip ``load`` (3,) [N]: its tensions, heights, cell states and energy there,
+        whether or not it is an equilibrium (e.g. one under loads the arm solver does not
+        carry, such as the arm's weight)."""
+        u = as_float_array("displacement", displacement).ravel()
+        if u.shape != (self.arm.model.num_dofs,) or not np.isfinite(u).all():
+            raise ValueError(f"displacement = {show(displacement)} is invalid: must be "
+                             f"{self.arm.model.num_dofs} finite displacements [mm]")
+        return ArmState.from_core(self._core.evaluate(u, _pulls("pulls", pulls,
+                                                                allow_negative=True),
+                                                      _vector("load", load)))
+
     def ramp(self, start: ArmState, pulls=None, load=None) -> list:
         """Equilibria from ``start`` to ``pulls``/``load`` (straight ramp; a pull may be
         negative here: the tendon let out beyond its slack length). Returns ``(states,

@@ -20,12 +20,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from kresling._validation import as_float_array, as_positive_real, show
+from kresling._validation import as_choice, as_float_array, as_positive_real, show
 from kresling.arm.analyses import DEFAULT_PRETENSION, ArmSolver, ArmState
 from kresling.arm.structure import Arm, all_configurations, build_arm, parse_configuration
 from kresling.solvers.sensitivity import Parameter, equilibrium_sensitivity, with_parameter
 
-__all__ = ["tip_jacobian", "ReachResult", "reach", "reach_with", "REACH_TOLERANCE"]
+__all__ = ["tip_jacobian", "ReachResult", "reach", "reach_with", "reach_candidates",
+           "reach_answer", "Solution", "REACH_TOLERANCE"]
 
 #: A target counts as reached when the tip is within this distance of it [mm].
 REACH_TOLERANCE = 1e-3
@@ -80,6 +81,8 @@ class ReachResult:
         Per configuration tried: ``(error [mm], tendon travel [mm], largest tip compliance
         [mm/N])``, or the reason it failed.
     message : str
+    gravity : str or None
+        The orientation the arm was weighed in (None: without its weight).
     """
 
     target: np.ndarray
@@ -91,16 +94,17 @@ class ReachResult:
     state: ArmState = field(repr=False)
     candidates: dict = field(repr=False)
     message: str = ""
+    gravity: str | None = None
 
 
-def _solve_pulls(arm, solver, base, target, start):
+def _solve_pulls(follow, jacobian, target, start):
     """Gauss-Newton on the tip's miss over the pulls >= 0, from ``start``: (pulls, state,
-    evaluations). Each step is the linearised problem's bounded least squares (no pull
-    below zero); it is halved until the arm follows it to an equilibrium nearer
-    the target (a step that makes a module snap is one it does not follow), and the search
-    ends where no step gets nearer: at the target, or at the nearest point this
-    configuration reaches. Each equilibrium is followed from the last one (the arm is
-    elastic: where it rests at given pulls does not depend on the way there)."""
+    evaluations). ``follow(state, P)`` is the arm's equilibrium at pulls ``P`` reached from
+    ``state`` (None where the arm does not follow: a snap), ``follow(None, 0)`` the one
+    without pulls; ``jacobian(state)`` its tip Jacobian. Each step is the linearised
+    problem's bounded least squares (no pull below zero); it is halved until the arm
+    follows it to an equilibrium nearer the target, and the search ends where no step gets
+    nearer: at the target, or at the nearest point this configuration reaches."""
     from scipy.optimize import lsq_linear
 
     evaluations = 0
@@ -108,11 +112,12 @@ def _solve_pulls(arm, solver, base, target, start):
     def move(state, P):
         nonlocal evaluations
         evaluations += 1
-        states, completed, _ = solver.ramp(state, base.pulls + P)
-        return states[-1] if completed else None
+        return follow(state, P)
 
     P = np.zeros(3)
-    state = base
+    state = move(None, P)
+    if state is None:
+        raise ValueError("the pretensioned arm finds no equilibrium under the loads")
     trial = np.maximum(start, 0.0)
     for _ in range(8):  # the start, shortened toward no pull until the arm follows it
         moved = move(state, trial)
@@ -125,7 +130,7 @@ def _solve_pulls(arm, solver, base, target, start):
         if miss <= 0.01 * REACH_TOLERANCE:
             break
         # The linearised miss's least squares over the steps that keep every pull >= 0.
-        step = lsq_linear(tip_jacobian(arm, state), target - state.tip_position,
+        step = lsq_linear(jacobian(state), target - state.tip_position,
                           bounds=(-P, np.inf)).x
         scale, accepted = 1.0, False
         while scale >= 1.0 / 64:
@@ -150,29 +155,76 @@ def search_solver(arm: Arm) -> ArmSolver:
 
 
 def reach_with(arm: Arm, target, *, pretension: float = DEFAULT_PRETENSION,
-               start=None, solver: ArmSolver | None = None) -> tuple:
+               start=None, solver: ArmSolver | None = None, gravity: str | None = None,
+               measured_mass: bool = False) -> tuple:
     """The pulls (after the pretension) that bring ``arm``'s tip nearest to ``target``, in
     its own configuration, without a module snapping on the way: ``(pulls (3,), state,
     arm's equilibria computed)``.
 
+    With ``gravity`` (an orientation of :data:`kresling.arm.gravity.ORIENTATIONS`) the arm
+    carries its own weight: each equilibrium is the pretensioned arm pulled by ``P``
+    without its weight, then weighed with the tendons' lengths held
+    (:func:`kresling.arm.gravity.gravity_sag`; the arm is elastic, so this is where it
+    rests with both), and the tip Jacobian is the loaded arm's (the weight is a dead load:
+    the tangent at the loaded equilibrium). ``measured_mass`` scales the masses to the
+    thesis's weighed skeleton.
+
     Raises
     ------
     ValueError
-        For a bad target; EquilibriumNotReached where the arm cannot be pretensioned.
+        For a bad target or orientation; EquilibriumNotReached where the arm cannot be
+        pretensioned.
     """
     target = _target(target)
     solver = search_solver(arm) if solver is None else solver
     base = solver.pretension(pretension)
+    follow = _follower(arm, solver, base, gravity, measured_mass)
     if start is None:
         # The linearised answer from the pretensioned arm: often within a few per cent.
-        miss = target - base.tip_position
-        start = np.linalg.lstsq(tip_jacobian(arm, base), miss, rcond=None)[0]
+        state = follow(None, np.zeros(3))
+        if state is None:
+            raise ValueError(f"gravity = {gravity!r}: the pretensioned arm does not carry its "
+                             "own weight")
+        miss = target - state.tip_position
+        start = np.linalg.lstsq(tip_jacobian(arm, state), miss, rcond=None)[0]
     start = np.maximum(as_float_array("start", start), 0.0)
-    return _solve_pulls(arm, solver, base, target, start)
+    return _solve_pulls(follow, lambda state: tip_jacobian(arm, state), target, start)
+
+
+def _follower(arm, solver, base, gravity, measured_mass):
+    """``follow(state, P)`` of :func:`_solve_pulls`: without gravity, the ramp from the last
+    equilibrium; with it, the ramp from the pretensioned arm, then its weight."""
+    if gravity is None:
+        def follow(state, P):
+            if state is None:
+                return base
+            states, completed, _ = solver.ramp(state, base.pulls + P)
+            return states[-1] if completed else None
+        return follow
+
+    from kresling.arm.gravity import ORIENTATIONS, gravity_sag
+    from kresling.arm.masses import arm_masses
+
+    gravity = as_choice("gravity", gravity, tuple(ORIENTATIONS))
+    masses = arm_masses(arm, measured_skeleton=bool(measured_mass))
+
+    def weighed(state, P):
+        unloaded = base
+        if np.any(P):
+            states, completed, _ = solver.ramp(base, base.pulls + P)
+            if not completed:
+                return None
+            unloaded = states[-1]
+        sag = gravity_sag(arm, gravity, start=unloaded, masses=masses, solver=solver)
+        if not sag.completed:
+            return None
+        return solver.state_at(sag.displacement, unloaded.pulls)
+    return weighed
 
 
 def reach(target, *, configurations=None, prefer="travel", tolerance=REACH_TOLERANCE,
-          pretension: float = DEFAULT_PRETENSION, **arm_options) -> ReachResult:
+          pretension: float = DEFAULT_PRETENSION, gravity: str | None = None,
+          measured_mass: bool = False, **arm_options) -> ReachResult:
     """The configuration and tendon pulls that bring the structural arm's tip to ``target``.
 
     Parameters
@@ -187,7 +239,15 @@ def reach(target, *, configurations=None, prefer="travel", tolerance=REACH_TOLER
     tolerance : float
         Reached when the tip is within this distance [mm].
     pretension : float
-        Each tendon's tension before the pulls [N] (as ``tip_load``).
+        Each tendon's tension before the pulls [N] (as ``tip_load``), set before the arm's
+        weight acts.
+    gravity : {"hanging", "standing", "horizontal"}, optional
+        The arm carries its own weight in this orientation
+        (:data:`kresling.arm.gravity.ORIENTATIONS`): the tip is the loaded arm's and the
+        search runs on the loaded arm's tip Jacobian (see :func:`reach_with`). Default:
+        no gravity.
+    measured_mass : bool, default False
+        With ``gravity``: the masses scaled to the thesis's weighed skeleton.
     **arm_options
         ``modules`` (default 3), and :func:`~kresling.arm.build_arm`'s ``n``, ``lam``,
         ``Lc``, ``R``, ``parameters``.
@@ -201,7 +261,51 @@ def reach(target, *, configurations=None, prefer="travel", tolerance=REACH_TOLER
     target = _target(target)
     if prefer not in ("travel", "stiffness"):
         raise ValueError(f"prefer = {show(prefer)} is invalid: must be 'travel' or 'stiffness'")
+    target, solutions, candidates = reach_candidates(
+        target, configurations=configurations, tolerance=tolerance, pretension=pretension,
+        gravity=gravity, measured_mass=measured_mass, **arm_options)
     tolerance = as_positive_real("tolerance", tolerance)
+
+    def key(c):
+        s = solutions[c]
+        missed = s.error > tolerance
+        return (missed, s.error if missed else 0.0,
+                s.travel if prefer == "travel" else s.compliance)
+    return reach_answer(target, min(solutions, key=key), solutions, candidates, tolerance,
+                        gravity)
+
+
+@dataclass(frozen=True)
+class Solution:
+    """One configuration's answer in :func:`reach_candidates`: ``pulls`` (3,) [mm], its
+    equilibrium ``state``, the tip's ``error`` [mm], the tendon ``travel`` (sum of the
+    pulls) [mm] and the tip's largest ``compliance`` [mm/N]."""
+
+    pulls: np.ndarray
+    state: ArmState = field(repr=False)
+    error: float
+    travel: float
+    compliance: float
+
+
+def reach_candidates(target, *, configurations=None, tolerance=REACH_TOLERANCE,
+                     pretension: float = DEFAULT_PRETENSION, gravity: str | None = None,
+                     measured_mass: bool = False, **arm_options) -> tuple:
+    """Every configuration's nearest approach to ``target`` (parameters as :func:`reach`):
+    ``(target (3,), {configuration: Solution}, candidates)``, ``candidates`` as
+    :attr:`ReachResult.candidates`.
+
+    Raises
+    ------
+    ValueError
+        Naming the parameter; or when no configuration could be pulled toward the target.
+    """
+    target = _target(target)
+    tolerance = as_positive_real("tolerance", tolerance)
+    if gravity is not None:
+        from kresling.arm.gravity import ORIENTATIONS
+
+        gravity = as_choice("gravity", gravity, tuple(ORIENTATIONS))
     modules = arm_options.pop("modules", 3)
     if configurations is None:
         configurations = all_configurations(modules)
@@ -214,7 +318,7 @@ def reach(target, *, configurations=None, prefer="travel", tolerance=REACH_TOLER
                              "configurations such as ['101', '111']")
         configurations = ["".join(str(s) for s in parse_configuration(c, modules))
                           for c in given]
-    best, candidates = None, {}
+    solutions, candidates = {}, {}
     # Pulling only shortens an arm: one whose built tip is nearer the base than the target
     # cannot reach it (unless none is taller: then the tallest gives the nearest point). A
     # module's two cells stand at their state's height.
@@ -231,29 +335,34 @@ def reach(target, *, configurations=None, prefer="travel", tolerance=REACH_TOLER
         arm = build_arm(configuration, **arm_options)
         try:
             solver = search_solver(arm)
-            pulls, state, _ = reach_with(arm, target, pretension=pretension, solver=solver)
+            pulls, state, _ = reach_with(arm, target, pretension=pretension, solver=solver,
+                                         gravity=gravity, measured_mass=measured_mass)
         except (ValueError, RuntimeError) as error:
             candidates[configuration] = str(error)
             continue
         error = float(np.linalg.norm(state.tip_position - target))
         compliance = float(np.linalg.eigvalsh(_symmetric(solver.tip_compliance(state)))
                            .max())
-        travel = float(pulls.sum())
-        candidates[configuration] = (error, travel, compliance)
-        key = (error > tolerance, error if error > tolerance else 0.0,
-               travel if prefer == "travel" else compliance)
-        if best is None or key < best[0]:
-            best = (key, configuration, pulls, state, error)
-    if best is None:
+        solutions[configuration] = Solution(pulls, state, error, float(pulls.sum()), compliance)
+        candidates[configuration] = (error, float(pulls.sum()), compliance)
+    if not solutions:
         raise ValueError(f"target {target.tolist()}: no configuration could be pulled toward it "
                          f"({candidates})")
-    _, configuration, pulls, state, error = best
-    reached = error <= tolerance
+    return target, solutions, candidates
+
+
+def reach_answer(target, configuration: str, solutions: dict, candidates: dict,
+                 tolerance: float = REACH_TOLERANCE, gravity: str | None = None) -> ReachResult:
+    """The :class:`ReachResult` of ``configuration`` among :func:`reach_candidates`'
+    ``solutions``."""
+    s = solutions[configuration]
+    reached = s.error <= tolerance
     message = ("" if reached else
-               f"target out of reach: the nearest point reached is {error:.3g} mm away "
-               f"({state.tip_position.round(3).tolist()}, configuration {configuration})")
-    return ReachResult(target, configuration, pulls, state.tip_position.copy(), error, reached,
-                       state, candidates, message)
+               f"target out of reach: the nearest point reached is {s.error:.3g} mm away "
+               f"({s.state.tip_position.round(3).tolist()}, configuration {configuration})")
+    return ReachResult(np.asarray(target, dtype=float), configuration, s.pulls,
+                       s.state.tip_position.copy(), s.error, reached, s.state, candidates,
+                       message, gravity)
 
 
 def _symmetric(C):

@@ -103,9 +103,17 @@ def register(subparsers) -> None:
     parser.add_argument("--seed", type=int, default=0,
                         help="with --closed-loop: the draw of the true arm and the camera, an "
                              "integer index (default 0)")
-    parser.add_argument("--prefer", choices=("travel", "stiffness"), default="travel",
+    parser.add_argument("--prefer", choices=("travel", "stiffness", "switches"),
                         help="with --reach, among the configurations that reach the target: "
-                             "the smallest tendon travel (default) or the stiffest tip")
+                             "the smallest tendon travel (default), the stiffest tip, or "
+                             "(with --from) the fewest module switches; with --from, travel "
+                             "and stiffness take the fewest switches among the configurations "
+                             "within 20 %% of the best")
+    parser.add_argument("--from", dest="start", metavar="CONFIG",
+                        help="with --reach: the configuration the arm rests in (0 contracted / "
+                             "1 extended per module from the base); print the plan: the module "
+                             "switches (tendon pulls, or crease actuation where the tendons "
+                             "cannot), each checked on the model, then the move")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.set_defaults(func=run_reporting)
 
@@ -139,6 +147,8 @@ def run(args) -> int:
                               build_arm, load_capacity, pull_until_snap, tip_load)
     from kresling.manipulator import TendonDrive
 
+    # With --reach or --pulls, --gravity weighs that arm instead of tabulating every one.
+    weighed = args.gravity is not None and (args.reach is not None or args.pulls is not None)
     chosen = [name for name, on in (("--reach", args.reach is not None),
                                     ("--tip-load", args.tip_load is not None),
                                     ("--pull-all", args.pull_all),
@@ -147,11 +157,14 @@ def run(args) -> int:
                                     ("--table", args.table), ("--protocol", args.protocol),
                                     ("--table5", args.table5), ("--switching", args.switching),
                                     ("--crease-switch", args.crease_switch is not None),
-                                    ("--gravity", args.gravity is not None),
+                                    ("--gravity", args.gravity is not None and not weighed),
                                     ("--modes", args.modes is not None))
               if on]
     if len(chosen) > 1:
         raise ValueError(f"{' and '.join(chosen)}: give one analysis at a time")
+    if args.start is not None and args.reach is None:
+        raise ValueError("from: --from CONFIG plans the way to a target from where the arm "
+                         "rests; add --reach X Y Z")
     if args.plot and not (args.table or args.protocol):
         raise ValueError("plot: --plot draws the load-capacity table or the protocol; add "
                          "--table or --protocol")
@@ -160,7 +173,7 @@ def run(args) -> int:
     if args.measured_mass and args.gravity is None and args.modes is None:
         raise ValueError("measured-mass: --measured-mass weighs the arm for --gravity or "
                          "--modes; add one of them")
-    if args.gravity is not None:
+    if args.gravity is not None and not weighed:
         return arm_dynamics.run_gravity(args, _arm_options(args), _pretension(args))
     if args.modes is not None:
         return arm_dynamics.run_modes(args, _arm_options(args), _pretension(args))
@@ -191,7 +204,15 @@ def run(args) -> int:
         pretension = DEFAULT_PRETENSION if args.pretension is None else args.pretension
         load = [0.0, 0.0, 0.0] if args.tip_load is None else args.tip_load
         r = tip_load(arm, load, pulls=args.pulls, pretension=pretension, solver=solver)
-        out.update(arm_summary(arm, r.state))
+        state = r.state
+        if args.gravity is not None:
+            if args.tip_load is not None:
+                raise ValueError("gravity: --gravity weighs the arm under --pulls or --reach; "
+                                 "leave --tip-load out")
+            state, weighed_ok, weighed_message = _weigh(args, arm, solver, r.state)
+            out.update(gravity=args.gravity, measured_mass=args.measured_mass,
+                       tip_position_without_gravity=r.state.tip_position.tolist())
+        out.update(arm_summary(arm, state))
         out.update(tip_load=list(load), pretension=pretension,
                    tip_displacement=r.tip_displacement.tolist(),
                    tip_position_unloaded=r.unloaded.tip_position.tolist(),
@@ -199,6 +220,8 @@ def run(args) -> int:
                    lost_between=list(r.lost_between) if r.lost_between else None,
                    snapped_module=r.snapped_module if r.lost_between else None)
         completed, message = r.completed, r.message
+        if args.gravity is not None and completed and not weighed_ok:
+            completed, message = False, f"the arm does not carry its weight: {weighed_message}"
     elif args.pull_all or args.pull_tendon:
         if args.pretension is not None:
             raise ValueError("pretension: pulling starts from the built arm (its tendons just "
@@ -249,6 +272,17 @@ def run(args) -> int:
     return 0
 
 
+def _weigh(args, arm, solver, state):
+    """``state`` of ``arm`` with the arm's own weight added, tendon lengths held:
+    ``(state, completed, message)``."""
+    from kresling.arm.gravity import gravity_sag
+    from kresling.arm.masses import arm_masses
+
+    sag = gravity_sag(arm, args.gravity, start=state, solver=solver,
+                      masses=arm_masses(arm, measured_skeleton=args.measured_mass))
+    return solver.state_at(sag.displacement, state.pulls), sag.completed, sag.message
+
+
 def _run_table(args) -> int:
     from kresling.arm import DEFAULT_PRETENSION
     from kresling.arm.capacity import capacity_rows, load_capacity_table
@@ -291,6 +325,15 @@ def _run_table(args) -> int:
 def _run_reach(args) -> int:
     from kresling.arm.reach import reach
 
+    if args.prefer == "switches" and args.start is None:
+        raise ValueError("prefer: --prefer switches counts the switches from where the arm "
+                         "rests; add --from CONFIG")
+    if args.gravity is not None and (args.closed_loop or args.view):
+        raise ValueError("gravity: --closed-loop and --view run the arm without its weight; "
+                         "leave --gravity out")
+    if args.start is not None:
+        return _run_plan(args)
+    prefer = args.prefer or "travel"
     if args.pulls is not None:
         raise ValueError("pulls: --reach finds the pulls; leave --pulls out")
     if args.view:
@@ -303,16 +346,10 @@ def _run_reach(args) -> int:
     modules = 3 if args.modules is None else args.modules
     if args.closed_loop:
         return _run_closed_loop(args, configurations)
-    r = reach(args.reach, configurations=configurations, prefer=args.prefer,
-              pretension=_pretension(args), modules=modules, **_arm_options(args))
-    out = {"target": r.target.tolist(), "configuration": r.configuration,
-           "tendon_displacements": r.tendon_displacements.tolist(),
-           "tip_position": r.tip_position.tolist(), "error": r.error, "reached": r.reached,
-           "prefer": args.prefer, "pretension": _pretension(args),
-           "candidates": {c: (dict(zip(("error", "travel", "compliance"), v))
-                              if isinstance(v, tuple) else {"failed": v})
-                          for c, v in r.candidates.items()},
-           "message": r.message}
+    r = reach(args.reach, configurations=configurations, prefer=prefer,
+              pretension=_pretension(args), modules=modules, gravity=args.gravity,
+              measured_mass=args.measured_mass, **_arm_options(args))
+    out = _reach_summary(args, r, prefer)
     if args.view:
         _write_reach_view(args, r)
         print(f"wrote {args.view} (interactive page)", file=sys.stderr if args.json
@@ -324,14 +361,124 @@ def _run_reach(args) -> int:
                      *((f"pull {t + 1}", p, "mm") for t, p in enumerate(r.tendon_displacements)),
                      *((f"tip {a}", v, "mm") for a, v in zip("xyz", r.tip_position)),
                      ("error", r.error, "mm")], ("quantity", "value", "unit"))
-        print(f"\n{'reached' if r.reached else r.message}; check: kresling arm --config "
-              f"{r.configuration} --pulls " + " ".join(f"{p:.9g}" for p in r.tendon_displacements))
+        _print_reach(args, r)
     return 0 if r.reached else 1
 
 
-def _write_reach_view(args, result) -> None:
+def _reach_summary(args, r, prefer) -> dict:
+    """The JSON fields of a reach (their meaning is the same with and without a plan)."""
+    return {"target": r.target.tolist(), "configuration": r.configuration,
+            "tendon_displacements": r.tendon_displacements.tolist(),
+            "tip_position": r.tip_position.tolist(), "error": r.error, "reached": r.reached,
+            "prefer": prefer, "pretension": _pretension(args), "gravity": args.gravity,
+            "candidates": {c: (dict(zip(("error", "travel", "compliance"), v))
+                               if isinstance(v, tuple) else {"failed": v})
+                           for c, v in r.candidates.items()},
+            "message": r.message}
+
+
+def _print_reach(args, r) -> None:
+    print_table([("configuration", r.configuration, ""),
+                 *((f"pull {t + 1}", p, "mm") for t, p in enumerate(r.tendon_displacements)),
+                 *((f"tip {a}", v, "mm") for a, v in zip("xyz", r.tip_position)),
+                 ("error", r.error, "mm")], ("quantity", "value", "unit"))
+    weight = "" if args.gravity is None else f" --gravity {args.gravity}" + \
+        (" --measured-mass" if args.measured_mass else "")
+    print(f"\n{'reached' if r.reached else r.message}; check: kresling arm --config "
+          f"{r.configuration} --pulls " + " ".join(f"{p:.9g}" for p in r.tendon_displacements)
+          + weight)
+
+
+def _run_plan(args) -> int:
+    """--reach with --from: the switches from the arm's configuration, then the move."""
+    from kresling.arm.plan import plan_reach
+
+    if args.closed_loop:
+        raise ValueError("from: --from plans the switches and the move; leave --closed-loop "
+                         "out")
+    if args.view:
+        from kresling.view import check_writable
+
+        check_writable(args.view)   # before the planning, not after
+    if args.pulls is not None:
+        raise ValueError("pulls: --reach finds the pulls; leave --pulls out")
+    start = args.start
+    if not (isinstance(start, str) and start and set(start) <= {"0", "1"}):
+        raise ValueError(f"from = {start!r} is invalid: must be the configuration the arm "
+                         "rests in, one 0 (contracted) or 1 (extended) per module from the "
+                         "base, e.g. 000")
+    if args.modules is not None and args.modules != len(start):
+        raise ValueError(f"from = {start!r} is invalid: has {len(start)} modules, --modules "
+                         f"{args.modules}")
+    configurations = None
+    if args.config is not None:
+        if len(args.config) != len(start):
+            raise ValueError(f"config = {args.config!r} is invalid: --from {start} has "
+                             f"{len(start)} modules")
+        configurations = [_configuration(args)]
+    prefer = args.prefer or "switches"
+    plan = plan_reach(args.reach, start, prefer=prefer, configurations=configurations,
+                      pretension=_pretension(args), gravity=args.gravity,
+                      measured_mass=args.measured_mass, **_arm_options(args))
+    r = plan.reach
+    out = _reach_summary(args, r, prefer)
+    out.update(start_configuration=start, switches=plan.switches,
+               plan=[_step_summary(s) for s in plan.steps],
+               passed_over=plan.passed_over)
+    if args.view:
+        _write_reach_view(args, r, plan)
+        print(f"wrote {args.view} (interactive page)", file=sys.stderr if args.json
+              else sys.stdout)
+    if args.json:
+        print_json(out)
+        return 0 if r.reached else 1
+    rows = []
+    for k, s in enumerate(out["plan"], 1):
+        if s["kind"] == "switch":
+            how = (f"pull all tendons {len(s['tendon_pulls'])}x, to "
+                   + ", ".join(f"{max(p):.3g}" for p in s["tendon_pulls"]) + " mm"
+                   if s["means"] == "tendon" else
+                   f"{s['crease_group']} creases by {s['crease_change_deg']:.4g} deg")
+            rows.append((k, f"switch module {s['module']} to {s['to']}", s["means"], how,
+                         s["configuration_after"]))
+        else:
+            rows.append((k, "move", "tendon",
+                         "pulls " + _fmt(s["tendon_displacements"]) + " mm",
+                         s["configuration"]))
+    print(f"from {start}, {plan.switches} switch{'es' if plan.switches != 1 else ''}:")
+    print_table(rows, ("step", "what", "means", "actuation", "configuration after"))
+    print()
+    _print_reach(args, r)
+    return 0 if r.reached else 1
+
+
+def _step_summary(step) -> dict:
+    """One plan step as JSON."""
+    from kresling.arm.plan import SwitchStep
+
+    if not isinstance(step, SwitchStep):
+        return {"kind": "move", "configuration": step.configuration,
+                "tendon_displacements": step.tendon_displacements.tolist(),
+                "tip_position": step.tip_position.tolist()}
+    out = {"kind": "switch", "module": step.module, "to": step.to, "means": step.means,
+           "configuration_before": step.configuration_before,
+           "configuration_after": step.configuration_after,
+           "module_length": step.module_length.tolist(),
+           "tip_position": step.tip_position.tolist(), "attempts": list(step.attempts)}
+    a = step.actuation
+    if step.means == "tendon":
+        out.update(tendon_pulls=a["pulls"], tension_sums=a["tension_sums"])
+    else:
+        out.update(crease_group=a["group"], creases=a["creases"],
+                   crease_change_deg=a["change_deg"], crease_moment=a["moment"],
+                   crease_work=a["work"])
+    return out
+
+
+def _write_reach_view(args, result, plan=None) -> None:
     """The arm pulled from its pretensioned state to ``result``'s pulls in 20 increments,
-    beside the tip's distance from the target."""
+    beside the tip's distance from the target; with a ``plan``, first where the arm rests
+    in its start configuration and after each switch."""
     from types import SimpleNamespace
 
     import numpy as np
@@ -343,14 +490,28 @@ def _write_reach_view(args, result) -> None:
     solver = ArmSolver(arm, steps=20, max_bisections=0)
     base = solver.pretension(_pretension(args))
     states, _, _ = solver.ramp(base, base.pulls + result.tendon_displacements)
-    states = [base, *states]
-    fraction = np.linspace(0.0, 1.0, len(states))
-    miss = [float(np.linalg.norm(s.tip_position - result.target)) for s in states]
-    path = SimpleNamespace(displacement=np.array([s.displacement for s in states]),
-                           load_factor=fraction, completed=True, message="")
-    page = view_path(arm, path, curve=(fraction, miss, "fraction of the pulls",
+    # Every configuration's arm has the same nodes: a state of another is drawn on this
+    # one's by its positions.
+    rests = []
+    if plan is not None:
+        start = build_arm(plan.start_configuration, **_arm_options(args))
+        rests = [start.model.nodes.ravel()]
+        rests += [step.positions.ravel() for step in plan.steps[:-1]]
+    moving = [base, *states]
+    displacement = [x - arm.model.nodes.ravel() for x in rests] + \
+        [s.displacement for s in moving]
+    tips = [x.reshape(-1, 3)[arm.tip_node] for x in rests] + [s.tip_position for s in moving]
+    fraction = np.concatenate([np.arange(-len(rests), 0.0),
+                               np.linspace(0.0, 1.0, len(moving))])
+    miss = [float(np.linalg.norm(t - result.target)) for t in tips]
+    path = SimpleNamespace(displacement=np.array(displacement), load_factor=fraction,
+                           completed=True, message="")
+    steps = "" if plan is None else \
+        f"from {plan.start_configuration} by {plan.switches} switches, then "
+    page = view_path(arm, path, curve=(fraction, miss, "switches (< 0), then fraction of "
+                                       "the pulls" if rests else "fraction of the pulls",
                                        "tip's distance from the target [mm]"),
-                     title=f"configuration {result.configuration} reaching "
+                     title=f"{steps}configuration {result.configuration} reaching "
                            f"{np.round(result.target, 2).tolist()} mm "
                            f"(pulls {np.round(result.tendon_displacements, 3).tolist()} mm)")
     write_html(page, args.view)
@@ -506,7 +667,10 @@ def _print_text(out: dict) -> None:
             ("tip_height_built", out["tip_height_built"], "mm", "sum of the modules' heights"),
             ("tension", _fmt(out["tension"]), "N", "tendons 1, 2, 3"),
             ("module_length", _fmt(out["module_length"]), "mm", "guide centre to guide centre")]
-    for key, unit, meaning in (("tip_displacement", "mm", "caused by the tip load"),
+    for key, unit, meaning in (("gravity", "", "the arm carries its own weight, tendon lengths "
+                                "held"),
+                               ("tip_position_without_gravity", "mm", "the tip before"),
+                               ("tip_displacement", "mm", "caused by the tip load"),
                                ("snap_tendon_force", "N", "sum of the tensions at the snap"),
                                ("snapped_module", "", "0-based from the base"),
                                ("snap_pull", "mm", "tendon pull at the snap"),

@@ -15,7 +15,9 @@ def add_arguments(analysis, parser) -> None:
                                "weight, at rest and at step 10 of the section 4.3 protocol, "
                                "tendon lengths held; the orientation (default hanging: the "
                                "thesis's arm hangs from its base and bends in a vertical "
-                               "plane; standing; horizontal, tendon 1 on top)")
+                               "plane; standing; horizontal, tendon 1 on top); with --pulls or "
+                               "--reach, that arm carries its own weight instead (its tendon "
+                               "lengths held)")
     analysis.add_argument("--modes", type=int, nargs="?", const=6, metavar="K",
                           help="the K lowest natural frequencies (a count, default 6) of "
                                "every configuration, pretensioned")
