@@ -57,6 +57,8 @@ VARIANTS = [
     {**FORCE, "actuation": [{"edges": [[0, 2]], "fold_angle_deg": 10.0}],
      "analysis": {"method": "fold", "steps": 2, "snap": True,
                   "stop": {"node": 3, "axis": "z", "beyond": 1.0}}},
+    {**FORCE, "bar": [{"nodes": [0, 2], "modulus": 1.0, "area": 1.0}],
+     "hinge": [{"nodes": [0, 2, 1, 3], "stiffness": 1.0}]},
     {**FORCE, "material": {"preset": "origami_simulator"},
      "actuation": [{"family": "fold", "fold_angle_deg": 10.0}],
      "analysis": {"method": "fold", "stop": {"node": 3, "axis": "z", "beyond": 1.0}}},
@@ -71,6 +73,8 @@ TABLES = {
     "[analysis]": (("analysis",), ("analysis", "stop")),
     "[dynamics]": (("dynamics",),),
     "[[actuation]]": (("actuation", 0),),
+    "[[bar]]": (("bar", 0),),
+    "[[hinge]]": (("hinge", 0),),
 }
 
 
