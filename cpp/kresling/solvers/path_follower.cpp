@@ -65,7 +65,7 @@ class PathFollower {
   // a snap at the smallest increment.
   bool snap(bool whole);
   // Relaxed increments (FollowOptions::relax) until a relaxation fails; then the path is
-  // followed as without them up to the next accepted increment.
+  // followed as without them up to the next accepted increment that is stable.
   bool relaxing() const { return options_.relax && !relax_failed_; }
 
   PathControl& control_;
@@ -315,7 +315,9 @@ bool PathFollower::run(StepPolicy& policy) {
       relax_failed_ = true;
     }
     if (accepted_now) {
-      relax_failed_ = false;
+      // Relax again once the path is stable again: along an unstable stretch (no stable
+      // state near it) each relaxation would fail again, at its whole budget per increment.
+      if (previous_negative_ <= 0) relax_failed_ = false;
       policy.accepted(increment_);
     } else if (policy.rejected(increment_, failure)) {
       continue;  // tried again smaller

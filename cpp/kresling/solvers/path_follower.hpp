@@ -63,8 +63,10 @@ struct FollowOptions {
   /// the last equilibrium, the energy at the increment's end is descended to a stable state
   /// (stable_relaxation.hpp) in at most `relax_iterations` iterations, which is recorded as
   /// a step (PathStep::snapped). Where that finds none, the increment is halved and its
-  /// parts are followed as without `relax` (unstable equilibria accepted), until one is
-  /// accepted. Snaps (`snap`) relax too, with the snap's budget.
+  /// parts are followed as without `relax` (unstable equilibria accepted), and so is the
+  /// path after them until an accepted increment is stable again (no stable state was near
+  /// the unstable stretch: each relaxation there would spend its whole budget to fail).
+  /// Snaps (`snap`) relax too, with the snap's budget.
   bool relax = false;
   int relax_iterations = 200;
 };
