@@ -39,7 +39,8 @@ class _Scene:
         self.inputs, self.field, self.scene = inputs, field, scene
         self.show_legend = show_legend
         model = inputs.model
-        self.groups = crease_groups(model.hinges, inputs.hinge_family, inputs.triangles)
+        self.groups = {**crease_groups(model.hinges, inputs.hinge_family, inputs.triangles),
+                       **inputs.lines}
         if field is not None:
             self.edges_of_field = field_edges(model, field)
             shown = {tuple(e) for e in self.edges_of_field[0].tolist()}

@@ -8,7 +8,7 @@ triangles (a specimen's outward-oriented faces, else ``.elements.triangles`` if 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -31,11 +31,15 @@ class ViewInputs:
         Panels (triangles) to shade; consistently oriented where the surface allows.
     hinge_family : ndarray of str, shape (H,)
         Family of every hinge (``"unassigned"`` when none was given).
+    lines : dict
+        Further lines drawn beside the creases, by name: ``{"member bar": edges (E, 2)}``,
+        the bars given one by one of a structure that is not all panels (a linkage).
     """
 
     model: object
     triangles: np.ndarray
     hinge_family: np.ndarray
+    lines: dict = field(default_factory=dict)
 
 
 def view_inputs(model, *, triangles=None, hinge_family=None) -> ViewInputs:
@@ -104,4 +108,11 @@ def view_inputs(model, *, triangles=None, hinge_family=None) -> ViewInputs:
         if len(hinge_family) != num_hinges:
             raise ValueError(f"hinge_family has {len(hinge_family)} entries: must have one "
                              f"per hinge ({num_hinges})")
-    return ViewInputs(model=model, triangles=triangles, hinge_family=hinge_family)
+    lines = {}
+    bar_family = getattr(carrier, "bar_family", None) if carrier is not None else None
+    if bar_family is not None and len(bar_family) == len(model.bars):
+        member = np.array([f == "member" for f in bar_family], dtype=bool)
+        if member.any():
+            lines["member bar"] = np.asarray(model.bars, dtype=np.int64)[member]
+    return ViewInputs(model=model, triangles=triangles, hinge_family=hinge_family,
+                      lines=lines)

@@ -72,7 +72,8 @@ def encode_frames(points, low, high) -> bytes:
 
 def _scene(inputs):
     """The crease lines by family: (family, style, polyline order) each."""
-    groups = crease_groups(inputs.model.hinges, inputs.hinge_family, inputs.triangles)
+    groups = {**crease_groups(inputs.model.hinges, inputs.hinge_family, inputs.triangles),
+              **inputs.lines}
     others = []
     return [(family, family_style(family, others), polyline_order(edges))
             for family, edges in groups.items()]

@@ -38,6 +38,9 @@ FAMILY_STYLES = {
     # The families of a Kresling specimen's elements (kresling.model.EDGE_FAMILIES).
     "polygon_edge": ("#6a3d9a", 4, "solid"),
     "polygon_spoke": ("#c7c7c7", 2, "dash"),
+    # Members given one by one (a linkage's): the hinges' axes bold, the bars thin.
+    "member": ("#ff7f0e", 6, "solid"),
+    "member bar": ("#5a5a5a", 2, "solid"),
 }
 OTHER_COLOURS = ("#ff7f0e", "#2ca02c", "#8c564b", "#e377c2", "#17becf", "#bcbd22")
 
