@@ -89,20 +89,7 @@ class Members:
         """``model`` with these bars after its own and these hinges after its own (its
         elements keep their indices and their numbers)."""
         nodes = model.nodes
-        for name, rows, ends in (("bars", self.bars, (0, 1)), ("hinges", self.hinges, (0, 1))):
-            if rows.size and (rows.min() < 0 or rows.max() >= len(nodes)):
-                row = int(np.argwhere((rows < 0) | (rows >= len(nodes)))[0, 0])
-                raise ValueError(f"member {name}[{row}] = {rows[row].tolist()}: node out of "
-                                 f"range [0, {len(nodes)})")
-            length = np.linalg.norm(nodes[rows[:, ends[1]]] - nodes[rows[:, ends[0]]], axis=1)
-            scale = float(np.ptp(nodes, axis=0).max()) or 1.0
-            short = np.flatnonzero(length <= 1e-12 * scale)
-            if short.size:
-                row = int(short[0])
-                what = "bar" if name == "bars" else "hinge's axis"
-                raise ValueError(f"member {name}[{row}] = {rows[row].tolist()}: the {what} "
-                                 "joins two nodes at one point (coincident nodes belong to "
-                                 "different members: nothing may join them)")
+        self._check_geometry(nodes)
         exact = HINGE_ANGLES["exact"]
         forms = np.concatenate([model.hinge_angle, np.full(len(self.hinges), exact)])
         rest = _as_built_angles(nodes, self.hinges, self.hinge_rest_angle)
@@ -123,6 +110,32 @@ class Members:
             hinge_limits=np.vstack([model.hinge_limits,
                                     np.broadcast_to(FOLD_LIMITS, (len(self.hinges), 2))]),
             hinge_angle=[_name(HINGE_ANGLES, c) for c in forms])
+
+
+    def _check_geometry(self, nodes) -> None:
+        """Every node in range, no bar or hinge axis between two nodes at one point, no
+        hinge wing on its axis line (ValueError naming the member)."""
+        scale = float(np.ptp(nodes, axis=0).max()) or 1.0
+        for name, rows in (("bars", self.bars), ("hinges", self.hinges)):
+            if rows.size and (rows.min() < 0 or rows.max() >= len(nodes)):
+                row = int(np.argwhere((rows < 0) | (rows >= len(nodes)))[0, 0])
+                raise ValueError(f"member {name}[{row}] = {rows[row].tolist()}: node out of "
+                                 f"range [0, {len(nodes)})")
+            length = np.linalg.norm(nodes[rows[:, 1]] - nodes[rows[:, 0]], axis=1)
+            short = np.flatnonzero(length <= 1e-12 * scale)
+            if short.size:
+                row = int(short[0])
+                what = "bar" if name == "bars" else "hinge's axis"
+                raise ValueError(f"member {name}[{row}] = {rows[row].tolist()}: the {what} "
+                                 "joins two nodes at one point (coincident nodes belong to "
+                                 "different members: nothing may join them)")
+        for row, (a, b, *wings) in enumerate(self.hinges.tolist()):
+            axis = nodes[b] - nodes[a]
+            for wing in wings:
+                off = np.linalg.norm(np.cross(nodes[wing] - nodes[a], axis)) / np.linalg.norm(axis)
+                if not off > 1e-9 * scale:   # the model's own test: no dihedral angle there
+                    raise ValueError(f"member hinges[{row}] = {self.hinges[row].tolist()}: "
+                                     f"wing node {wing} lies on the axis line {a} -> {b}")
 
 
 def _as_built_angles(nodes, hinges, given) -> np.ndarray:

@@ -115,6 +115,8 @@ def _check_model(problem, model):
 
 def _where(message: str) -> str:
     """The table and key of the problem a model-building message is about."""
+    if message.startswith(("member bars", "member hinges")):
+        return "[[bar]]" if message.startswith("member bars") else "[[hinge]]"
     name = message.split(" ", 1)[0]
     if name in MATERIAL_KEY_OF_FIELD:
         return f"[material] key {MATERIAL_KEY_OF_FIELD[name]!r}"

@@ -170,8 +170,8 @@ def test_coincident_nodes_may_not_be_joined_and_panels_need_a_material():
     problem["pattern"]["vertices"].append([10, 0, 0])   # node 4 at node 1's point
     joined = dict(problem, bar=problem["bar"] + [{"nodes": [1, 4], "modulus": 1.0,
                                                    "area": 1.0}])
-    with pytest.raises(ValueError, match=r"bars\[5\] = \[1, 4\]: the bar joins two nodes at "
-                                         "one point"):
+    with pytest.raises(ValueError, match=r"\[\[bar\]\]: member bars\[5\] = \[1, 4\]: the bar "
+                                         "joins two nodes at one point"):
         build_problem_model(joined)
     apart = dict(problem, bar=problem["bar"] + [{"nodes": [2, 4], "modulus": 1.0,
                                                   "area": 1.0}])
@@ -186,3 +186,13 @@ def test_coincident_nodes_may_not_be_joined_and_panels_need_a_material():
     with pytest.raises(ValueError, match=r"\[pattern\] key 'panels' gives panels, which need "
                                          r"a \[material\]"):
         load_problem(sheet)
+
+
+def test_a_member_hinge_whose_wing_lies_on_its_axis_is_refused_naming_the_key():
+    problem = _two_triangles()
+    problem["pattern"]["vertices"].append([5, 0, 0])     # node 4 on the axis 0 -> 1
+    problem["bar"][0]["nodes"].append([4, 2])
+    problem["hinge"].append({"nodes": [0, 1, 4, 3], "stiffness": 1.0})
+    with pytest.raises(ValueError, match=r"\[\[hinge\]\]: member hinges\[1\] = \[0, 1, 4, 3\]: "
+                                         "wing node 4 lies on the axis line 0 -> 1"):
+        build_problem_model(problem)
