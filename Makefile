@@ -31,7 +31,7 @@ CORE_SOURCES := CMakeLists.txt pyproject.toml $(shell find cmake cpp -type f 2>/
 help:
 	@echo "make demo   - the optimal design's geometry, then reproduce the thesis: $(REPORT_DIR)/report.html"
 	@echo "make test   - C++ unit tests (ctest) and the Python test suite (pytest, on every core)"
-	@echo "make test-fast - the same without the tests marked slow (over 10 s each): for everyday work"
+	@echo "make test-fast - the same without the slow (over 10 s each), browser and fuzz tests: for everyday work"
 	@echo "make benchmark - solver speed and memory against MERLIN2, Miura sheets to 100,000 DOFs (prints tables)"
 	@echo "make docs   - the documentation site: $(DOCS_BUILD)/index.html"
 	@echo "make fuzz   - the fuzz suite at $(FUZZ_SCALE)x its test-suite examples, from random seeds"
@@ -48,10 +48,10 @@ demo: install
 test: install test-cpp test-python
 
 # make test-fast: everything but the tests marked @pytest.mark.slow (those over 10 s; a test
-# not marked that takes longer fails, see tests/slow_check.py). The browser tests are skipped
-# when chromium is not installed (make test installs it).
+# not marked that takes longer fails, see tests/slow_check.py), the tests that drive a
+# browser and the fuzz suite (both marked by tests/conftest.py; make test runs them all).
 test-fast: install test-cpp
-	$(PY) -m pytest -q $(PYTEST_PARALLEL) -m "not slow"
+	$(PY) -m pytest -q $(PYTEST_PARALLEL) -m "not slow and not browser and not fuzz"
 
 test-cpp: install
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j$(JOBS)

@@ -12,6 +12,16 @@ TESTS = Path(__file__).resolve().parent
 pytest_plugins = ["slow_check", "pytester"]
 
 
+def pytest_itemcollected(item):
+    """The tests that drive a headless browser (files ``*_browser.py``) and the fuzz suite's
+    (``tests/fuzz``) are marked ``browser`` and ``fuzz``: part of ``make test``, left out of
+    ``make test-fast``."""
+    if item.path.name.endswith("_browser.py"):
+        item.add_marker(pytest.mark.browser)
+    if item.path.parent.name == "fuzz":
+        item.add_marker(pytest.mark.fuzz)
+
+
 def pytest_collection_modifyitems(config, items):
     """On pytest-xdist's workers (``make test``: ``-n N --dist loadfile
     --no-loadscope-reorder``), the files with the most tests marked slow first, then those
