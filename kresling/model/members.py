@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from kresling import _core
 from kresling._validation import show
 from kresling.laws import BAR_LAWS, FOLD_LIMITS, HINGE_ANGLES, SPRING_LAWS
 from kresling.model.model import Model
@@ -90,8 +91,8 @@ class Members:
         elements keep their indices and their numbers)."""
         nodes = model.nodes
         self._check_geometry(nodes)
-        exact = HINGE_ANGLES["exact"]
-        forms = np.concatenate([model.hinge_angle, np.full(len(self.hinges), exact)])
+        forms = np.concatenate([model.hinge_angle,
+                                np.full(len(self.hinges), HINGE_ANGLES["exact"])])
         rest = _as_built_angles(nodes, self.hinges, self.hinge_rest_angle)
         return model.replace(
             bars=np.vstack([model.bars, self.bars]),
@@ -100,16 +101,16 @@ class Members:
             bar_rest_length=np.concatenate([
                 model.bar_rest_length,
                 np.linalg.norm(nodes[self.bars[:, 1]] - nodes[self.bars[:, 0]], axis=1)]),
-            bar_law=[_name(BAR_LAWS, c) for c in model.bar_law] + list(self.bar_law),
+            bar_law=_names(BAR_LAWS, model.bar_law) + list(self.bar_law),
             hinges=np.vstack([model.hinges, self.hinges]),
             hinge_stiffness=np.concatenate([model.hinge_stiffness, self.hinge_stiffness]),
             hinge_rest_angle=np.concatenate([model.hinge_rest_angle, rest]),
             # A member hinge's stiffness is its whole moment per radian: length 1.
             hinge_length=np.concatenate([model.hinge_length, np.ones(len(self.hinges))]),
-            hinge_law=[_name(SPRING_LAWS, c) for c in model.hinge_law] + list(self.hinge_law),
+            hinge_law=_names(SPRING_LAWS, model.hinge_law) + list(self.hinge_law),
             hinge_limits=np.vstack([model.hinge_limits,
                                     np.broadcast_to(FOLD_LIMITS, (len(self.hinges), 2))]),
-            hinge_angle=[_name(HINGE_ANGLES, c) for c in forms])
+            hinge_angle=_names(HINGE_ANGLES, forms))
 
 
     def _check_geometry(self, nodes) -> None:
@@ -142,10 +143,11 @@ def _as_built_angles(nodes, hinges, given) -> np.ndarray:
     """``given`` where set, the angle in ``nodes`` (exact form) where NaN."""
     if not len(hinges):
         return np.zeros(0)
-    built = Model(nodes, np.zeros((0, 2), dtype=np.int64), hinges, bar_modulus=1.0,
-                  hinge_stiffness=0.0).hinge_rest_angle
+    built = _core.elements.dihedral_angles(nodes, hinges, _core.elements.DihedralForm.exact)
     return np.where(np.isnan(given), built, given)
 
 
-def _name(table, code) -> str:
-    return next(name for name, value in table.items() if value == code)
+def _names(table, codes) -> list:
+    """The names of ``codes`` in a law table (name -> code)."""
+    name_of = {code: name for name, code in table.items()}
+    return [name_of[int(code)] for code in codes]

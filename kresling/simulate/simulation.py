@@ -163,7 +163,7 @@ class Simulation:
         plan = self.fold
         if plan is None or not self.path.num_steps or not plan.hinges.size:
             return {}
-        tolerance = getattr(self.problem.analysis, "target_tolerance_deg", FOLD_TOLERANCE_DEG)
+        tolerance = self.problem.analysis.target_tolerance_deg
         final = fold_angles_deg(self.pattern_model, self.path.displacement[-1], plan.signs)
         reached = final[plan.hinges]
         # Fold angles live on a circle: a crease folded 16 deg past flat reads -164 deg,
