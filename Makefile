@@ -53,8 +53,11 @@ test: install test-cpp test-python
 test-fast: install test-cpp
 	$(PY) -m pytest -q $(PYTEST_PARALLEL) -m "not slow and not browser and not fuzz"
 
+# The C++ tests and benchmark programs are not built by the install (make demo does not run
+# them): each target that runs them builds them first, incrementally.
 test-cpp: install
-	ctest --test-dir $(BUILD_DIR) --output-on-failure -j$(JOBS)
+	$(VENV)/bin/cmake --build $(BUILD_DIR) --target kresling_tests
+	$(VENV)/bin/ctest --test-dir $(BUILD_DIR) --output-on-failure -j$(JOBS)
 
 test-python: install test-deps
 	$(PY) -m pytest -q $(PYTEST_PARALLEL)
@@ -99,7 +102,8 @@ $(VENV)/.venv-ready:
 	touch $@
 
 # Editable install with a persistent build directory: C++ rebuilds are incremental, and the
-# same CMake build also compiles the GoogleTest suite for ctest. The test extra is for
+# same CMake build holds the GoogleTest suite and the benchmark programs for the targets that
+# build them (test-cpp, benchmark). The test extra is for
 # `make test`, the docs extra for `make docs` and for the test that builds the docs.
 $(VENV)/.installed: $(VENV)/.venv-ready $(CORE_SOURCES) | system-deps
 	$(PY) -m pip install -q --no-build-isolation \
@@ -123,6 +127,7 @@ sanitize: install
 	KRESLING_SLOW_LIMIT=0 PY=$(abspath $(PY)) tests/sanitize.sh
 
 benchmark: install
+	$(VENV)/bin/cmake --build $(BUILD_DIR) --target solver_breakdown factorisation_cost contact_broad_phase
 	$(PY) benchmarks/solver_speed.py
 	$(PY) benchmarks/speed.py
 

@@ -10,6 +10,7 @@
 // wrong term (those are O(1) relative). Parameters that enter linearly (areas, moduli,
 // stiffnesses) have no truncation at all.
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -25,6 +26,7 @@
 #include "kresling/model/element_family.hpp"
 #include "kresling/model/family_registry.hpp"
 #include "kresling/model/model.hpp"
+#include "kresling/solvers/displacement_control.hpp"
 #include "kresling/solvers/force_control.hpp"
 #include "kresling/solvers/sensitivity.hpp"
 
@@ -401,5 +403,74 @@ TEST(ShapeJacobian, ARigidMotionOfTheReferenceIsARigidMotionOfTheStructure) {
     }
     EXPECT_LE((dense * t - expected).cwiseAbs().maxCoeff(), 1e-9 * dense.cwiseAbs().maxCoeff())
         << "axis " << axis;
+  }
+}
+
+TEST(PathSensitivity, AnAdaptivePathsSamplesFromItsKnotsAgreeWithEachSamplesOwn) {
+  // The truss with its hinges, nodes 0, 1, 3 held, node 2 driven 1.5 mm along z in 60
+  // samples by adaptive increments that keep their knots. The samples read off the knots'
+  // Hermite curves are differentiated through the knots' derivatives and their rates
+  // (interpolated_path_sensitivity); each sample differentiated on its own
+  // (path_sensitivity) must agree to the interpolation error (~1e-9 of the force) and that
+  // of the rates' central difference (~1e-7): asserted 1e-6 of the largest.
+  std::vector<std::uint8_t> fixed(21, 0);
+  for (Index n : {0, 1, 3}) {
+    for (int k = 0; k < 3; ++k) fixed[3 * n + k] = 1;
+  }
+  const model::Model m(nodes(), fixed,
+                       {model::family_kind("bars").from_table(truss()),
+                        model::family_kind("hinges").from_table(table_of("hinges"))});
+  VectorX prescribed = VectorX::Zero(21);
+  prescribed[3 * 2 + 2] = 1.5;
+  solvers::DisplacementControlOptions options;
+  options.newton.tolerance = 1e-11;
+  options.shift = 0.0;
+  options.extrapolation = 2;
+  options.adaptive = true;
+  options.keep_knots = true;
+  const solvers::PathResult path = solvers::solve_displacement_control(m, prescribed, 60, options);
+  ASSERT_TRUE(path.completed) << path.message;
+  ASSERT_GE(path.knots.size(), 2u);
+  ASSERT_LT(path.knots.size(), 30u);  // most samples read off curves
+  std::vector<VectorX> states;
+  std::vector<double> fractions;
+  for (const solvers::PathStep& s : path.steps) {
+    states.push_back(s.displacement);
+    fractions.push_back(s.load_factor);
+  }
+  solvers::PathKnots knots;
+  for (const solvers::PathKnot& k : path.knots) {
+    knots.t.push_back(k.t);
+    knots.u.push_back(k.u);
+    knots.velocity.push_back(k.velocity);
+  }
+  knots.step_knot = path.step_knot;
+  // Two variables: every bar's modulus scaled, the hinges' rest angles moved together.
+  std::vector<solvers::ColumnMotion> columns = {
+      {"bars", "modulus", Eigen::MatrixXd::Zero(21, 2)},
+      {"hinges", "rest_angle", Eigen::MatrixXd::Zero(4, 2)}};
+  columns[0].weights.col(0).setConstant(500.0);
+  columns[1].weights.col(1).setOnes();
+  const Eigen::MatrixXd none(21, 0);
+  const std::vector<Index> held = {3 * 2 + 2};
+  const solvers::PathSensitivityResult exact =
+      solvers::path_sensitivity(m, states, fractions, held, none, columns, Eigen::MatrixXd(21, 0));
+  const solvers::PathSensitivityResult curves = solvers::interpolated_path_sensitivity(
+      m, states, fractions, knots, held, none, columns, Eigen::MatrixXd(21, 0));
+  ASSERT_EQ(curves.displacement.size(), states.size());
+  for (Index p = 0; p < 2; ++p) {
+    double du_scale = 0.0, du_error = 0.0, f_scale = 0.0, f_error = 0.0;
+    for (std::size_t k = 0; k < states.size(); ++k) {
+      du_scale = std::max(du_scale, exact.displacement[k].col(p).cwiseAbs().maxCoeff());
+      du_error = std::max(du_error, (exact.displacement[k].col(p) - curves.displacement[k].col(p))
+                                        .cwiseAbs().maxCoeff());
+      f_scale = std::max(f_scale, exact.held_force[k].col(p).cwiseAbs().maxCoeff());
+      f_error = std::max(f_error, (exact.held_force[k].col(p) - curves.held_force[k].col(p))
+                                      .cwiseAbs().maxCoeff());
+    }
+    EXPECT_LE(du_error, 1e-6 * du_scale) << "variable " << p;
+    EXPECT_LE(f_error, 1e-6 * f_scale) << "variable " << p;
+    EXPECT_LE((exact.energy.col(p) - curves.energy.col(p)).cwiseAbs().maxCoeff(),
+              1e-6 * exact.energy.col(p).cwiseAbs().maxCoeff());
   }
 }

@@ -3,8 +3,10 @@ with respect to its design: lambda, Lc, R, the facet sheet's thickness and the c
 stiffness kf.
 
 Each test (the three-point bending test in each state, the snap-through test) is run once
-with its whole path kept; every step's equilibrium is then differentiated through the
-factorised tangent (:func:`kresling.solvers.path_sensitivity`), with each design variable
+with its whole path kept and differentiated through the factorised tangent
+(:func:`kresling.solvers.path_sensitivity`): the snap-through test's every increment, the
+bending test's knots (it runs in adaptive increments, its samples read off Hermite curves
+between them, and so are their derivatives; docs/sensitivities.md), with each design variable
 seen through the specimen's construction (:class:`kresling.solvers.Direction`: how the
 node positions, the bars' areas and moduli, the hinges' stiffnesses and the drive move per
 unit of it, from the C++ core's chain rule). The tests' read-outs (K_B, the least-squares
@@ -37,7 +39,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling import _core
-from kresling.analyses.bending import protocol_settings, require_even_n
+from kresling.analyses.bending import ADAPTIVE_TOLERANCE, protocol_settings, require_even_n
 from kresling.analyses.snap_through import DEFAULT_STEPS
 from kresling.geometry import Design, as_design, state_index
 from kresling.model.kresling_specimen import SpecimenParameters
@@ -164,11 +166,16 @@ def checked_variables(variables, allowed=SPECIMEN_VARIABLES) -> tuple:
     return variables
 
 
-def _solved(model, prescribed, steps, what):
+def _solved(model, prescribed, steps, what, adaptive_tolerance=None):
+    """The test's path converged to :data:`TOLERANCE`; with ``adaptive_tolerance``, in
+    adaptive increments as the bending test runs them, keeping its knots (only those are
+    then differentiated)."""
     # Unshifted Newton: the tests' 1e-8 N/mm shift slows convergence to linear on the
     # contracted stacks' softest modes, where the tolerance asks for quadratic.
+    adaptive = {} if adaptive_tolerance is None else dict(
+        adaptive=True, adaptive_tolerance=adaptive_tolerance, keep_knots=True)
     path = solve_displacement_control(model, prescribed, steps, tolerance=TOLERANCE,
-                                      extrapolation=2, shift=0.0)
+                                      extrapolation=2, shift=0.0, **adaptive)
     if not path.completed:
         raise ValueError(f"the {what} stopped at increment {path.failed_increment} of {steps} "
                          f"({path.message}): its derivative is refused (it would be that of "
@@ -206,16 +213,19 @@ def bending_gradient(design: Design, state, protocol="5mm", *, parameters=None,
         For a bad design, state or variable, or a run that does not complete.
     """
     variables = checked_variables(variables)
-    y, F, length = _bending_duals(design, state, protocol, parameters, variables, cells,
-                                  deflection, deflection_angle, steps)
-    xy = xx = 0.0
-    for yk, Fk in zip(y, F):
-        angle = _atan2(yk, length)
-        moment = Fk * length * 1e-3
-        xy = angle * moment + xy
-        xx = angle * angle + xx
+    y, dy, F, dF, L, dL = _bending_run(design, state, protocol, parameters, variables, cells,
+                                       deflection, deflection_angle, steps)
+    # K_B = sum(theta M) / sum(theta^2), theta = atan2(y, L), M = F L [N m]: the least-squares
+    # slope through the origin, differentiated as the formula it is (arrays over the samples).
+    theta = np.arctan2(y, L)
+    dtheta = (L * dy - np.outer(y, dL)) / (y * y + L * L)[:, None]
+    M = F * L * 1e-3
+    dM = (dF * L + np.outer(F, dL)) * 1e-3
+    xy, xx = theta @ M, theta @ theta
+    dxy = theta @ dM + M @ dtheta
+    dxx = 2.0 * (theta @ dtheta)
     k = xy / xx
-    return k.value, dict(zip(variables, k.grad.tolist()))
+    return k, dict(zip(variables, ((dxy * xx - xy * dxx) / (xx * xx)).tolist()))
 
 
 def bending_force_gradient(design: Design, state, deflection, steps, *, parameters=None,
@@ -242,16 +252,16 @@ def bending_force_gradient(design: Design, state, deflection, steps, *, paramete
         The deflection at every increment [mm], the force F [N] and dF/dv.
     """
     variables = checked_variables(variables)
-    y, F, _ = _bending_duals(design, state, "5mm", parameters, variables, cells, deflection,
-                             None, steps)
-    return (np.array([v.value for v in y]), np.array([v.value for v in F]),
-            np.array([v.grad for v in F]).reshape(len(F), len(variables)))
+    y, _, F, dF, _, _ = _bending_run(design, state, "5mm", parameters, variables, cells,
+                                     deflection, None, steps)
+    return y, F, dF
 
 
-def _bending_duals(design, state, protocol, parameters, variables, cells, deflection,
-                   deflection_angle, steps):
-    """One bending run differentiated: the centre's deflection y and the force F at every
-    increment, and the module length L, as duals over ``variables``."""
+def _bending_run(design, state, protocol, parameters, variables, cells, deflection,
+                 deflection_angle, steps):
+    """One bending run differentiated: the centre's deflection y (S,) [mm] and dy/dv (S, P),
+    the force F (S,) [N] and dF/dv (S, P) at every increment, and the module length L [mm]
+    and dL/dv (P,)."""
     design = as_design(design)
     state = state_index(state)
     parameters = _exact_angles(parameters)
@@ -270,12 +280,12 @@ def _bending_duals(design, state, protocol, parameters, variables, cells, deflec
     rate = ({v: dl / L for v, dl in zip(variables, dL)} if settings["deflection_angle"] else {})
     directions = _directions(specimen, design, [state] * cells, chirality, parameters,
                              variables, prescribed, rate)
-    path = _solved(model, prescribed, settings["steps"], f"bending test ({state_name(state)})")
+    path = _solved(model, prescribed, settings["steps"], f"bending test ({state_name(state)})",
+                   ADAPTIVE_TOLERANCE.get(protocol))
     sens = path_sensitivity(model, path, directions)
     centre_y = 3 * ((cells // 2) * (n + 1) + n) + 1
-    y = _duals(-path.displacement[:, centre_y], -sens.displacement[:, centre_y, :])
-    F = _duals(path.constraint_force.sum(axis=1), sens.constraint_force.sum(axis=1))
-    return y, F, _Dual(L, dL)
+    return (-path.displacement[:, centre_y], -sens.displacement[:, centre_y, :],
+            path.constraint_force.sum(axis=1), sens.constraint_force.sum(axis=1), L, dL)
 
 
 def state_name(state) -> str:

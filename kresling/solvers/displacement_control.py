@@ -20,7 +20,7 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=_DEFAULTS.
                                merlin2_steps=_DEFAULTS.merlin2_steps,
                                adaptive=_DEFAULTS.adaptive,
                                adaptive_tolerance=_DEFAULTS.adaptive_tolerance,
-                               cholesky="auto", stop=None) -> PathResult:
+                               cholesky="auto", stop=None, keep_knots=False) -> PathResult:
     """Impose a displacement in equal increments and follow the equilibrium path.
 
     Only the non-zero entries of ``prescribed`` are imposed (zero entries stay free, as in
@@ -85,6 +85,11 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=_DEFAULTS.
     stop : callable, optional
         ``stop(load_factor, displacement) -> bool``, asked after every accepted increment
         (``displacement`` of shape (3N,)); True ends the path there (completed).
+    keep_knots : bool, default False
+        With ``adaptive``: keep the converged points the samples were read from
+        (``PathResult.knots``), so that :func:`~kresling.solvers.path_sensitivity`
+        differentiates the path at those points only (a path that fell back to fixed steps
+        has none).
 
     Returns
     -------
@@ -102,7 +107,7 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=_DEFAULTS.
         max_bisections=max_bisections, shift=shift, extrapolation=extrapolation,
         merlin2_steps=merlin2_steps, adaptive=adaptive, adaptive_tolerance=adaptive_tolerance,
         cholesky=cholesky,
-        stop=stop)
+        stop=stop, keep_knots=keep_knots)
     d = _core.solvers.displacement_control(
         model._core, dof_vector(model, "prescribed", prescribed),
         as_integer("steps", steps, minimum=1),
@@ -113,7 +118,7 @@ def solve_displacement_control(model, prescribed, steps, *, tolerance=_DEFAULTS.
 def displacement_control_options(*, tolerance=1e-6, max_iterations=50, reject_iterations=25,
                                  max_bisections=10, shift=_DEFAULTS.shift, extrapolation=0,
                                  merlin2_steps=False, adaptive=False, adaptive_tolerance=1e-9,
-                                 cholesky="auto", stop=None):
+                                 cholesky="auto", stop=None, keep_knots=False):
     """Checked C++ options object (see :func:`solve_displacement_control` for meanings)."""
     if extrapolation not in (0, 1, 2, 3) or isinstance(extrapolation, bool):
         raise ValueError(f"extrapolation = {extrapolation!r} is invalid: must be 0, 1, 2 or 3")
@@ -131,4 +136,5 @@ def displacement_control_options(*, tolerance=1e-6, max_iterations=50, reject_it
     if stop is not None and not callable(stop):
         raise ValueError(f"stop = {stop!r} is invalid: must be None or a callable")
     o.stop = stop
+    o.keep_knots = as_bool("keep_knots", keep_knots)
     return o

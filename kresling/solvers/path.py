@@ -8,6 +8,41 @@ import numpy as np
 
 
 @dataclass(frozen=True)
+class PathKnots:
+    """The converged points of a path in adaptive increments that its steps were read from
+    (cubic Hermite curves between consecutive knots through their values and path rates).
+
+    Attributes
+    ----------
+    t : ndarray, shape (K,)
+        The path parameter of each knot (as ``PathResult.load_factor``), increasing.
+    displacement : ndarray, shape (K, 3N)
+        [mm].
+    velocity : ndarray, shape (K, 3N)
+        d displacement / dt [mm per unit of t].
+    step_knot : ndarray of int, shape (S,)
+        Per step of the path: j when it was read off the curves between knots j - 1 and j
+        (a step at knot j included), -1 when it was converged by Newton on its own.
+    """
+
+    t: np.ndarray
+    displacement: np.ndarray
+    velocity: np.ndarray
+    step_knot: np.ndarray
+
+    @classmethod
+    def _from_core(cls, core) -> "PathKnots | None":
+        t = np.asarray(core.knot_t)
+        if t.size == 0:
+            return None
+        out = cls(t, np.asarray(core.knot_displacement), np.asarray(core.knot_velocity),
+                  np.asarray(core.step_knot, dtype=np.int64))
+        for value in (out.t, out.displacement, out.velocity, out.step_knot):
+            value.flags.writeable = False
+        return out
+
+
+@dataclass(frozen=True)
 class PathResult:
     """An equilibrium path, one row per accepted increment.
 
@@ -46,6 +81,9 @@ class PathResult:
     snapped : ndarray of bool, shape (S,)
         Steps reached by a snap (a fold's ``snap=True``): where the path the step before
         was on ended, an energy descent to a stable state, not a continuation of it.
+    knots : PathKnots or None
+        Adaptive increments asked to keep them (``keep_knots=True``): the converged points
+        the steps were read from; None otherwise.
     """
 
     load_factor: np.ndarray
@@ -62,13 +100,16 @@ class PathResult:
     attempted_increments: int
     newton_iterations: int
     snapped: np.ndarray
+    knots: "PathKnots | None" = None
 
     @classmethod
     def _from_core(cls, core) -> "PathResult":
         """Read the C++ core's path (``kresling._core.solvers.PathResult``): every field of
-        this class is one of its properties."""
-        values = {}
+        this class but ``knots`` is one of its properties."""
+        values = {"knots": PathKnots._from_core(core)}
         for field in fields(cls):
+            if field.name == "knots":
+                continue
             value = getattr(core, field.name)
             if field.name == "constraint_dofs":
                 value = np.asarray(value, dtype=np.int64)

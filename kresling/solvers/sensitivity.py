@@ -456,15 +456,29 @@ class PathSensitivity:
     energy: np.ndarray
 
 
+def _knots(path):
+    """The core's form of an adaptive path's knots, or None."""
+    k = getattr(path, "knots", None)
+    if k is None:
+        return None
+    return ([float(t) for t in k.t], list(k.displacement), list(k.velocity),
+            [int(j) for j in k.step_knot])
+
+
 def path_sensitivity(model, path, parameters) -> PathSensitivity:
     """Sensitivities along a displacement- or force-controlled path, one factorisation per
-    step.
+    step (per knot for a path in adaptive increments that kept its knots).
 
     An elastic path has no history: each step is an equilibrium at its control value, so its
     derivative is that equilibrium's (the direct differentiation of the path at fixed
     control). Under displacement control the imposed DOFs are held (the prescribed motion
     does not depend on the parameters); under force control (``path.constraint_dofs`` are
     supports) the loads are fixed at the step's load factor.
+
+    A path in adaptive increments with ``keep_knots=True`` read its steps off cubic Hermite
+    curves between converged points (knots); its derivatives are those of the same curves,
+    through the knots' derivatives and their rates along the path (docs/sensitivities.md,
+    'Adaptive paths'), so only the knots are factorised.
 
     Parameters
     ----------
@@ -504,7 +518,7 @@ def path_sensitivity(model, path, parameters) -> PathSensitivity:
         # One workspace and one symbolic analysis for the whole path, in the core.
         held_dofs, du_all, held_force, de_all = _core.solvers.path_sensitivity(
             model._core, list(path.displacement), [float(t) for t in path.load_factor],
-            [int(d) for d in held], positions, columns, drive)
+            [int(d) for d in held], positions, columns, drive, _knots(path))
     except (ValueError, RuntimeError) as error:
         raise ValueError(f"no sensitivity along this path: {error}") from None
     order = {int(d): i for i, d in enumerate(held_dofs)}

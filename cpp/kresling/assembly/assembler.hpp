@@ -31,6 +31,7 @@ class Assembler {
   const model::Model& model() const { return *model_; }
   const std::vector<Index>& rows() const { return workspace_->rows(); }
   Workspace& workspace() { return *workspace_; }
+  const Workspace& workspace() const { return *workspace_; }
 
   /// True if `model` has the connectivity of the workspace (see Workspace::fits).
   bool same_connectivity(const model::Model& model) const { return workspace_->fits(model); }

@@ -75,6 +75,7 @@ class AdaptiveFollower {
   Verdict estimate_error(PathPoint& b, double length, double& error_factor);
   Verdict take_samples(PathPoint& b);
   PathStep interpolated_sample(const PathPoint& b, double ts);
+  void keep_knot(const PathPoint& p);
   bool solved_sample(PathPoint& b, double ts, PathStep& step);
   bool halve(const PathPoint& b, double length);
   void set_next_length(const PathPoint& b, const VectorX& predicted, double length,
@@ -188,7 +189,12 @@ bool AdaptiveFollower::converge_start(const VectorX& start) {
     return false;
   }
   previous_.t = -1.0;
+  keep_knot(a_);
   return true;
+}
+
+void AdaptiveFollower::keep_knot(const PathPoint& p) {
+  if (options_.keep_knots) result_.knots.push_back(PathKnot{p.t, p.u, p.velocity});
 }
 
 // The increment's end: a bisection towards a known event, else the error estimate's size,
@@ -335,6 +341,10 @@ Verdict AdaptiveFollower::take_samples(PathPoint& b) {
       return Verdict::kFailed;
     }
     result_.steps.push_back(std::move(step));
+    // Read off the curves ending at b, which becomes the next knot once accepted.
+    if (options_.keep_knots) {
+      result_.step_knot.push_back(interpolate ? static_cast<int>(result_.knots.size()) : -1);
+    }
     ++next_;
     if (options_.stop && options_.stop(result_.steps.back())) return Verdict::kStopped;
   }
@@ -445,6 +455,7 @@ PathResult AdaptiveFollower::run(const VectorX& start) {
                           ? judge(b, locating, length, error_factor)
                           : Verdict::kFailed;
     if (verdict == Verdict::kAccepted) verdict = take_samples(b);
+    if (verdict == Verdict::kAccepted || verdict == Verdict::kStopped) keep_knot(b);
     if (verdict == Verdict::kStopped) break;
     if (verdict == Verdict::kFailed && !halve(b, length)) return std::move(result_);
     if (verdict != Verdict::kAccepted) continue;

@@ -39,6 +39,8 @@ struct AdaptiveOptions {
   int max_bisections = 10;  ///< an increment may be cut to 1/2^this of a sample spacing
   double tolerance = 1e-9;  ///< the monitored quantity's error, relative to its largest
   StopRule stop;            ///< ends the path early (completed) when it returns true
+  /// Keep the converged points the samples are read from (PathResult::knots, step_knot).
+  bool keep_knots = false;
 };
 
 /// Follow `control` from `start` (all DOFs; t = 0) with `steps` equal samples. `assembler`

@@ -89,6 +89,7 @@ AdaptiveOptions adaptive_options(const DisplacementControlOptions& o) {
   adaptive.max_bisections = o.max_bisections;
   adaptive.tolerance = o.adaptive_tolerance;
   adaptive.stop = o.stop;
+  adaptive.keep_knots = o.keep_knots;
   return adaptive;
 }
 

@@ -69,6 +69,10 @@ struct DisplacementControlOptions {
   /// increments to single samples.
   double adaptive_tolerance = 1e-9;
   StopRule stop;  ///< ends the path early (completed) when it returns true
+  /// Adaptive only: keep the converged points the samples were read from
+  /// (PathResult::knots), which the path's sensitivities differentiate instead of every
+  /// sample (sensitivity.hpp).
+  bool keep_knots = false;
 };
 
 /// A reusable displacement-control solver. Solving models of identical connectivity under

@@ -56,6 +56,14 @@ struct PathStep {
   }
 };
 
+/// A converged point of an adaptive path that samples were read from (its cubic Hermite
+/// curves): kept when asked (AdaptiveOptions::keep_knots), for the path's sensitivities.
+struct PathKnot {
+  double t = 0.0;    ///< the path parameter (load factor or fraction of the motion)
+  VectorX u;         ///< all DOFs
+  VectorX velocity;  ///< du/dt, all DOFs (at the held ones, the control's motion)
+};
+
 /// A caller's stopping rule, asked after every accepted step: true ends the path there
 /// (completed). An empty rule never stops.
 using StopRule = std::function<bool(const PathStep&)>;
@@ -79,6 +87,13 @@ struct PathResult {
   /// Newton iterations of every increment tried, accepted or not (the steps' `iterations`
   /// count the accepted ones only).
   long long newton_iterations = 0;
+  /// Adaptive increments with AdaptiveOptions::keep_knots only (else empty): the accepted
+  /// converged points, from the start, in order of t.
+  std::vector<PathKnot> knots;
+  /// Per step, with `knots`: j when the step was read off the Hermite curves between knots
+  /// j - 1 and j (a step at knot j itself included), -1 when it was converged by Newton on
+  /// its own.
+  std::vector<int> step_knot;
 };
 
 }  // namespace kresling::solvers

@@ -1,9 +1,11 @@
 #include "kresling/solvers/sensitivity.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
+#include "kresling/solvers/path_point.hpp"
 #include "kresling/solvers/rigid_body.hpp"
 
 namespace kresling::solvers {
@@ -130,13 +132,19 @@ Eigen::MatrixXd EquilibriumSensitivity::displacement(const Eigen::MatrixXd& dres
   if (moving) coupled = K * du;
   const auto nf = static_cast<Index>(free_dofs_.size());
   if (nf == 0) return du;
+  // Column by column, gathering and scattering the free rows (a row expression per DOF
+  // costs more than its few entries).
   Eigen::MatrixXd rhs(nf, P);
-  for (Index r = 0; r < nf; ++r) {
-    rhs.row(r) = -dresidual.row(free_dofs_[r]);
-    if (moving) rhs.row(r) -= coupled.row(free_dofs_[r]);
+  for (Index p = 0; p < P; ++p) {
+    for (Index r = 0; r < nf; ++r) {
+      const Index d = free_dofs_[r];
+      rhs(r, p) = moving ? -(dresidual(d, p) + coupled(d, p)) : -dresidual(d, p);
+    }
   }
   const Eigen::MatrixXd x = solver_->solve(rhs);
-  for (Index r = 0; r < nf; ++r) du.row(free_dofs_[r]) = x.row(r);
+  for (Index p = 0; p < P; ++p) {
+    for (Index r = 0; r < nf; ++r) du(free_dofs_[r], p) = x(r, p);
+  }
   return du;
 }
 
@@ -235,10 +243,105 @@ void add_column_derivatives(const model::Model& model, const VectorX& u,
                                     " rows; the column has " + std::to_string(d.energy.size()) +
                                     " entries");
       }
-      for (const auto& t : d.force) dforce.row(t.row()) += t.value() * W.row(t.col());
+      // Plain strided loops: an Eigen row expression per triplet costs more than its
+      // P multiply-adds (thousands of triplets per state).
+      const Index P = W.cols(), n = dforce.rows(), m = W.rows();
+      double* out = dforce.data();
+      const double* w = W.data();
+      for (const auto& t : d.force) {
+        const double v = t.value();
+        const Index r = t.row(), c = t.col();
+        for (Index p = 0; p < P; ++p) out[p * n + r] += v * w[p * m + c];
+      }
       denergy += d.energy.transpose() * W;
     }
   }
+}
+
+// The derivatives of states of one path with respect to P variables, on one factorisation
+// workspace: what path_sensitivity and interpolated_path_sensitivity share.
+class PathDifferentiator {
+ public:
+  PathDifferentiator(const model::Model& model, const VectorX& first,
+                     const std::vector<Index>& held, const Eigen::MatrixXd& positions,
+                     const std::vector<ColumnMotion>& columns, const Eigen::MatrixXd& drive,
+                     Index P)
+      : model_(model),
+        positions_(positions),
+        drive_(drive),
+        P_(P),
+        groups_(group_by_family(model, columns, P)),
+        s_(model, first, held) {}
+
+  const std::vector<Index>& held_dofs() const { return s_.held_dofs(); }
+  const EquilibriumSensitivity& factorised() const { return s_; }
+
+  // One equilibrium at path parameter t: factorised there (unless `same`: already at u).
+  struct State {
+    Eigen::MatrixXd du;      // 3N x P
+    Eigen::MatrixXd dforce;  // d f_int/dp along the equilibrium (total), 3N x P
+    Eigen::RowVectorXd denergy;
+  };
+  State at(const VectorX& u, double t, bool same, const std::string& where) {
+    if (!same) s_.update(u);
+    if (!s_.ok()) {
+      throw std::runtime_error(where +
+                               ": the tangent is singular (a limit or bifurcation point, or a "
+                               "mechanism the supports leave free): it has no derivative");
+    }
+    State out;
+    partials(u, s_.tangent(), s_.internal_force(), out.dforce, out.denergy);
+    out.du = s_.displacement(out.dforce, held_rows(drive_, t));
+    out.denergy += s_.internal_force().transpose() * out.du;
+    out.dforce += s_.tangent() * out.du;
+    return out;
+  }
+
+  // The residual's partial derivatives at u at fixed u (3N x P) and the energy's: the
+  // positions' motion through the tangent (x = X + u), the columns' own.
+  void partials(const VectorX& u, const SparseMatrix& K, const VectorX& f, Eigen::MatrixXd& dforce,
+                Eigen::RowVectorXd& denergy) {
+    dforce = Eigen::MatrixXd::Zero(model_.num_dofs(), P_);
+    denergy = Eigen::RowVectorXd::Zero(P_);
+    if (positions_.cols() > 0) {
+      dforce = K * positions_;
+      denergy = f.transpose() * positions_;
+    }
+    add_column_derivatives(model_, u, groups_, derivatives_, dforce, denergy);
+  }
+
+  // The held DOFs' motion per variable: `scale` times the drive's rows (empty: none).
+  Eigen::MatrixXd held_rows(const Eigen::MatrixXd& drive, double scale) const {
+    Eigen::MatrixXd motion;
+    if (drive.cols() == 0) return motion;
+    const std::vector<Index>& h = s_.held_dofs();
+    motion.resize(static_cast<Index>(h.size()), P_);
+    for (std::size_t k = 0; k < h.size(); ++k) motion.row(static_cast<Index>(k)) = scale * drive.row(h[k]);
+    return motion;
+  }
+
+  Eigen::MatrixXd held_of(const Eigen::MatrixXd& full) const {
+    const std::vector<Index>& h = s_.held_dofs();
+    Eigen::MatrixXd out(static_cast<Index>(h.size()), full.cols());
+    for (std::size_t k = 0; k < h.size(); ++k) out.row(static_cast<Index>(k)) = full.row(h[k]);
+    return out;
+  }
+
+ private:
+  const model::Model& model_;
+  const Eigen::MatrixXd& positions_;
+  const Eigen::MatrixXd& drive_;
+  const Index P_;
+  const std::vector<FamilyColumns> groups_;
+  EquilibriumSensitivity s_;
+  std::vector<model::ParameterDerivative> derivatives_;
+};
+
+Index variable_count(const Eigen::MatrixXd& positions, const std::vector<ColumnMotion>& columns,
+                     const Eigen::MatrixXd& drive) {
+  return positions.cols() > 0 ? positions.cols()
+         : !columns.empty()   ? columns.front().weights.cols()
+                              : drive.cols();
 }
 
 }  // namespace
@@ -251,42 +354,146 @@ PathSensitivityResult path_sensitivity(const model::Model& model,
                                        const std::vector<ColumnMotion>& columns,
                                        const Eigen::MatrixXd& drive) {
   const Index n = model.num_dofs();
-  const Index P = positions.cols() > 0 ? positions.cols()
-                  : !columns.empty()   ? columns.front().weights.cols()
-                                       : drive.cols();
+  const Index P = variable_count(positions, columns, drive);
   check_path_inputs(n, P, states, fractions, positions, drive);
-  const std::vector<FamilyColumns> groups = group_by_family(model, columns, P);
   PathSensitivityResult r;
   r.energy = Eigen::MatrixXd::Zero(static_cast<Index>(states.size()), P);
   if (states.empty()) return r;
-  EquilibriumSensitivity s(model, states.front(), held);
-  r.held_dofs = s.held_dofs();
-  const auto H = static_cast<Index>(r.held_dofs.size());
-  std::vector<model::ParameterDerivative> derivatives;
+  PathDifferentiator d(model, states.front(), held, positions, columns, drive, P);
+  r.held_dofs = d.held_dofs();
   for (std::size_t k = 0; k < states.size(); ++k) {
-    const VectorX& u = states[k];
-    if (k > 0) s.update(u);
-    if (!s.ok()) {
-      throw std::runtime_error("state " + std::to_string(k) +
-                               ": the tangent is singular (a limit or bifurcation point, or a "
-                               "mechanism the supports leave free): it has no derivative");
+    PathDifferentiator::State x = d.at(states[k], fractions[k], k == 0, "state " + std::to_string(k));
+    r.held_force.push_back(d.held_of(x.dforce));
+    r.energy.row(static_cast<Index>(k)) = x.denergy;
+    r.displacement.push_back(std::move(x.du));
+  }
+  return r;
+}
+
+namespace {
+
+// A knot's derivatives and their rates along the path.
+struct KnotDerivative {
+  Eigen::MatrixXd du, du_rate;          // 3N x P
+  Eigen::MatrixXd force, force_rate;    // held DOFs x P
+  Eigen::RowVectorXd energy, energy_rate;
+};
+
+// The model's size: the largest extent of its nodes' box [mm].
+double model_size(const model::Model& model) {
+  const auto& X = model.nodes();
+  if (X.rows() == 0) return 1.0;
+  const double size = (X.colwise().maxCoeff() - X.colwise().minCoeff()).maxCoeff();
+  return size > 0.0 ? size : 1.0;
+}
+
+void check_knots(Index n, const std::vector<VectorX>& states, const PathKnots& knots) {
+  const std::size_t m = knots.t.size();
+  if (knots.u.size() != m || knots.velocity.size() != m) {
+    throw std::invalid_argument("knots: t, u and velocity must have one entry per knot");
+  }
+  for (std::size_t j = 0; j < m; ++j) {
+    if (knots.u[j].size() != n || knots.velocity[j].size() != n) {
+      throw std::invalid_argument("knot " + std::to_string(j) + ": u and velocity must have 3N = " +
+                                  std::to_string(n) + " entries");
     }
-    Eigen::MatrixXd dforce = Eigen::MatrixXd::Zero(n, P);
-    Eigen::RowVectorXd denergy = Eigen::RowVectorXd::Zero(P);
-    if (positions.cols() > 0) {
-      dforce = s.tangent() * positions;  // x = X + u: the positions move with X
-      denergy = s.internal_force().transpose() * positions;
+    if (j > 0 && !(knots.t[j] > knots.t[j - 1])) {
+      throw std::invalid_argument("knots: t must increase (knot " + std::to_string(j) + ")");
     }
-    add_column_derivatives(model, u, groups, derivatives, dforce, denergy);
-    Eigen::MatrixXd motion;
-    if (drive.cols() > 0) {
-      motion.resize(H, P);
-      for (Index h = 0; h < H; ++h) motion.row(h) = fractions[k] * drive.row(r.held_dofs[h]);
+  }
+  if (knots.step_knot.size() != states.size()) {
+    throw std::invalid_argument("step_knot: must have one entry per state (" +
+                                std::to_string(states.size()) + ")");
+  }
+  for (int j : knots.step_knot) {
+    if (j != -1 && (j < 1 || static_cast<std::size_t>(j) >= m)) {
+      throw std::invalid_argument("step_knot: " + std::to_string(j) +
+                                  " is not -1 or a knot after the first");
     }
-    Eigen::MatrixXd du = s.displacement(dforce, motion);
-    r.held_force.push_back(s.held_force(dforce, du));
-    r.energy.row(static_cast<Index>(k)) = denergy + s.internal_force().transpose() * du;
-    r.displacement.push_back(std::move(du));
+  }
+}
+
+// A knot's derivatives and their rates along the path (interpolated_path_sensitivity):
+// factorised at the knot, the rate of dr/dp + K s by a central difference between the
+// states u +- h v (|h v| = reach) evaluated by `probe`.
+KnotDerivative knot_derivative(PathDifferentiator& d, assembly::Assembler& probe,
+                               const PathKnots& knots, std::size_t j, double reach,
+                               const Eigen::MatrixXd& drive) {
+  PathDifferentiator::State x = d.at(knots.u[j], knots.t[j], false, "knot " + std::to_string(j));
+  const VectorX& v = knots.velocity[j];
+  const double speed = v.lpNorm<Eigen::Infinity>();
+  Eigen::MatrixXd rate = Eigen::MatrixXd::Zero(x.du.rows(), x.du.cols());
+  if (speed > 0.0) {
+    const double h = reach / speed;
+    for (const double side : {1.0, -1.0}) {
+      const VectorX w = knots.u[j] + side * h * v;
+      VectorX f;
+      probe.assemble(w, f, /*with_matrix=*/true);
+      Eigen::MatrixXd g;
+      Eigen::RowVectorXd unused;
+      d.partials(w, probe.matrix(), f, g, unused);
+      g += probe.matrix() * x.du;
+      rate += (side / (2.0 * h)) * g;
+    }
+  }
+  const EquilibriumSensitivity& s = d.factorised();
+  KnotDerivative k;
+  k.du_rate = s.displacement(rate, d.held_rows(drive, 1.0));
+  k.force = d.held_of(x.dforce);
+  k.force_rate = d.held_of(rate + s.tangent() * k.du_rate);
+  k.energy = x.denergy;
+  k.energy_rate = v.transpose() * x.dforce + s.internal_force().transpose() * k.du_rate;
+  k.du = std::move(x.du);
+  return k;
+}
+
+}  // namespace
+
+PathSensitivityResult interpolated_path_sensitivity(const model::Model& model,
+                                                    const std::vector<VectorX>& states,
+                                                    const std::vector<double>& fractions,
+                                                    const PathKnots& knots,
+                                                    const std::vector<Index>& held,
+                                                    const Eigen::MatrixXd& positions,
+                                                    const std::vector<ColumnMotion>& columns,
+                                                    const Eigen::MatrixXd& drive) {
+  const Index n = model.num_dofs();
+  const Index P = variable_count(positions, columns, drive);
+  check_path_inputs(n, P, states, fractions, positions, drive);
+  check_knots(n, states, knots);
+  PathSensitivityResult r;
+  r.energy = Eigen::MatrixXd::Zero(static_cast<Index>(states.size()), P);
+  if (states.empty()) return r;
+  const VectorX& first = knots.u.empty() ? states.front() : knots.u.front();
+  PathDifferentiator d(model, first, held, positions, columns, drive, P);
+  r.held_dofs = d.held_dofs();
+  // The probe states either side of a knot along its path tangent.
+  assembly::Workspace probe_workspace = d.factorised().workspace();
+  assembly::Assembler probe(model, probe_workspace);
+  const double reach = (std::getenv("KR_REACH") ? std::atof(std::getenv("KR_REACH")) : 1e-6) * model_size(model);
+  std::vector<KnotDerivative> at_knot(knots.t.size());
+  std::vector<bool> done(knots.t.size(), false);
+  const auto knot = [&](std::size_t j) -> const KnotDerivative& {
+    if (!done[j]) at_knot[j] = knot_derivative(d, probe, knots, j, reach, drive);
+    done[j] = true;
+    return at_knot[j];
+  };
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const int j = knots.step_knot[i];
+    if (j < 0) {
+      PathDifferentiator::State x = d.at(states[i], fractions[i], false, "state " + std::to_string(i));
+      r.held_force.push_back(d.held_of(x.dforce));
+      r.energy.row(static_cast<Index>(i)) = x.denergy;
+      r.displacement.push_back(std::move(x.du));
+      continue;
+    }
+    const double ta = knots.t[j - 1], tb = knots.t[j], t = fractions[i];
+    const KnotDerivative& a = knot(static_cast<std::size_t>(j - 1));
+    const KnotDerivative& b = knot(static_cast<std::size_t>(j));
+    r.displacement.push_back(hermite<Eigen::MatrixXd>(ta, a.du, a.du_rate, tb, b.du, b.du_rate, t));
+    r.held_force.push_back(hermite<Eigen::MatrixXd>(ta, a.force, a.force_rate, tb, b.force, b.force_rate, t));
+    r.energy.row(static_cast<Index>(i)) =
+        hermite<Eigen::RowVectorXd>(ta, a.energy, a.energy_rate, tb, b.energy, b.energy_rate, t);
   }
   return r;
 }

@@ -57,6 +57,9 @@ class EquilibriumSensitivity {
   const std::vector<Index>& held_dofs() const { return held_dofs_; }
   /// The tangent d f_int/du at the state (3N x 3N, symmetric, unshifted).
   const SparseMatrix& tangent() const { return assembler_->matrix(); }
+  /// The assembly workspace (every DOF, unshifted): a copy evaluates the model at other
+  /// states without building the pattern again.
+  const assembly::Workspace& workspace() const { return assembler_->workspace(); }
   /// The internal force f_int at the state (3N).
   const VectorX& internal_force() const { return force_; }
 
@@ -118,5 +121,39 @@ PathSensitivityResult path_sensitivity(const model::Model& model,
                                        const Eigen::MatrixXd& positions,
                                        const std::vector<ColumnMotion>& columns,
                                        const Eigen::MatrixXd& drive);
+
+/// The knots of an adaptive path and how its samples were read from them (path.hpp:
+/// PathResult::knots, step_knot).
+struct PathKnots {
+  std::vector<double> t;          ///< per knot, increasing
+  std::vector<VectorX> u;         ///< per knot, all DOFs
+  std::vector<VectorX> velocity;  ///< per knot, du/dt, all DOFs
+  std::vector<int> step_knot;     ///< per state: the knot ending its curve, or -1
+};
+
+/// As path_sensitivity, for a path in adaptive increments whose `states` were read off the
+/// cubic Hermite curves between `knots` (the rest, step_knot -1, converged on their own and
+/// differentiated as path_sensitivity does). Only the knots are factorised. A sample's
+/// value is the Hermite combination of its knots' values and path rates, so its derivative
+/// is the same combination of the knots' derivatives s = du/dp and of their rates
+/// ds/dt = d(du/dt)/dp (the knots' t held), which solves
+///
+///     K_ff ds_f/dt = -[d/dt (dr/dp + K s)]_f - K_fc ds_c/dt,
+///
+/// the bracket the derivative along the path at fixed s (the residual's mixed second
+/// derivative), taken by a central difference along du/dt with a step of 1e-6 of the
+/// model's size (its error, ~1e-9 of the derivative, is measured in the tests). The
+/// recorded forces' and the energy's rates follow as d/dp (K du/dt) = d/dt(dr/dp + K s) +
+/// K ds/dt and d/dp (f . du/dt). Only for paths of a fixed model (no rest angles moving
+/// with t) whose loads do not depend on the variables. Throws as path_sensitivity, and
+/// std::invalid_argument for knots and states that do not match.
+PathSensitivityResult interpolated_path_sensitivity(const model::Model& model,
+                                                    const std::vector<VectorX>& states,
+                                                    const std::vector<double>& fractions,
+                                                    const PathKnots& knots,
+                                                    const std::vector<Index>& held,
+                                                    const Eigen::MatrixXd& positions,
+                                                    const std::vector<ColumnMotion>& columns,
+                                                    const Eigen::MatrixXd& drive);
 
 }  // namespace kresling::solvers

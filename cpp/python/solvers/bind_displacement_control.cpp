@@ -11,7 +11,8 @@ void bind_displacement_control(py::module_& m) {
       .def_readwrite("extrapolation", &DisplacementControlOptions::extrapolation)
       .def_readwrite("merlin2_steps", &DisplacementControlOptions::merlin2_steps)
       .def_readwrite("adaptive", &DisplacementControlOptions::adaptive)
-      .def_readwrite("adaptive_tolerance", &DisplacementControlOptions::adaptive_tolerance);
+      .def_readwrite("adaptive_tolerance", &DisplacementControlOptions::adaptive_tolerance)
+      .def_readwrite("keep_knots", &DisplacementControlOptions::keep_knots);
 
   m.def(
       "displacement_control",

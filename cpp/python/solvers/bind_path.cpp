@@ -24,6 +24,14 @@ RowMatrix per_step_rows(const PathResult& r, Index width, Get&& get) {
   return out;
 }
 
+template <typename Get>
+RowMatrix knot_rows(const PathResult& r, Get&& get) {
+  const Index n = r.knots.empty() ? 0 : r.knots.front().u.size();
+  RowMatrix out(static_cast<Index>(r.knots.size()), n);
+  for (std::size_t j = 0; j < r.knots.size(); ++j) out.row(static_cast<Index>(j)) = get(r.knots[j]).transpose();
+  return out;
+}
+
 // The path every solver returns, bound field by field: the Python PathResult reads these
 // (kresling/solvers/path.py documents them).
 void bind_path_result(py::module_& m) {
@@ -64,7 +72,24 @@ void bind_path_result(py::module_& m) {
       .def_readonly("message", &PathResult::message)
       .def_readonly("failed_increment", &PathResult::failed_increment)
       .def_readonly("attempted_increments", &PathResult::attempted_increments)
-      .def_readonly("newton_iterations", &PathResult::newton_iterations);
+      .def_readonly("newton_iterations", &PathResult::newton_iterations)
+      // The knots of an adaptive path (empty arrays when none were kept).
+      .def_property_readonly("knot_t", [](const PathResult& r) {
+        VectorX out(static_cast<Index>(r.knots.size()));
+        for (std::size_t j = 0; j < r.knots.size(); ++j) out[static_cast<Index>(j)] = r.knots[j].t;
+        return out;
+      })
+      .def_property_readonly("knot_displacement", [](const PathResult& r) {
+        return knot_rows(r, [](const PathKnot& k) -> const VectorX& { return k.u; });
+      })
+      .def_property_readonly("knot_velocity", [](const PathResult& r) {
+        return knot_rows(r, [](const PathKnot& k) -> const VectorX& { return k.velocity; });
+      })
+      .def_property_readonly("step_knot", [](const PathResult& r) {
+        return Eigen::Map<const Eigen::VectorXi>(r.step_knot.data(),
+                                                 static_cast<Index>(r.step_knot.size()))
+            .eval();
+      });
 }
 
 }  // namespace

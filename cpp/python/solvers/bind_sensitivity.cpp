@@ -49,16 +49,29 @@ void bind_path_sensitivity(py::module_& m) {
       [](const model::Model& model, const std::vector<VectorX>& states,
          const std::vector<double>& fractions, const std::vector<Index>& held,
          const Eigen::MatrixXd& positions, const std::vector<py::tuple>& columns,
-         const Eigen::MatrixXd& drive) {
+         const Eigen::MatrixXd& drive, const py::object& knots) {
         std::vector<solvers::ColumnMotion> motions;
         for (const py::tuple& c : columns) {
           motions.push_back({c[0].cast<std::string>(), c[1].cast<std::string>(),
                              c[2].cast<Eigen::MatrixXd>()});
         }
+        // knots: None, or (t, u, velocity, step_knot) of an adaptive path.
+        solvers::PathKnots curves;
+        const bool interpolated = !knots.is_none();
+        if (interpolated) {
+          const py::tuple k = knots.cast<py::tuple>();
+          curves.t = k[0].cast<std::vector<double>>();
+          curves.u = k[1].cast<std::vector<VectorX>>();
+          curves.velocity = k[2].cast<std::vector<VectorX>>();
+          curves.step_knot = k[3].cast<std::vector<int>>();
+        }
         solvers::PathSensitivityResult r;
         {
           py::gil_scoped_release release;
-          r = solvers::path_sensitivity(model, states, fractions, held, positions, motions, drive);
+          r = interpolated ? solvers::interpolated_path_sensitivity(model, states, fractions, curves,
+                                                                    held, positions, motions, drive)
+                           : solvers::path_sensitivity(model, states, fractions, held, positions,
+                                                       motions, drive);
         }
         // (S, rows, P) arrays, row-major, from the per-state column-major matrices.
         auto stack = [](const std::vector<Eigen::MatrixXd>& blocks, py::ssize_t rows,
@@ -78,9 +91,10 @@ void bind_path_sensitivity(py::module_& m) {
                               r.energy);
       },
       py::arg("model"), py::arg("states"), py::arg("fractions"), py::arg("held"),
-      py::arg("positions"), py::arg("columns"), py::arg("drive"),
+      py::arg("positions"), py::arg("columns"), py::arg("drive"), py::arg("knots") = py::none(),
       "(held_dofs, du/dp (S, 3N, P), held forces' derivatives (S, H, P), dE/dp (S, P)) of a "
-      "path's states");
+      "path's states; with knots (t, u, velocity, step_knot), of an adaptive path's samples "
+      "from its knots");
 }
 
 }  // namespace
