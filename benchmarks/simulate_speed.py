@@ -72,7 +72,7 @@ def ours(problem, repeat: int):
     return best, sim
 
 
-# MERLIN2 driven from its own input files: model building and path analysis only.
+# MERLIN2 driven from its own input files: its model building, then its path analysis timed.
 _OCTAVE_DRIVER = """
 addpath('{merlin}'); cd('{case}');
 Node = dlmread('input_nodes.csv'); P = dlmread('panels.csv'); Panel = {{}};
