@@ -12,7 +12,9 @@ from kresling.model.fold_angles import fold_angles_deg
 from kresling.simulate.element_histories import ElementHistories, element_histories
 from kresling.simulate.fold_plan import FOLD_TOLERANCE_DEG, FoldPlan
 from kresling.simulate.problem_keys import problem_keys
-from kresling.solvers import PathResult, fold_model_at
+# The package, folding by sensitivities read when first used (a path needs none of it).
+from kresling import solvers
+from kresling.solvers import PathResult
 
 __all__ = ["Simulation", "PathState", "FOLD_TOLERANCE_DEG", "largest_bar_strain"]
 
@@ -83,7 +85,7 @@ class Simulation:
         load_factor = float(self.path.load_factor[step])  # an IndexError names a bad step
         if self.fold is None:
             return self.model
-        return fold_model_at(self.model, self.fold.stages, load_factor)
+        return solvers.fold_model_at(self.model, self.fold.stages, load_factor)
 
     @property
     def completed(self) -> bool:
