@@ -105,7 +105,8 @@ def kept_rows(num_steps: int, every: int) -> np.ndarray:
     """The increments (0-based rows) the files keep: every ``every``-th, the last always."""
     if num_steps == 0:
         return np.zeros(0, dtype=np.int64)
-    return np.unique(np.append(np.arange(every - 1, num_steps, every), num_steps - 1))
+    rows = np.arange(every - 1, num_steps, every)
+    return rows if len(rows) and rows[-1] == num_steps - 1 else np.append(rows, num_steps - 1)
 
 
 def _warn_if_large(simulation, rows, every):
