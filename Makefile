@@ -61,8 +61,9 @@ test-python: install test-deps
 
 # An editable install leaves the package's bytecode to be written on first import, which a
 # shell with PYTHONDONTWRITEBYTECODE set never does: every command would compile each module
-# it imports, every time (about 40 ms of `kresling design`'s start-up). Compiled here
-# instead; a module edited later is recompiled by the next `make install`.
+# it imports, every time (measured: about 17 ms for `kresling design`, 0.1 s for `kresling
+# simulate`). Compiled here instead; a module edited later is recompiled by the next
+# `make install`.
 install: $(VENV)/.installed
 	@$(PY) -m compileall -q kresling >/dev/null
 
