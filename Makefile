@@ -62,7 +62,13 @@ test-cpp: install
 test-python: install test-deps
 	$(PY) -m pytest -q $(PYTEST_PARALLEL)
 
+# An editable install leaves the package's bytecode to be written on first import, which a
+# shell with PYTHONDONTWRITEBYTECODE set never does: every command would compile each module
+# it imports, every time (measured: about 17 ms for `kresling design`, 0.1 s for `kresling
+# simulate`). Compiled here instead; a module edited later is recompiled by the next
+# `make install`.
 install: $(VENV)/.installed
+	@$(PY) -m compileall -q kresling >/dev/null
 
 # $(call apt_install,PACKAGES,WHAT-IF-MISSING-WITHOUT-ROOT): install the missing Debian
 # packages as root; otherwise name them and run the second argument (exit 1 or carry on).

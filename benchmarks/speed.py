@@ -19,7 +19,9 @@ one run (``--only`` picks some):
    iteration fitted from 1,000 DOFs up. Each size runs in a fresh process (its memory is
    its own).
 4. ``outputs``: the time to write every output of each example's ``kresling simulate`` run
-   beside its solve, and the files' sizes (benchmarks/simulate_speed.py);
+   beside its solve, and the files' sizes; then the whole command from the shell against
+   MERLIN2's PathAnalysis, minus a do-nothing command's start-up, goal 20x
+   (benchmarks/simulate_speed.py);
 5. ``startup``: ``kresling bend`` on the optimum as a whole process minus ``kresling
    design``'s, against MERLIN2's stored time, and where the imports go
    (benchmarks/cli_startup.py);
@@ -292,6 +294,7 @@ def main(argv=None) -> int:
     if "outputs" in tables:
         print("\n4. Outputs of kresling simulate beside its solve")
         simulate_speed.print_outputs(repeat)
+        simulate_speed.print_commands(repeat, args.octave)
     if "startup" in tables:
         print("\n5. Start-up: kresling bend through the command line")
         cli_startup.main(["--repeat", str(max(repeat, 3))])

@@ -20,8 +20,12 @@ Examples
 
 import logging
 
-from kresling.geometry import Design, design_quantities
-from kresling.model import Model
+from kresling._lazy import lazy_names
+
+# Imported when first used: ``kresling design`` needs the geometry, not the model (nor the
+# pattern readers the model package brings).
+__getattr__, __dir__ = lazy_names(__name__, {"Design": "geometry",
+                                             "design_quantities": "geometry", "Model": "model"})
 
 __version__ = "0.2.0"
 __all__ = ["Design", "Model", "design_quantities", "__version__"]

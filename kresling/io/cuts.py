@@ -169,7 +169,8 @@ def coincident_twins(vertices, faces, tolerance=DUPLICATE_TOLERANCE) -> list:
         ``other``; empty for a folded pattern (not flat, or a face turned over): folding,
         and folding flat, bring vertices together.
     """
-    used = np.unique(np.fromiter((v for face in faces for v in face), dtype=np.int64))
+    # Sorted in Python: numpy's unique imports numpy.ma (about 10 ms of every read).
+    used = np.array(sorted({v for face in faces for v in face}), dtype=np.int64)
     if len(used) < 2:
         return []
     points = np.asarray(vertices, dtype=float)[used]

@@ -208,18 +208,26 @@ def write_fold_document(path, document: dict) -> Path:
     return path
 
 
+#: Values ``_dumps`` writes as ``json.dumps`` does, without looking inside.
+_SCALARS = (str, float, int, bool, type(None))
+
+
 def _dumps(value, indent: str = "") -> str:
     """JSON with one line per vertex, edge and face: lists of scalars are not broken up."""
+    if type(value) in _SCALARS:   # the most frequent, and no container (checked fast)
+        return json.dumps(value, allow_nan=False)
     inner = indent + " "
     if isinstance(value, Mapping) and value:
         items = [f"{inner}{json.dumps(str(k))}: {_dumps(v, inner)}" for k, v in value.items()]
         return "{\n" + ",\n".join(items) + "\n" + indent + "}"
     if isinstance(value, (list, tuple)) and value:
-        # The common case first, at a fraction of the cost (a path's frames): rows of numbers.
-        rows = [_number_row(v) for v in value]
+        # The common case first, at a fraction of the cost (a path's frames): rows of numbers
+        # (not tried on a flat list: its first item is no row).
+        rows = [_number_row(v) for v in value] if type(value[0]) in (list, tuple) else [None]
         if None not in rows:
             return "[\n" + ",\n".join(inner + r for r in rows) + "\n" + indent + "]"
-        if any(isinstance(v, (Mapping, list, tuple)) for v in value):
+        if any(type(v) not in _SCALARS and isinstance(v, (Mapping, list, tuple))
+               for v in value):
             return ("[\n" + ",\n".join(inner + _dumps(v, inner) for v in value) + "\n" + indent
                     + "]")
     return json.dumps(value, allow_nan=False)

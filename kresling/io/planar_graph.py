@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from kresling.io.close_pairs import close_pairs, lowest_in_cluster
+
 __all__ = ["faces_from_edges", "simple_faces", "plane_coordinates", "planarize", "merge_points"]
 
 
@@ -149,22 +151,8 @@ def merge_points(points: np.ndarray, tolerance: float):
         The lowest index of each point's cluster: points chained by distances up to
         ``tolerance`` form one cluster.
     """
-    # scipy only here: a k-d tree finds the close pairs in O(P log P); imported when
-    # needed so that `import kresling` stays fast.
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
-    from scipy.spatial import cKDTree
-
     points = np.asarray(points, dtype=float)
-    pairs = cKDTree(points).query_pairs(tolerance, output_type="ndarray")
-    if not len(pairs):
-        return np.arange(len(points))
-    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])),
-                       shape=(len(points), len(points)))
-    _, label = connected_components(graph, directed=False)
-    lowest = np.full(label.max() + 1, len(points))
-    np.minimum.at(lowest, label, np.arange(len(points)))
-    return lowest[label]
+    return lowest_in_cluster(len(points), close_pairs(points, tolerance))
 
 
 def planarize(segments: np.ndarray, tolerance: float):

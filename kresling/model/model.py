@@ -200,14 +200,20 @@ class Model:
 
     def family(self, name: str) -> dict:
         """The columns of element family ``name`` (read-only arrays, one row per element)."""
-        tables = self._core.tables()
+        tables = self.__dict__.get("_family_tables")
+        if tables is None:
+            # Read from the core once: a model never changes, and a path's output asks at
+            # every increment.
+            tables = {family: {k: np.asarray(v) for k, v in table.items()}
+                      for family, table in self._core.tables().items()}
+            for table in tables.values():
+                for array in table.values():
+                    array.flags.writeable = False
+            self.__dict__["_family_tables"] = tables
         if name not in tables:
             raise ValueError(f"name = {name!r} is invalid: the model's families are "
                              f"{list(tables)}")
-        columns = {k: np.asarray(v) for k, v in tables[name].items()}
-        for array in columns.values():
-            array.flags.writeable = False
-        return columns
+        return dict(tables[name])
 
     @classmethod
     def from_panels(cls, nodes, panels, *, split="N4B5", duplicate_shared_edges=True,

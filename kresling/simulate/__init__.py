@@ -9,12 +9,15 @@ command line: ``kresling simulate PROBLEM.toml --out DIR``. docs/simulate.md lis
 key.
 """
 
+from kresling._lazy import lazy_names
 from kresling.simulate.element_histories import ElementHistories, element_histories
 from kresling.simulate.problem import Analysis, Load, MonitorStop, Problem, Support, load_problem
 from kresling.simulate.problem_model import build_problem_model
 from kresling.simulate.run import simulate
 from kresling.simulate.simulation import PathState, Simulation
-from kresling.simulate.state_modes import modes_at
+
+# Imported when first used: a path needs no vibration modes (nor the analyses they bring).
+__getattr__, __dir__ = lazy_names(__name__, {"modes_at": "state_modes"})
 
 __all__ = ["simulate", "load_problem", "build_problem_model", "Simulation", "PathState",
            "Problem", "Analysis", "Load", "Support", "MonitorStop", "ElementHistories",

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kresling.simulate.driven_creases import crease_drives, rest_angles_at
-from kresling.simulate.outputs import kept_rows, write_csv
+from kresling.simulate.outputs import kept_rows, write_float_csv
 from kresling.simulate.problem_keys.mass import problem_masses
 from kresling.simulate.simulation import Simulation
 from kresling.solvers import solve_dynamics, with_parameter
@@ -118,7 +118,7 @@ class DynamicRun(Simulation):
         rows = kept_rows(self.path.num_steps, every)
         header = [f"{axis}{node}" for node in range(self.model.num_nodes) for axis in "xyz"]
         written["velocities"] = Path(directory) / "velocities.csv"
-        write_csv(written["velocities"], header, np.asarray(self.history.velocity)[rows].tolist())
+        write_float_csv(written["velocities"], header, np.asarray(self.history.velocity)[rows])
         return written
 
 

@@ -27,6 +27,7 @@ import numpy as np
 
 from kresling.io import write_fold
 from kresling.io.frame_angles import fold_angle_frames
+from kresling.simulate.outputs import float_row
 from kresling.solvers import PathResult
 
 __all__ = ["PathStream"]
@@ -143,8 +144,8 @@ class PathStream:
         writer.writerow([np.asarray(columns[name]).tolist()[0] if name in columns else ""
                          for name in self._history_names])
         handle.flush()
-        handle, writer = self._displacements
-        writer.writerow(self._rows["displacement"][index].tolist())
+        handle, _ = self._displacements
+        handle.write(float_row(self._rows["displacement"][index]))
         handle.flush()
 
     def rewrite(self) -> None:

@@ -116,11 +116,8 @@ def _run_stages(staged, stop, progress, lines) -> StagedRun:
 
 
 def _load_modules():
-    """The methods' and keys' modules, and the k-d tree every pattern's vertices are
-    checked with (kresling.io.planar_graph), loaded before the progress lines' clock
-    starts: the lines time the run, not Python's imports (0.2-0.5 s)."""
-    import scipy.spatial  # noqa: F401
-
+    """The methods' and keys' modules, loaded before the progress lines' clock starts: the
+    lines time the run, not Python's imports."""
     method_names()
     problem_keys()
 

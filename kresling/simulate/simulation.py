@@ -12,7 +12,9 @@ from kresling.model.fold_angles import fold_angles_deg
 from kresling.simulate.element_histories import ElementHistories, element_histories
 from kresling.simulate.fold_plan import FOLD_TOLERANCE_DEG, FoldPlan
 from kresling.simulate.problem_keys import problem_keys
-from kresling.solvers import PathResult, fold_model_at
+# The package, folding by sensitivities read when first used (a path needs none of it).
+from kresling import solvers
+from kresling.solvers import PathResult
 
 __all__ = ["Simulation", "PathState", "FOLD_TOLERANCE_DEG", "largest_bar_strain"]
 
@@ -83,7 +85,7 @@ class Simulation:
         load_factor = float(self.path.load_factor[step])  # an IndexError names a bad step
         if self.fold is None:
             return self.model
-        return fold_model_at(self.model, self.fold.stages, load_factor)
+        return solvers.fold_model_at(self.model, self.fold.stages, load_factor)
 
     @property
     def completed(self) -> bool:
@@ -226,10 +228,14 @@ def largest_bar_strain(model, displacements) -> float:
     """The largest |strain| of any bar at any of the states ``displacements`` (S, 3N)."""
     bars = np.asarray(model.bars)
     rest = np.asarray(model.bar_rest_length)
+    displacements = np.asarray(displacements)
     largest = 0.0
-    for u in np.asarray(displacements):
-        x = model.nodes + u.reshape(-1, 3)
-        length = np.linalg.norm(x[bars[:, 1]] - x[bars[:, 0]], axis=1)
+    # A few states at once (one numpy call each, not one per state), each batch within a
+    # cache (about 32,000 coordinates).
+    chunk = max(1, 2 ** 15 // max(1, 3 * len(bars)))
+    for start in range(0, len(displacements), chunk):
+        x = model.nodes + displacements[start:start + chunk].reshape(-1, model.num_nodes, 3)
+        length = np.linalg.norm(x[:, bars[:, 1]] - x[:, bars[:, 0]], axis=2)
         largest = max(largest, float(np.max(np.abs(length / rest - 1.0))))
     return largest
 

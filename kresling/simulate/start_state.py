@@ -8,7 +8,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from kresling.solvers import with_parameter
+# The package, its sensitivities read when first used (a run from rest needs none).
+from kresling import solvers
 
 __all__ = ["StartState"]
 
@@ -43,7 +44,7 @@ class StartState:
         """``pattern_model`` with its hinges at the rest angles this state holds, and its
         loads held on it (the model's ``forces`` family: constant forces, whatever the
         stage's own method applies besides)."""
-        model = with_parameter(pattern_model.model, "hinges.rest_angle", self.rest_angle)
+        model = solvers.with_parameter(pattern_model.model, "hinges.rest_angle", self.rest_angle)
         if self.loaded:
             per_node = self.forces.reshape(-1, 3)
             nodes = np.flatnonzero(np.any(per_node != 0.0, axis=1))

@@ -5,15 +5,17 @@ elements' parameters, and folding to a shape by those sensitivities. Each path s
 :class:`PathResult`; a solver that stops early says so (``completed``, ``message``)."""
 
 from kresling._lazy import lazy_names
-from kresling.solvers.displacement_control import solve_displacement_control
-from kresling.solvers.fold import FoldResult, fold, solve_fold
-from kresling.solvers.force_control import solve_force_control, solve_mgdcm
-from kresling.solvers.linear import condensed_stiffness
-from kresling.solvers.path import PathResult
+# fold is also a module's name: imported here, not when first used.
+from kresling.solvers.fold import fold
 
-# Imported when first used (a path needs none of them): time integration, sensitivities,
-# folding to a shape. (fold is also a module's name, so it is imported above.)
+# Imported when first used (a bending test needs displacement control alone): the other
+# path solvers, time integration, sensitivities, folding to a shape.
 __getattr__, __dir__ = lazy_names(__name__, {
+    "solve_displacement_control": "displacement_control",
+    **dict.fromkeys(["FoldResult", "solve_fold"], "fold"),
+    **dict.fromkeys(["solve_force_control", "solve_mgdcm"], "force_control"),
+    "condensed_stiffness": "linear",
+    "PathResult": "path",
     **dict.fromkeys(["StableStep", "TimeHistory", "solve_dynamics", "stable_time_step"],
                     "dynamics"),
     **dict.fromkeys(["fold_model_at", "fold_sensitivity"], "fold_sensitivity"),

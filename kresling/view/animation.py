@@ -80,7 +80,8 @@ def select_rows(num_steps: int, frame_stride=None, max_frames: int = 200) -> np.
         stride = as_integer("frame_stride", frame_stride, minimum=1)
         rows = np.unique(np.append(np.arange(0, num_steps, stride), num_steps - 1))
     if len(rows) > max_frames:
-        picks = np.unique(np.round(np.linspace(0, len(rows) - 1, max_frames)).astype(int))
+        picks = np.round(np.linspace(0, len(rows) - 1, max_frames)).astype(int)
+        picks = picks[np.r_[True, picks[1:] != picks[:-1]]]   # ascending: repeats adjacent
         rows = rows[picks]
     return rows
 

@@ -39,6 +39,14 @@ def test_a_command_imports_only_what_it_uses(args):
     assert not modules & {"kresling.sweeps", "kresling.arm", "kresling.manipulator",
                           "kresling.view", "plotly", "matplotlib", "tqdm"}, modules
     assert ("kresling.analyses" in modules) == (args[0] == "bend")
+    # The layers each needs, and no more: design the closed-form geometry; bend also the
+    # specimen's model, the displacement-control solver and the bending and snap-through
+    # tests (not the pattern readers, the assembly's matrices, the simulations).
+    needs = {"kresling", "kresling.cli", "kresling.geometry", "kresling._core",
+             "kresling._validation", "kresling._lazy"}
+    if args[0] == "bend":
+        needs |= {"kresling.model", "kresling.laws", "kresling.solvers", "kresling.analyses"}
+    assert {m for m in modules if m.startswith("kresling")} == needs
 
 
 def test_the_help_still_lists_every_command():

@@ -8,7 +8,6 @@ import logging
 import numpy as np
 
 from kresling.simulate.curve import moving_dof
-from kresling.simulate.dynamics_output import run_dynamics
 from kresling.simulate.methods.method import Method
 from kresling.simulate.simulation import PathState
 
@@ -44,6 +43,9 @@ class Dynamic(Method):
     def run(self, problem, pattern_model, *, stop=None, start=None):
         """The motion, ended early by the problem's monitor or by ``stop`` (which sees
         the time as the load factor)."""
+        # Here: every problem loads the methods, a path needs no time integration.
+        from kresling.simulate.dynamics_output import run_dynamics
+
         monitor, count = problem.analysis.stop, [0]
 
         def rule(time, u):

@@ -8,7 +8,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from kresling.simulate.methods.method import Method
-from kresling.simulate.modes_output import run_modes
 from kresling.simulate.problem_table import count, number, raw
 
 __all__ = ["METHOD", "LoadedState"]
@@ -51,6 +50,9 @@ class Modes(Method):
         return "none: the modes about one state"
 
     def run(self, problem, pattern_model, *, stop=None, start=None):
+        # Here: every problem loads the methods, a path needs no modes (nor the analyses).
+        from kresling.simulate.modes_output import run_modes
+
         return run_modes(problem, pattern_model,
                          state=None if start is None else start.displacement)
 

@@ -32,8 +32,8 @@ from kresling.simulate.problem_model import build_problem_model
 from kresling.simulate.problem_keys import ProblemKey
 from kresling.simulate.problem_keys.material import MATERIAL_KEY_OF_FIELD
 from kresling.simulate.problem_table import raw
-from kresling.solvers import (Direction, Parameter, fold_sensitivity, parameter_names,
-                              path_sensitivity)
+# The package, its sensitivities read when first used (every problem loads this key).
+from kresling import solvers
 
 __all__ = ["KEY", "Sensitivity"]
 
@@ -68,7 +68,7 @@ def read_sensitivity(t, context) -> dict:
         if name == "vertices" or "." in name:
             if name != "vertices":
                 try:
-                    Parameter.parse(name)
+                    solvers.Parameter.parse(name)
                 except ValueError as error:
                     t.fail("parameters", f"has {name!r}: {error}")
             continue
@@ -103,10 +103,10 @@ def _linear_difference(build, value: float):
     return first / value
 
 
-def _material_direction(simulation, name) -> Direction:
+def _material_direction(simulation, name) -> solvers.Direction:
     """d(parameter columns)/d(material key), through the calibration of the model."""
     problem, field = simulation.problem, _FIELD_OF_KEY[name]
-    columns = [c.split(".") for c in parameter_names(simulation.model)]
+    columns = [c.split(".") for c in solvers.parameter_names(simulation.model)]
 
     def build(value):
         material = dataclasses.replace(problem.material, **{field: value})
@@ -126,7 +126,7 @@ def _material_direction(simulation, name) -> Direction:
         start += size
         if np.any(part):
             out[f"{family}.{column}"] = part
-    return Direction(name, columns=out)
+    return solvers.Direction(name, columns=out)
 
 
 def _vertex_directions(simulation) -> list:
@@ -154,7 +154,7 @@ def _vertex_directions(simulation) -> list:
                                      "nodes follow their corners non-linearly (MERLIN2's rule); "
                                      "use [pattern] centre = \"mean\" or split = \"N4B5\"")
                 positions[count:] = derivative
-            directions.append(Direction(f"vertices[{i}].{letter}",
+            directions.append(solvers.Direction(f"vertices[{i}].{letter}",
                                         positions=positions.ravel()))
     return directions
 
@@ -165,7 +165,7 @@ def _directions(simulation) -> list:
         if name == "vertices":
             out.extend(_vertex_directions(simulation))
         elif "." in name:
-            out.append(Parameter.parse(name))
+            out.append(solvers.Parameter.parse(name))
         else:
             out.append(_material_direction(simulation, name))
     return out
@@ -175,7 +175,7 @@ def check_parameters(problem, model):
     """Every 'family.column' names a parameter of the built model (before the run)."""
     if problem.sensitivity is None:
         return
-    known = set(parameter_names(model))
+    known = set(solvers.parameter_names(model))
     for name in problem.sensitivity.parameters:
         if "." in name and name.split("[", 1)[0] not in known:
             raise ValueError(f"{problem.source}: [sensitivity] key 'parameters': {name!r} is "
@@ -195,10 +195,10 @@ def write_sensitivities(simulation, directory, rows) -> dict:
     directions = _directions(simulation)
     try:
         if simulation.fold is not None:
-            found = fold_sensitivity(simulation.model, simulation.fold.stages, simulation.path,
+            found = solvers.fold_sensitivity(simulation.model, simulation.fold.stages, simulation.path,
                                      directions)
         else:
-            found = path_sensitivity(simulation.model, simulation.path, directions)
+            found = solvers.path_sensitivity(simulation.model, simulation.path, directions)
     except ValueError as error:
         raise ValueError(f"{problem.source}: [sensitivity]: {error}") from None
     columns = {"step": np.arange(1, simulation.path.num_steps + 1),
