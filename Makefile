@@ -25,7 +25,8 @@ DOCS_BUILD := docs/_build/html
 # What the compiled extension depends on: any change reinstalls it (incrementally).
 CORE_SOURCES := CMakeLists.txt pyproject.toml $(shell find cmake cpp -type f 2>/dev/null)
 
-.PHONY: demo test test-fast test-cpp test-python install system-deps test-deps benchmark docs fuzz sanitize \
+.PHONY: demo test test-fast test-cpp test-python install dev-deps system-deps test-deps benchmark docs fuzz \
+        sanitize \
         clean help
 
 help:
@@ -45,12 +46,12 @@ demo: install
 	@echo
 	@echo "Open $(REPORT_DIR)/report.html in a browser (report.json holds every check)."
 
-test: install test-cpp test-python
+test: dev-deps test-cpp test-python
 
 # make test-fast: everything but the tests marked @pytest.mark.slow (those over 10 s; a test
 # not marked that takes longer fails, see tests/slow_check.py), the tests that drive a
 # browser and the fuzz suite (both marked by tests/conftest.py; make test runs them all).
-test-fast: install test-cpp
+test-fast: dev-deps test-cpp
 	$(PY) -m pytest -q $(PYTEST_PARALLEL) -m "not slow and not browser and not fuzz"
 
 # The C++ tests and benchmark programs are not built by the install (make demo does not run
@@ -59,7 +60,7 @@ test-cpp: install
 	$(VENV)/bin/cmake --build $(BUILD_DIR) --target kresling_tests
 	$(VENV)/bin/ctest --test-dir $(BUILD_DIR) --output-on-failure -j$(JOBS)
 
-test-python: install test-deps
+test-python: dev-deps test-deps
 	$(PY) -m pytest -q $(PYTEST_PARALLEL)
 
 # An editable install leaves the package's bytecode to be written on first import, which a
@@ -109,37 +110,47 @@ $(VENV)/.venv-ready:
 
 # Editable install with a persistent build directory: C++ rebuilds are incremental, and the
 # same CMake build holds the GoogleTest suite and the benchmark programs for the targets that
-# build them (test-cpp, benchmark). The test extra is for
-# `make test`, the docs extra for `make docs` and for the test that builds the docs.
+# build them (test-cpp, benchmark). The demo needs the package and its fabrication extra
+# (the report writes DXF cut files); the test and docs extras, which the demo does not use,
+# are installed by the targets that do (dev-deps).
 $(VENV)/.installed: $(VENV)/.venv-ready $(CORE_SOURCES) | system-deps
 	$(PY) -m pip install -q --no-build-isolation \
 	  -Cbuild-dir=$(BUILD_DIR) -Ccmake.define.KRESLING_BUILD_TESTS=ON \
 	  -Ccmake.define.KRESLING_BUILD_BENCHMARKS=ON \
-	  -e ".[test,docs]"
+	  -e ".[fabrication]"
 	touch $@
+
+# The test and docs extras, read from pyproject.toml (installed without building the package
+# again).
+$(VENV)/.dev-deps: $(VENV)/.installed pyproject.toml
+	$(PY) -c 'import tomllib; o = tomllib.load(open("pyproject.toml", "rb"))["project"]["optional-dependencies"]; print("\n".join(o["test"] + o["docs"]))' > $(VENV)/dev-requirements.txt
+	$(PY) -m pip install -q -r $(VENV)/dev-requirements.txt
+	touch $@
+
+dev-deps: install $(VENV)/.dev-deps
 
 # The fuzz suite (tests/fuzz/, run by tests/fuzz/test_fuzz.py) runs in `make test` with a few
 # derandomized examples per target; here with FUZZ_SCALE times as many, from random seeds
 # (a failure prints the failing example and a @reproduce_failure line that replays it).
 FUZZ_SCALE ?= 50
 # (KRESLING_SLOW_LIMIT=0: no check of the tests' time, which is FUZZ_SCALE times the usual.)
-fuzz: install
+fuzz: dev-deps
 	KRESLING_FUZZ_SCALE=$(FUZZ_SCALE) KRESLING_SLOW_LIMIT=0 $(PY) -m pytest -q tests/fuzz/test_fuzz.py
 
 # The core under AddressSanitizer and UndefinedBehaviorSanitizer (build/sanitize): the
 # GoogleTest suite, and a pytest subset through the extension built the same way.
 # (KRESLING_SLOW_LIMIT=0: the sanitizers make the tests several times slower.)
-sanitize: install
+sanitize: dev-deps
 	KRESLING_SLOW_LIMIT=0 PY=$(abspath $(PY)) tests/sanitize.sh
 
-benchmark: install
+benchmark: dev-deps
 	$(VENV)/bin/cmake --build $(BUILD_DIR) --target solver_breakdown factorisation_cost contact_broad_phase
 	$(PY) benchmarks/solver_speed.py
 	$(PY) benchmarks/speed.py
 
 # The documentation site, warnings as errors. Every page is rebuilt and the notebooks and
 # the gallery's scripts run each time (under a minute), so no page shows stale output.
-docs: install
+docs: dev-deps
 	$(PY) -m sphinx -E -W --keep-going -q -b html docs $(DOCS_BUILD)
 	@echo "Open $(DOCS_BUILD)/index.html in a browser."
 
