@@ -336,6 +336,14 @@ class PathDifferentiator {
   std::vector<model::ParameterDerivative> derivatives_;
 };
 
+// One state's derivatives, as state k of a path's result.
+void record(PathSensitivityResult& r, std::size_t k, const PathDifferentiator& d,
+            PathDifferentiator::State&& x) {
+  r.held_force.push_back(d.held_of(x.dforce));
+  r.energy.row(static_cast<Index>(k)) = x.denergy;
+  r.displacement.push_back(std::move(x.du));
+}
+
 Index variable_count(const Eigen::MatrixXd& positions, const std::vector<ColumnMotion>& columns,
                      const Eigen::MatrixXd& drive) {
   return positions.cols() > 0 ? positions.cols()
@@ -361,10 +369,7 @@ PathSensitivityResult path_sensitivity(const model::Model& model,
   PathDifferentiator d(model, states.front(), held, positions, columns, drive, P);
   r.held_dofs = d.held_dofs();
   for (std::size_t k = 0; k < states.size(); ++k) {
-    PathDifferentiator::State x = d.at(states[k], fractions[k], k == 0, "state " + std::to_string(k));
-    r.held_force.push_back(d.held_of(x.dforce));
-    r.energy.row(static_cast<Index>(k)) = x.denergy;
-    r.displacement.push_back(std::move(x.du));
+    record(r, k, d, d.at(states[k], fractions[k], k == 0, "state " + std::to_string(k)));
   }
   return r;
 }
@@ -485,10 +490,7 @@ PathSensitivityResult interpolated_path_sensitivity(const model::Model& model,
   for (std::size_t i = 0; i < states.size(); ++i) {
     const int j = knots.step_knot[i];
     if (j < 0) {
-      PathDifferentiator::State x = d.at(states[i], fractions[i], false, "state " + std::to_string(i));
-      r.held_force.push_back(d.held_of(x.dforce));
-      r.energy.row(static_cast<Index>(i)) = x.denergy;
-      r.displacement.push_back(std::move(x.du));
+      record(r, i, d, d.at(states[i], fractions[i], false, "state " + std::to_string(i)));
       continue;
     }
     const double ta = knots.t[j - 1], tb = knots.t[j], t = fractions[i];
