@@ -195,3 +195,39 @@ TEST(SupernodalCholesky, LdltGivesTheInertiaAndSolvesIndefiniteSystems) {
   const Eigen::VectorXd expected = cholmod_solution(K, b);
   EXPECT_LE((ours.solve(b) - expected).norm(), 1e-12 * expected.norm());
 }
+
+// Each compiled set of dense kernels (the baseline, and AVX2+FMA where the processor has
+// them) factorises alike: the solutions equal CHOLMOD's simplicial one to 1e-12 relative
+// (as above: the kernels differ only in rounding), and the LDL^T's inertia is the same. The
+// default is AVX2 exactly where it is supported; asking for it elsewhere is refused.
+TEST(SupernodalCholesky, EveryKernelSetFactorisesAlike) {
+  using kresling::solvers::InstructionSet;
+  const bool avx2 = kresling::solvers::avx2_kernels_supported();
+  SupernodalCholesky ours;
+  EXPECT_EQ(ours.instruction_set(), avx2 ? InstructionSet::AVX2 : InstructionSet::Baseline);
+  if (!avx2) EXPECT_THROW(ours.use_instruction_set(InstructionSet::AVX2), std::invalid_argument);
+  std::vector<InstructionSet> sets{InstructionSet::Baseline};
+  if (avx2) sets.push_back(InstructionSet::AVX2);
+  // Wide enough that the dense kernels block (supernodes of a hundred columns and more).
+  const SparseMatrix K = sheet(40, 0.5, 13u);
+  const Eigen::VectorXd b = right_hand_side(K.rows());
+  const Eigen::VectorXd expected = cholmod_solution(K, b);
+  // The same sheet shifted down by 4, past its smallest eigenvalues (indefinite): its
+  // LDL^T's negative pivots, per set.
+  const SparseMatrix shifted = sheet(40, -4.0, 13u);
+  std::vector<long> negative;
+  for (InstructionSet set : sets) {
+    for (int threads : {1, 2}) {
+      ours.use_instruction_set(set);
+      ours.analyze(K, CHOLMOD_NESDIS, threads);
+      EXPECT_EQ(ours.instruction_set(), set);  // kept across the analysis
+      ASSERT_TRUE(ours.factorize(K));
+      EXPECT_LE((ours.solve(b) - expected).norm(), 1e-12 * expected.norm());
+      ASSERT_TRUE(ours.factorize_ldlt(shifted));
+      negative.push_back((ours.ldlt_diagonal().array() < 0.0).count());
+      EXPECT_LE((shifted * ours.solve(b) - b).norm(), 1e-8 * b.norm());
+    }
+  }
+  EXPECT_GT(negative.front(), 0);
+  for (long count : negative) EXPECT_EQ(count, negative.front());
+}

@@ -8,49 +8,11 @@
 #include <thread>
 
 #include <Eigen/CholmodSupport>
-#include <Eigen/Dense>
+
+#include "kresling/solvers/supernodal_kernels.hpp"
 
 namespace kresling::solvers {
 
-namespace {
-
-using Block = Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
-using ConstBlock = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
-
-// Pivots accepted by the LDL^T: finite and non-zero (the caller judges their size).
-bool usable_pivot(double d) { return std::isfinite(d) && d != 0.0; }
-
-// A = L D L^T in place, without pivoting, for the lower triangle of the square block A: L's
-// strict lower triangle and D on the diagonal. Right-looking in panels of kPanel columns:
-// a panel is factorised column by column (each column updating the rest of the panel), then
-// the trailing block takes the panel's update as one product L21 (D1 L21^T), the kernel
-// that carries most of the flops. False if a pivot is unusable.
-bool ldlt_inplace(Block A) {
-  constexpr Index kPanel = 32;
-  const Index n = A.rows();
-  for (Index k = 0; k < n; k += kPanel) {
-    const Index width = std::min(kPanel, n - k);
-    for (Index j = k; j < k + width; ++j) {
-      const double d = A(j, j);
-      if (!usable_pivot(d)) return false;
-      // A(i, c) -= L(i, j) d L(c, j) = A(i, j) A(c, j) / d, both still unscaled.
-      for (Index c = j + 1; c < k + width; ++c) {
-        A.col(c).tail(n - c) -= (A(c, j) / d) * A.col(j).tail(n - c);
-      }
-      A.col(j).tail(n - j - 1) /= d;
-    }
-    const Index rest = n - k - width;
-    if (rest > 0) {
-      const auto L21 = A.block(k + width, k, rest, width);
-      const Eigen::MatrixXd W = L21 * A.diagonal().segment(k, width).asDiagonal();
-      A.block(k + width, k + width, rest, rest).triangularView<Eigen::Lower>() -=
-          L21 * W.transpose();
-    }
-  }
-  return true;
-}
-
-}  // namespace
 
 struct SupernodalCholesky::Impl {
   // The symbolic factor (CHOLMOD's layout): supernode s holds the columns
@@ -74,6 +36,7 @@ struct SupernodalCholesky::Impl {
   std::vector<std::vector<int>> subtrees;
   std::vector<int> top;
   bool ok = false;
+  const SupernodalKernels* kernels = &supernodal_kernels();
 
   // Per-thread scratch: the descendants waiting to update each supernode (a list through
   // `next`, heads per supernode), the relative row map and the update block.
@@ -102,7 +65,6 @@ struct SupernodalCholesky::Impl {
   std::vector<int> split_tree(const Weights& w, int threads) const;
   void assign_subtrees(const Weights& w, const std::vector<int>& pieces, int threads);
   bool factor_supernode(int s, Scratch& scratch);
-  bool factor_diagonal(Block S, int ncol, int nrow);
   bool factorize(const SparseMatrix& K, bool with_d);
   void link(int d, int p_next, std::vector<int>& head);
 };
@@ -124,7 +86,9 @@ SupernodalCholesky::Analysis SupernodalCholesky::analyze(const SparseMatrix& K,
                                                          const std::vector<int>& orderings,
                                                          int threads) {
   Impl& m = *impl_;
+  const SupernodalKernels* kernels = m.kernels;
   m = Impl();
+  m.kernels = kernels;
   m.n = K.rows();
   Analysis analysis;
   if (m.n == 0) return analysis;
@@ -223,6 +187,14 @@ void SupernodalCholesky::Impl::map_entries(const SparseMatrix& K) {
     }
   }
   stored_entries = K.nonZeros();
+}
+
+void SupernodalCholesky::use_instruction_set(InstructionSet set) {
+  impl_->kernels = &supernodal_kernels(set);
+}
+
+InstructionSet SupernodalCholesky::instruction_set() const {
+  return impl_->kernels->instruction_set;
 }
 
 void SupernodalCholesky::use_threads(int threads) {
@@ -361,7 +333,7 @@ bool SupernodalCholesky::Impl::factor_supernode(int s, Scratch& scratch) {
   const int nrow = pi[s + 1] - pi[s];
   const int* srows = rows.data() + pi[s];
   for (int i = 0; i < nrow; ++i) scratch.map[srows[i]] = i;
-  Block S(values.data() + px[s], nrow, ncol, Eigen::OuterStride<>(nrow));
+  double* S = values.data() + px[s];
   int d = scratch.head[s];
   scratch.head[s] = -1;
   while (d >= 0) {
@@ -372,54 +344,20 @@ bool SupernodalCholesky::Impl::factor_supernode(int s, Scratch& scratch) {
     int p2 = p1;
     while (p2 < drow && drows[p2] < k2) ++p2;
     const int n1 = p2 - p1, n2 = drow - p1;  // rows in s's columns; rows from there down
-    ConstBlock Ld(values.data() + px[d], drow, dcol, Eigen::OuterStride<>(drow));
-    Block C(scratch.update.data(), n2, n1, Eigen::OuterStride<>(n2));
-    const auto upper = Ld.block(p1, 0, n1, dcol);
-    if (ldlt) {
-      // The same update with D between: L (D U^T), the top block's lower triangle alone.
-      Block W(scratch.scaled.data(), n1, dcol, Eigen::OuterStride<>(n1));
-      W.noalias() = upper * Ld.diagonal().asDiagonal();
-      C.topRows(n1).triangularView<Eigen::Lower>() = upper * W.transpose();
-      if (n2 > n1) C.bottomRows(n2 - n1).noalias() = Ld.block(p2, 0, n2 - n1, dcol) * W.transpose();
-    } else {
-      // The top block is symmetric: its lower triangle alone (a rank update), the rest a
-      // product.
-      C.topRows(n1).triangularView<Eigen::Lower>().setZero();
-      C.topRows(n1).selfadjointView<Eigen::Lower>().rankUpdate(upper);
-      if (n2 > n1) C.bottomRows(n2 - n1).noalias() = Ld.block(p2, 0, n2 - n1, dcol) * upper.transpose();
-    }
+    const double* C = scratch.update.data();
+    kernels->update(values.data() + px[d], drow, dcol, p1, p2, ldlt, scratch.update.data(),
+                    scratch.scaled.data());
     for (int i = 0; i < n2; ++i) scratch.relative[i] = scratch.map[drows[p1 + i]];
     for (int j = 0; j < n1; ++j) {
-      double* column = S.data() + static_cast<Index>(drows[p1 + j] - k1) * nrow;
-      const double* c = C.data() + static_cast<Index>(j) * n2;
+      double* column = S + static_cast<Index>(drows[p1 + j] - k1) * nrow;
+      const double* c = C + static_cast<Index>(j) * n2;
       for (int i = j; i < n2; ++i) column[scratch.relative[i]] -= c[i];
     }
     link(d, p2, scratch.head);
     d = d_next;
   }
-  if (!factor_diagonal(S, ncol, nrow)) return false;
+  if (!kernels->factor(S, nrow, ncol, ldlt)) return false;
   link(s, ncol, scratch.head);
-  return true;
-}
-
-// The supernode's diagonal block, then the rows below it: L21 = A21 L11^-T (Cholesky) or
-// A21 L11^-T D^-1 (LDL^T).
-bool SupernodalCholesky::Impl::factor_diagonal(Block S, int ncol, int nrow) {
-  Block diagonal(S.data(), ncol, ncol, Eigen::OuterStride<>(nrow));
-  auto below = S.bottomRows(nrow - ncol);
-  if (ldlt) {
-    if (!ldlt_inplace(diagonal)) return false;
-    if (nrow > ncol) {
-      diagonal.triangularView<Eigen::UnitLower>().adjoint().solveInPlace<Eigen::OnTheRight>(below);
-      below = below * diagonal.diagonal().cwiseInverse().asDiagonal();
-    }
-    return true;
-  }
-  if (Eigen::internal::llt_inplace<double, Eigen::Lower>::blocked(diagonal) != -1) return false;
-  if (!diagonal.diagonal().allFinite()) return false;
-  if (nrow > ncol) {
-    diagonal.triangularView<Eigen::Lower>().adjoint().solveInPlace<Eigen::OnTheRight>(below);
-  }
   return true;
 }
 

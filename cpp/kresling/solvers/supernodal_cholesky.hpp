@@ -9,7 +9,8 @@
 /// numeric factorisation is a left-looking supernodal one (George and Liu's, as in CHOLMOD):
 /// each supernode gathers the updates of the supernodes below it in the elimination tree
 /// (one dense product each), then factorises its diagonal block and solves for the rows
-/// under it, all with Eigen's blocked, vectorised dense kernels. The symbolic analysis also
+/// under it, all with Eigen's blocked, vectorised dense kernels (supernodal_kernels.hpp:
+/// compiled for AVX2 and FMA beside the baseline, chosen by the processor). The symbolic analysis also
 /// splits the elimination tree into independent subtrees, which factorise on separate
 /// threads (nested dissection makes two halves of nearly equal work below the top
 /// separator).
@@ -26,6 +27,7 @@
 #include <Eigen/SparseCore>
 
 #include "kresling/core/types.hpp"
+#include "kresling/solvers/supernodal_kernels.hpp"
 
 namespace kresling::solvers {
 
@@ -57,6 +59,12 @@ class SupernodalCholesky {
   /// Split the analysed elimination tree over `threads` threads (1: all on the caller's);
   /// for choosing the count from the analysis's flops.
   void use_threads(int threads);
+
+  /// Which compiled dense kernels the numeric factorisations use (Auto, the default: AVX2
+  /// and FMA where the processor has them). Kept across analyses; throws
+  /// std::invalid_argument for AVX2 where it is not supported (avx2_kernels_supported).
+  void use_instruction_set(InstructionSet set);
+  InstructionSet instruction_set() const;
 
   /// Numeric factorisation of K (same pattern as analysed). False if K is not positive
   /// definite (a pivot is not positive or not finite): the factor is then unusable.

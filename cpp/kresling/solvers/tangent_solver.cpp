@@ -40,12 +40,6 @@ constexpr Index kDenseBelow = 32;
 // start-up cancels the gain).
 constexpr double kThreadedFlops = 1e8;
 
-int threads_for(double flops) {
-  if (flops < kThreadedFlops) return 1;
-  const unsigned hardware = std::thread::hardware_concurrency();
-  return static_cast<int>(std::clamp(hardware, 1u, 4u));
-}
-
 Ordering ordering_of(int cholmod_ordering) {
   switch (cholmod_ordering) {
     case CHOLMOD_AMD:
@@ -123,6 +117,12 @@ class CholmodLdlt {
 
 }  // namespace
 
+int factorisation_threads(double flops) {
+  if (flops < kThreadedFlops) return 1;
+  const unsigned hardware = std::thread::hardware_concurrency();
+  return static_cast<int>(std::clamp(hardware, 1u, 4u));
+}
+
 CholeskyChoice choose_cholesky(Index n) {
   return n < kDenseBelow ? CholeskyChoice::Dense : CholeskyChoice::Supernodal;
 }
@@ -177,7 +177,7 @@ void TangentSolver::Impl::make_plan(const SparseMatrix& K) {
     record(c.method[c.selected].ordering, c.lnz, c.fl);
   } else if (plan.cholesky == CholeskyChoice::Supernodal) {
     const SupernodalCholesky::Analysis a = supernodal.analyze(K, orderings_for(n));
-    supernodal.use_threads(threads_for(a.flops));
+    supernodal.use_threads(factorisation_threads(a.flops));
     record(a.ordering, a.factor_nonzeros, a.flops);
   } else {
     const double m = static_cast<double>(n);

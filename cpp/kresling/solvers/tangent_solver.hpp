@@ -68,6 +68,11 @@ struct FactorizationPlan {
 /// only the size (tangent_solver.cpp has the table). Exposed so that the rule can be tested.
 CholeskyChoice choose_cholesky(Index n);
 
+/// Threads the supernodal factorisation splits its elimination tree over, for a
+/// factorisation of `flops` (one below 1e8 flops, where starting threads costs more than
+/// it saves; else the processor's threads, at most 4).
+int factorisation_threads(double flops);
+
 class TangentSolver {
  public:
   explicit TangentSolver(CholeskyChoice choice = CholeskyChoice::Auto);
