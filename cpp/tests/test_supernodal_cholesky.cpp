@@ -231,3 +231,32 @@ TEST(SupernodalCholesky, EveryKernelSetFactorisesAlike) {
   EXPECT_GT(negative.front(), 0);
   for (long count : negative) EXPECT_EQ(count, negative.front());
 }
+
+// A sheet large enough that its top separator (~390 columns) is shared by the threads:
+// the factors on two threads solve as the one-thread factor does, to rounding (1e-12
+// relative: the shared panels sum their updates in another order), and the LDL^T of the
+// sheet shifted to be indefinite has the same inertia on either.
+TEST(SupernodalCholesky, SharedTopSupernodesChangeOnlyTheRounding) {
+  const SparseMatrix K = sheet(128, 0.5, 17u), shifted = sheet(128, -4.0, 17u);
+  const Eigen::VectorXd b = right_hand_side(K.rows());
+  SupernodalCholesky one, two;
+  one.analyze(K, CHOLMOD_NESDIS, 1);
+  two.analyze(K, CHOLMOD_NESDIS, 2);
+  EXPECT_EQ(one.shared_supernodes(), 0);
+  EXPECT_GE(two.shared_supernodes(), 1);
+  ASSERT_TRUE(one.factorize(K));
+  ASSERT_TRUE(two.factorize(K));
+  const Eigen::VectorXd x1 = one.solve(b), x2 = two.solve(b);
+  EXPECT_LE((x1 - x2).norm(), 1e-12 * x1.norm());
+  EXPECT_LE((K * x2 - b).norm(), 1e-12 * b.norm());
+  ASSERT_TRUE(one.factorize_ldlt(shifted));
+  ASSERT_TRUE(two.factorize_ldlt(shifted));
+  const long negative = (one.ldlt_diagonal().array() < 0.0).count();
+  EXPECT_GT(negative, 0);
+  EXPECT_EQ((two.ldlt_diagonal().array() < 0.0).count(), negative);
+  const Eigen::VectorXd y1 = one.solve(b), y2 = two.solve(b);
+  EXPECT_LE((shifted * y2 - b).norm(), 1e-8 * b.norm());
+  EXPECT_LE((y1 - y2).norm(), 1e-8 * y1.norm());
+  // Not positive definite: the shared supernode's panels refuse as the one-thread path does.
+  EXPECT_FALSE(two.factorize(shifted));
+}

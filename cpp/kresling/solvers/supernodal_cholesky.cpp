@@ -14,6 +14,41 @@
 namespace kresling::solvers {
 
 
+namespace {
+
+// A supernode above the threads' subtrees shares its work among the threads (it waits for
+// them anyway) from this many flops up (its own, as weigh() counts them): below, starting
+// the threads costs more than it saves.
+constexpr double kSharedSupernodeFlops = 1e7;
+// Columns of the panels in which a shared supernode factorises its own columns.
+constexpr int kSharedPanel = 96;
+
+// Runs work(0) here and work(1) ... work(threads - 1) on threads of their own, concurrently.
+template <class Work>
+void on_threads(int threads, const Work& work) {
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (auto& thread : pool) thread.join();
+}
+
+// Bounds splitting the columns [0, ncol) of a lower trapezoid of nrow rows into `parts`
+// ranges of about equal work (column j, nrow - j entries): parts + 1 ascending offsets.
+std::vector<int> balanced_columns(int nrow, int ncol, int parts) {
+  std::vector<int> bounds(parts + 1, ncol);
+  bounds[0] = 0;
+  const double m = nrow, total = ncol * (m - 0.5 * ncol);
+  for (int t = 1; t < parts; ++t) {
+    // c (m - c / 2) = total t / parts, the smaller root.
+    const double share = total * t / parts;
+    const double c = m - std::sqrt(std::max(m * m - 2.0 * share, 0.0));
+    bounds[t] = std::clamp(static_cast<int>(std::lround(c)), bounds[t - 1], ncol);
+  }
+  return bounds;
+}
+
+}  // namespace
+
 struct SupernodalCholesky::Impl {
   // The symbolic factor (CHOLMOD's layout): supernode s holds the columns
   // [super[s], super[s+1]) of the permuted matrix; its rows are rows[pi[s] .. pi[s+1]) (its
@@ -35,6 +70,7 @@ struct SupernodalCholesky::Impl {
   // then the rest ("top", ascending) on the calling thread.
   std::vector<std::vector<int>> subtrees;
   std::vector<int> top;
+  std::vector<char> shared;         // per supernode of top: its work shared by the threads
   bool ok = false;
   const SupernodalKernels* kernels = &supernodal_kernels();
 
@@ -65,6 +101,9 @@ struct SupernodalCholesky::Impl {
   std::vector<int> split_tree(const Weights& w, int threads) const;
   void assign_subtrees(const Weights& w, const std::vector<int>& pieces, int threads);
   bool factor_supernode(int s, Scratch& scratch);
+  bool factor_supernode_shared(int s);
+  void subtract_update(const double* L, int ld, int drow, int dcol, int p1, int p2,
+                       const int* target_rows, double* S, int nrow, int k1, Scratch& scratch);
   bool factorize(const SparseMatrix& K, bool with_d);
   void link(int d, int p_next, std::vector<int>& head);
 };
@@ -76,6 +115,9 @@ double SupernodalCholesky::factor_nonzeros() const {
   return static_cast<double>(impl_->values.size());
 }
 int SupernodalCholesky::supernodes() const { return impl_->nsuper; }
+int SupernodalCholesky::shared_supernodes() const {
+  return static_cast<int>(std::count(impl_->shared.begin(), impl_->shared.end(), 1));
+}
 int SupernodalCholesky::working_threads() const {
   int working = 0;
   for (const auto& share : impl_->subtrees) working += share.empty() ? 0 : 1;
@@ -219,6 +261,7 @@ void SupernodalCholesky::use_threads(int threads) {
 void SupernodalCholesky::Impl::schedule(int threads) {
   subtrees.assign(1, {});
   top.clear();
+  shared.clear();
   const Weights w = weigh();
   if (threads <= 1 || nsuper < 2) {
     subtrees[0].resize(nsuper);
@@ -226,6 +269,10 @@ void SupernodalCholesky::Impl::schedule(int threads) {
     return;
   }
   assign_subtrees(w, split_tree(w, threads), threads);
+  shared.assign(top.size(), 0);
+  for (std::size_t k = 0; k < top.size(); ++k) {
+    shared[k] = w.own[top[k]] >= kSharedSupernodeFlops;
+  }
 }
 
 SupernodalCholesky::Impl::Weights SupernodalCholesky::Impl::weigh() const {
@@ -326,6 +373,80 @@ void SupernodalCholesky::Impl::link(int d, int p_next, std::vector<int>& head) {
   }
 }
 
+// S -= the update of a block L (rows [p1, drow) by rows [p1, p2), see SupernodalKernels),
+// whose rows are target_rows, into the supernode S (nrow rows, first column k1) whose rows
+// scratch.map locates.
+void SupernodalCholesky::Impl::subtract_update(const double* L, int ld, int drow, int dcol,
+                                                int p1, int p2, const int* target_rows,
+                                                double* S, int nrow, int k1, Scratch& scratch) {
+  const int n1 = p2 - p1, n2 = drow - p1;
+  kernels->update(L, ld, drow, dcol, p1, p2, ldlt, scratch.update.data(), scratch.scaled.data());
+  for (int i = 0; i < n2; ++i) scratch.relative[i] = scratch.map[target_rows[p1 + i]];
+  for (int j = 0; j < n1; ++j) {
+    double* column = S + static_cast<Index>(target_rows[p1 + j] - k1) * nrow;
+    const double* c = scratch.update.data() + static_cast<Index>(j) * n2;
+    for (int i = j; i < n2; ++i) column[scratch.relative[i]] -= c[i];
+  }
+}
+
+// A large supernode of the top part, its work shared by the threads: each thread takes a
+// range of its columns (of about equal work) and subtracts from them the updates of every
+// waiting supernode, then its own columns factorise in panels, each panel's update of the
+// columns after it shared alike. The threads write disjoint columns; the result differs from
+// factor_supernode's only in rounding (the panels' updates are summed in another order).
+bool SupernodalCholesky::Impl::factor_supernode_shared(int s) {
+  const int k1 = super[s], ncol = super[s + 1] - k1, nrow = pi[s + 1] - pi[s];
+  const int* srows = rows.data() + pi[s];
+  const int threads = static_cast<int>(per_thread.size());
+  for (auto& sc : per_thread) {
+    for (int i = 0; i < nrow; ++i) sc.map[srows[i]] = i;
+  }
+  double* S = values.data() + px[s];
+  // The waiting supernodes and the range of their rows in s's columns.
+  struct Waiting { int d, p1, p2; };
+  std::vector<Waiting> waiting;
+  Scratch& main = per_thread[0];
+  for (int d = main.head[s]; d >= 0; d = next[d]) {
+    const int drow = pi[d + 1] - pi[d];
+    const int* drows = rows.data() + pi[d];
+    int p2 = position[d];
+    while (p2 < drow && drows[p2] < k1 + ncol) ++p2;
+    waiting.push_back({d, position[d], p2});
+  }
+  main.head[s] = -1;
+  const std::vector<int> columns = balanced_columns(nrow, ncol, threads);
+  on_threads(threads, [&](int t) {
+    for (const Waiting& w : waiting) {
+      const int* drows = rows.data() + pi[w.d];
+      const int q1 = static_cast<int>(
+          std::lower_bound(drows + w.p1, drows + w.p2, k1 + columns[t]) - drows);
+      const int q2 = static_cast<int>(
+          std::lower_bound(drows + q1, drows + w.p2, k1 + columns[t + 1]) - drows);
+      if (q1 == q2) continue;
+      const int drow = pi[w.d + 1] - pi[w.d], dcol = super[w.d + 1] - super[w.d];
+      subtract_update(values.data() + px[w.d], drow, drow, dcol, q1, q2, drows, S, nrow, k1,
+                      per_thread[t]);
+    }
+  });
+  for (const Waiting& w : waiting) link(w.d, w.p2, main.head);
+  for (int k = 0; k < ncol; k += kSharedPanel) {
+    const int width = std::min(kSharedPanel, ncol - k);
+    double* panel = S + static_cast<Index>(k) * nrow + k;
+    if (!kernels->factor(panel, nrow, nrow - k, width, ldlt)) return false;
+    const int after = ncol - k - width;
+    if (after == 0) continue;
+    const std::vector<int> split = balanced_columns(nrow - k - width, after, threads);
+    on_threads(threads, [&](int t) {
+      if (split[t] == split[t + 1]) return;
+      // The panel is a supernode of its own whose rows are s's from k on.
+      subtract_update(panel, nrow, nrow - k, width, width + split[t], width + split[t + 1],
+                      srows + k, S, nrow, k1, per_thread[t]);
+    });
+  }
+  link(s, ncol, main.head);
+  return true;
+}
+
 // Left-looking: the updates of every supernode waiting on s, then s's diagonal block and
 // the rows below it.
 bool SupernodalCholesky::Impl::factor_supernode(int s, Scratch& scratch) {
@@ -343,20 +464,11 @@ bool SupernodalCholesky::Impl::factor_supernode(int s, Scratch& scratch) {
     const int p1 = position[d];
     int p2 = p1;
     while (p2 < drow && drows[p2] < k2) ++p2;
-    const int n1 = p2 - p1, n2 = drow - p1;  // rows in s's columns; rows from there down
-    const double* C = scratch.update.data();
-    kernels->update(values.data() + px[d], drow, dcol, p1, p2, ldlt, scratch.update.data(),
-                    scratch.scaled.data());
-    for (int i = 0; i < n2; ++i) scratch.relative[i] = scratch.map[drows[p1 + i]];
-    for (int j = 0; j < n1; ++j) {
-      double* column = S + static_cast<Index>(drows[p1 + j] - k1) * nrow;
-      const double* c = C + static_cast<Index>(j) * n2;
-      for (int i = j; i < n2; ++i) column[scratch.relative[i]] -= c[i];
-    }
+    subtract_update(values.data() + px[d], drow, drow, dcol, p1, p2, drows, S, nrow, k1, scratch);
     link(d, p2, scratch.head);
     d = d_next;
   }
-  if (!kernels->factor(S, nrow, ncol, ldlt)) return false;
+  if (!kernels->factor(S, nrow, nrow, ncol, ldlt)) return false;
   link(s, ncol, scratch.head);
   return true;
 }
@@ -431,8 +543,11 @@ bool SupernodalCholesky::Impl::factorize(const SparseMatrix& K, bool with_d) {
         }
       }
     }
-    for (int s : m.top) {
-      if (!m.factor_supernode(s, main)) return false;
+    for (std::size_t k = 0; k < m.top.size(); ++k) {
+      const int s = m.top[k];
+      if (!(m.shared[k] ? m.factor_supernode_shared(s) : m.factor_supernode(s, main))) {
+        return false;
+      }
     }
   }
   m.ok = true;

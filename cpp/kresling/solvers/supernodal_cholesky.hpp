@@ -13,7 +13,8 @@
 /// compiled for AVX2 and FMA beside the baseline, chosen by the processor). The symbolic analysis also
 /// splits the elimination tree into independent subtrees, which factorise on separate
 /// threads (nested dissection makes two halves of nearly equal work below the top
-/// separator).
+/// separator); the few large supernodes above them (the top separators, a fifth of a large
+/// sheet's time on one thread) share their work among the threads by columns.
 ///
 /// The same symbolic factor also serves an LDL^T factorisation without pivoting (L unit
 /// lower triangular, D diagonal) of a symmetric indefinite matrix with the same pattern: the
@@ -84,6 +85,9 @@ class SupernodalCholesky {
   int supernodes() const;
   /// Threads that factorise a share of the elimination tree (1: no split paid off).
   int working_threads() const;
+  /// Supernodes above the threads' subtrees large enough that the threads share their work
+  /// (nested dissection's top separators of large sheets).
+  int shared_supernodes() const;
 
  private:
   struct Impl;

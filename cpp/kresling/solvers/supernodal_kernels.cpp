@@ -6,16 +6,16 @@ namespace kresling::solvers {
 
 // Each compiled set's kernels (supernodal_kernels.inc, in its own namespace).
 namespace baseline_kernels {
-void update(const double* L, int drow, int dcol, int p1, int p2, bool ldlt, double* C,
+void update(const double* L, int ld, int drow, int dcol, int p1, int p2, bool ldlt, double* C,
             double* scaled);
-bool factor(double* S, int nrow, int ncol, bool ldlt);
+bool factor(double* S, int ld, int nrow, int ncol, bool ldlt);
 }  // namespace baseline_kernels
 
 #if KRESLING_AVX2_KERNELS
 namespace avx2_kernels {
-void update(const double* L, int drow, int dcol, int p1, int p2, bool ldlt, double* C,
+void update(const double* L, int ld, int drow, int dcol, int p1, int p2, bool ldlt, double* C,
             double* scaled);
-bool factor(double* S, int nrow, int ncol, bool ldlt);
+bool factor(double* S, int ld, int nrow, int ncol, bool ldlt);
 }  // namespace avx2_kernels
 #endif
 

@@ -24,18 +24,18 @@ enum class InstructionSet : int {
 /// The dense kernels of one supernode, on column-major blocks.
 struct SupernodalKernels {
   /// The update a descendant supernode sends: its block L (drow x dcol, leading dimension
-  /// drow), of which rows [p1, p2) fall in the target's columns and rows [p1, drow) from
+  /// ld >= drow), of which rows [p1, p2) fall in the target's columns and rows [p1, drow) from
   /// there down. C (n2 x n1, n2 = drow - p1, n1 = p2 - p1, leading dimension n2) receives
   /// L[p1:, :] L[p1:p2, :]^T, or with L's diagonal D between for an LDL^T factor (whose
   /// scratch `scaled` then holds n1 x dcol entries); of C's top n1 x n1 block only the
   /// lower triangle is written.
-  void (*update)(const double* L, int drow, int dcol, int p1, int p2, bool ldlt, double* C,
+  void (*update)(const double* L, int ld, int drow, int dcol, int p1, int p2, bool ldlt, double* C,
                  double* scaled);
-  /// Factorise a supernode's block S (nrow x ncol, leading dimension nrow) in place: its
+  /// Factorise a supernode's block S (nrow x ncol, leading dimension ld >= nrow) in place: its
   /// diagonal block by Cholesky (or LDL^T without pivoting: unit L, D on the diagonal), then
   /// the rows below by a triangular solve. False if a pivot is not positive (Cholesky) or
   /// is zero, or any is not finite.
-  bool (*factor)(double* S, int nrow, int ncol, bool ldlt);
+  bool (*factor)(double* S, int ld, int nrow, int ncol, bool ldlt);
   InstructionSet instruction_set;
 };
 
