@@ -141,11 +141,12 @@ from kresling.simulate import build_problem_model
 kind, matrix_file, root = sys.argv[1], sys.argv[2], Path(sys.argv[3])
 if kind == "bending specimen":
     s = kresling_specimen(Design(10, 0.9, 15), [1] * 4)
-    fixed = np.zeros(s.model.num_dofs, bool)
-    for level in (0, 4):
-        for node in (s.node(level, 0), s.node(level, 5), s.centre(level)):
-            fixed[3 * node:3 * node + 3] = True
-    fixed[3 * s.level_nodes(2) + 1] = True
+    # The bending test's supports: pins at both ends, the middle polygon held in y.
+    pins = [s.node(level, j) for level in (0, 4) for j in (0, 5)] + [s.centre(0), s.centre(4)]
+    fixed = np.zeros((s.model.num_nodes, 3), bool)
+    fixed[pins] = True
+    fixed[s.level_nodes(2), 1] = True
+    fixed = fixed.ravel()
     model = s.model
 else:
     model = build_problem_model(root / "tests/data/merlin2_examples/gmiura_pointload/problem.toml").model
