@@ -60,6 +60,16 @@ const char* name(kresling::solvers::CholeskyChoice c) {
   }
 }
 
+// The Matrix Market file at path, compressed; false (and a message) if it cannot be read.
+bool read_matrix(const char* path, SparseMatrix& K) {
+  if (!Eigen::loadMarket(K, path)) {
+    std::fprintf(stderr, "%s: cannot read\n", path);
+    return false;
+  }
+  K.makeCompressed();
+  return true;
+}
+
 extern "C" void dgemm_();  // the BLAS CHOLMOD calls, to name the library it comes from
 
 // The file the dynamic linker took dgemm_ (the BLAS) from.
@@ -95,11 +105,7 @@ int compare(int argc, char** argv) {
   const std::string blas = blas_library();
   for (int a = 0; a < argc; ++a) {
     SparseMatrix K;
-    if (!Eigen::loadMarket(K, argv[a])) {
-      std::fprintf(stderr, "%s: cannot read\n", argv[a]);
-      return 1;
-    }
-    K.makeCompressed();
+    if (!read_matrix(argv[a], K)) return 1;
     const SparseMatrix indefinite = shifted(K);
     const int n = static_cast<int>(K.rows());
     const int repeat = n < 3000 ? 200 : (n < 30000 ? 5 : 3);
@@ -159,11 +165,7 @@ int main(int argc, char** argv) {
               "simpl sol", "residual", "CHOLMOD", "model");
   for (int a = 1; a < argc; ++a) {
     SparseMatrix K;
-    if (!Eigen::loadMarket(K, argv[a])) {
-      std::fprintf(stderr, "%s: cannot read\n", argv[a]);
-      return 1;
-    }
-    K.makeCompressed();
+    if (!read_matrix(argv[a], K)) return 1;
     const int n = static_cast<int>(K.rows());
     const int repeat = n < 3000 ? 30 : (n < 30000 ? 5 : 2);
     double dense = NAN;
