@@ -13,7 +13,6 @@
 
 namespace kresling::solvers {
 
-
 namespace {
 
 // A supernode above the threads' subtrees shares its work among the threads (it waits for
@@ -255,9 +254,11 @@ void SupernodalCholesky::use_threads(int threads) {
 
 // Splits the elimination tree into subtrees for the threads: starting from the roots, the
 // heaviest subtree (by its dense kernels' flops) is replaced by its children, its root going
-// to the top part (factorised after the threads, alone), for as long as that shortens the
-// estimated time: the top part's work plus the larger of the heaviest subtree's and an even
-// share of the rest. The subtrees go to the least loaded thread, heaviest first.
+// to the top part (factorised after the threads: its large supernodes shared by them, the
+// rest by one), for as long as that shortens the estimated time: the top part's work (as if
+// on one thread) plus the larger of the heaviest subtree's and an even share of the rest.
+// The subtrees go to the least loaded thread, heaviest first; then the top part's large
+// supernodes are marked to be shared.
 void SupernodalCholesky::Impl::schedule(int threads) {
   subtrees.assign(1, {});
   top.clear();
