@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "kresling/solvers/supernodal_cholesky.hpp"
+#include "kresling/solvers/tangent_solver.hpp"
 
 namespace {
 
@@ -259,4 +260,23 @@ TEST(SupernodalCholesky, SharedTopSupernodesChangeOnlyTheRounding) {
   EXPECT_LE((y1 - y2).norm(), 1e-8 * y1.norm());
   // Not positive definite: the shared supernode's panels refuse as the one-thread path does.
   EXPECT_FALSE(two.factorize(shifted));
+}
+
+// The tangent solver keeps small factorisations (below 1e7 flops: the bending specimens,
+// MERLIN2's examples) on the baseline kernels, so their results stay bit for bit: its
+// solution on a small sheet equals the baseline kernels' exactly.
+TEST(SupernodalCholesky, SmallTangentsKeepTheBaselineKernels) {
+  using kresling::solvers::InstructionSet;
+  const SparseMatrix K = sheet(8, 0.5, 19u);  // 192 DOFs: supernodal, AMD, one thread
+  const Eigen::VectorXd b = right_hand_side(K.rows());
+  kresling::solvers::TangentSolver solver;
+  ASSERT_TRUE(solver.factorize(K).ok);
+  ASSERT_EQ(solver.plan().cholesky, kresling::solvers::CholeskyChoice::Supernodal);
+  ASSERT_LT(solver.plan().flops, 1e7);
+  SupernodalCholesky baseline;
+  baseline.use_instruction_set(InstructionSet::Baseline);
+  baseline.analyze(K, CHOLMOD_AMD, 1);
+  ASSERT_TRUE(baseline.factorize(K));
+  const Eigen::VectorXd x = solver.solve(b), y = baseline.solve(b);
+  for (Eigen::Index i = 0; i < x.size(); ++i) ASSERT_EQ(x[i], y[i]) << "entry " << i;
 }

@@ -101,6 +101,7 @@ struct SupernodalCholesky::Impl {
   void assign_subtrees(const Weights& w, const std::vector<int>& pieces, int threads);
   bool factor_supernode(int s, Scratch& scratch);
   bool factor_supernode_shared(int s);
+  bool factor_top();
   void subtract_update(const double* L, int ld, int drow, int dcol, int p1, int p2,
                        const int* target_rows, double* S, int nrow, int k1, Scratch& scratch);
   bool factorize(const SparseMatrix& K, bool with_d);
@@ -521,37 +522,35 @@ bool SupernodalCholesky::Impl::factorize(const SparseMatrix& K, bool with_d) {
       }
     }
   };
-  if (threads == 1) {
-    run(0);
-  } else {
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(run, t);
-    run(0);
-    for (auto& th : pool) th.join();
-  }
+  on_threads(threads, run);
   if (std::find(good.begin(), good.end(), 0) != good.end()) return false;
-  if (!m.top.empty()) {
-    // The subtrees' supernodes wait in each thread's lists: merge them into the first's.
-    Impl::Scratch& main = scratch[0];
-    for (int t = 1; t < threads; ++t) {
-      for (int s : m.top) {
-        int d = scratch[t].head[s];
-        while (d >= 0) {
-          const int d_next = m.next[d];
-          m.next[d] = main.head[s];
-          main.head[s] = d;
-          d = d_next;
-        }
-      }
-    }
-    for (std::size_t k = 0; k < m.top.size(); ++k) {
-      const int s = m.top[k];
-      if (!(m.shared[k] ? m.factor_supernode_shared(s) : m.factor_supernode(s, main))) {
-        return false;
+  if (!m.factor_top()) return false;
+  m.ok = true;
+  return true;
+}
+
+// The supernodes above the threads' subtrees, after them: the large ones shared by the
+// threads, the rest on the calling thread.
+bool SupernodalCholesky::Impl::factor_top() {
+  if (top.empty()) return true;
+  // The subtrees' supernodes wait in each thread's lists: merge them into the first's.
+  Scratch& main = per_thread[0];
+  for (std::size_t t = 1; t < per_thread.size(); ++t) {
+    for (int s : top) {
+      int d = per_thread[t].head[s];
+      while (d >= 0) {
+        const int d_next = next[d];
+        next[d] = main.head[s];
+        main.head[s] = d;
+        d = d_next;
       }
     }
   }
-  m.ok = true;
+  for (std::size_t k = 0; k < top.size(); ++k) {
+    if (!(shared[k] ? factor_supernode_shared(top[k]) : factor_supernode(top[k], main))) {
+      return false;
+    }
+  }
   return true;
 }
 

@@ -7,7 +7,8 @@
 /// calibrated by measurement (choose_cholesky): a dense Cholesky (Eigen) for the smallest
 /// tangents, else a supernodal one whose dense kernels are Eigen's, on CHOLMOD's symbolic
 /// analysis (supernodal_cholesky.hpp; threaded across independent subtrees for large
-/// sheets). CHOLMOD's own simplicial factorisation can be forced. The fill-reducing
+/// sheets; its AVX2+FMA kernels from 1e7 flops per factorisation up, where the processor
+/// has them). CHOLMOD's own simplicial factorisation can be forced. The fill-reducing
 /// ordering is CHOLMOD's: AMD for small tangents (its analysis is cheapest), and from
 /// kTryNestedDissection DOFs up whichever of AMD and nested dissection (METIS) gives the
 /// fewer flops: nested dissection for sheets, AMD for towers. When the Cholesky fails the
