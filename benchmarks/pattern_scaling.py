@@ -289,7 +289,9 @@ def comparison(kinds, max_dofs: int, openblas: Path | None) -> None:
           f"supernodal one on {blas} (CHOLMOD) and on "
           f"{openblas if openblas else 'OpenBLAS (not found)'} (CM+OB); LDL^T: the tangent "
           f"shifted to be indefinite; thr: threads of ours; iter: assembly + LL^T + solve; "
-          f"neg: negative eigenvalues of the shifted tangent by each kernel set")
+          f"neg: negative eigenvalues of the shifted tangent by each kernel set. The tangent "
+          f"solver takes the AVX2 kernels from 1e7 flops per factorisation up (where the "
+          f"processor has them), the SSE2 ones below")
 
 
 def main(argv=None) -> int:
