@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "kresling/solvers/supernodal_cholesky.hpp"
+#include "kresling/solvers/tangent_solver.hpp"
 
 namespace {
 
@@ -194,4 +195,88 @@ TEST(SupernodalCholesky, LdltGivesTheInertiaAndSolvesIndefiniteSystems) {
   EXPECT_EQ((ours.ldlt_diagonal().array() <= 0.0).count(), 0);
   const Eigen::VectorXd expected = cholmod_solution(K, b);
   EXPECT_LE((ours.solve(b) - expected).norm(), 1e-12 * expected.norm());
+}
+
+// Each compiled set of dense kernels (the baseline, and AVX2+FMA where the processor has
+// them) factorises alike: the solutions equal CHOLMOD's simplicial one to 1e-12 relative
+// (as above: the kernels differ only in rounding), and the LDL^T's inertia is the same. The
+// default is AVX2 exactly where it is supported; asking for it elsewhere is refused.
+TEST(SupernodalCholesky, EveryKernelSetFactorisesAlike) {
+  using kresling::solvers::InstructionSet;
+  const bool avx2 = kresling::solvers::avx2_kernels_supported();
+  SupernodalCholesky ours;
+  EXPECT_EQ(ours.instruction_set(), avx2 ? InstructionSet::AVX2 : InstructionSet::Baseline);
+  if (!avx2) EXPECT_THROW(ours.use_instruction_set(InstructionSet::AVX2), std::invalid_argument);
+  std::vector<InstructionSet> sets{InstructionSet::Baseline};
+  if (avx2) sets.push_back(InstructionSet::AVX2);
+  // Wide enough that the dense kernels block (supernodes of a hundred columns and more).
+  const SparseMatrix K = sheet(40, 0.5, 13u);
+  const Eigen::VectorXd b = right_hand_side(K.rows());
+  const Eigen::VectorXd expected = cholmod_solution(K, b);
+  // The same sheet shifted down by 4, past its smallest eigenvalues (indefinite): its
+  // LDL^T's negative pivots, per set.
+  const SparseMatrix shifted = sheet(40, -4.0, 13u);
+  std::vector<long> negative;
+  for (InstructionSet set : sets) {
+    for (int threads : {1, 2}) {
+      ours.use_instruction_set(set);
+      ours.analyze(K, CHOLMOD_NESDIS, threads);
+      EXPECT_EQ(ours.instruction_set(), set);  // kept across the analysis
+      ASSERT_TRUE(ours.factorize(K));
+      EXPECT_LE((ours.solve(b) - expected).norm(), 1e-12 * expected.norm());
+      ASSERT_TRUE(ours.factorize_ldlt(shifted));
+      negative.push_back((ours.ldlt_diagonal().array() < 0.0).count());
+      EXPECT_LE((shifted * ours.solve(b) - b).norm(), 1e-8 * b.norm());
+    }
+  }
+  EXPECT_GT(negative.front(), 0);
+  for (long count : negative) EXPECT_EQ(count, negative.front());
+}
+
+// A sheet large enough that its top separator (~390 columns) is shared by the threads:
+// the factors on two threads solve as the one-thread factor does, to rounding (1e-12
+// relative: the shared panels sum their updates in another order), and the LDL^T of the
+// sheet shifted to be indefinite has the same inertia on either.
+TEST(SupernodalCholesky, SharedTopSupernodesChangeOnlyTheRounding) {
+  const SparseMatrix K = sheet(128, 0.5, 17u), shifted = sheet(128, -4.0, 17u);
+  const Eigen::VectorXd b = right_hand_side(K.rows());
+  SupernodalCholesky one, two;
+  one.analyze(K, CHOLMOD_NESDIS, 1);
+  two.analyze(K, CHOLMOD_NESDIS, 2);
+  EXPECT_EQ(one.shared_supernodes(), 0);
+  EXPECT_GE(two.shared_supernodes(), 1);
+  ASSERT_TRUE(one.factorize(K));
+  ASSERT_TRUE(two.factorize(K));
+  const Eigen::VectorXd x1 = one.solve(b), x2 = two.solve(b);
+  EXPECT_LE((x1 - x2).norm(), 1e-12 * x1.norm());
+  EXPECT_LE((K * x2 - b).norm(), 1e-12 * b.norm());
+  ASSERT_TRUE(one.factorize_ldlt(shifted));
+  ASSERT_TRUE(two.factorize_ldlt(shifted));
+  const long negative = (one.ldlt_diagonal().array() < 0.0).count();
+  EXPECT_GT(negative, 0);
+  EXPECT_EQ((two.ldlt_diagonal().array() < 0.0).count(), negative);
+  const Eigen::VectorXd y1 = one.solve(b), y2 = two.solve(b);
+  EXPECT_LE((shifted * y2 - b).norm(), 1e-8 * b.norm());
+  EXPECT_LE((y1 - y2).norm(), 1e-8 * y1.norm());
+  // Not positive definite: the shared supernode's panels refuse as the one-thread path does.
+  EXPECT_FALSE(two.factorize(shifted));
+}
+
+// The tangent solver keeps small factorisations (below 1e7 flops: the bending specimens,
+// MERLIN2's examples) on the baseline kernels, so their results stay bit for bit: its
+// solution on a small sheet equals the baseline kernels' exactly.
+TEST(SupernodalCholesky, SmallTangentsKeepTheBaselineKernels) {
+  using kresling::solvers::InstructionSet;
+  const SparseMatrix K = sheet(8, 0.5, 19u);  // 192 DOFs: supernodal, AMD, one thread
+  const Eigen::VectorXd b = right_hand_side(K.rows());
+  kresling::solvers::TangentSolver solver;
+  ASSERT_TRUE(solver.factorize(K).ok);
+  ASSERT_EQ(solver.plan().cholesky, kresling::solvers::CholeskyChoice::Supernodal);
+  ASSERT_LT(solver.plan().flops, 1e7);
+  SupernodalCholesky baseline;
+  baseline.use_instruction_set(InstructionSet::Baseline);
+  baseline.analyze(K, CHOLMOD_AMD, 1);
+  ASSERT_TRUE(baseline.factorize(K));
+  const Eigen::VectorXd x = solver.solve(b), y = baseline.solve(b);
+  for (Eigen::Index i = 0; i < x.size(); ++i) ASSERT_EQ(x[i], y[i]) << "entry " << i;
 }

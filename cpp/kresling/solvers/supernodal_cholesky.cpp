@@ -8,46 +8,42 @@
 #include <thread>
 
 #include <Eigen/CholmodSupport>
-#include <Eigen/Dense>
+
+#include "kresling/solvers/supernodal_kernels.hpp"
 
 namespace kresling::solvers {
 
 namespace {
 
-using Block = Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
-using ConstBlock = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
+// A supernode above the threads' subtrees shares its work among the threads (it waits for
+// them anyway) from this many flops up (its own, as weigh() counts them): below, starting
+// the threads costs more than it saves.
+constexpr double kSharedSupernodeFlops = 1e7;
+// Columns of the panels in which a shared supernode factorises its own columns.
+constexpr int kSharedPanel = 96;
 
-// Pivots accepted by the LDL^T: finite and non-zero (the caller judges their size).
-bool usable_pivot(double d) { return std::isfinite(d) && d != 0.0; }
+// Runs work(0) here and work(1) ... work(threads - 1) on threads of their own, concurrently.
+template <class Work>
+void on_threads(int threads, const Work& work) {
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (auto& thread : pool) thread.join();
+}
 
-// A = L D L^T in place, without pivoting, for the lower triangle of the square block A: L's
-// strict lower triangle and D on the diagonal. Right-looking in panels of kPanel columns:
-// a panel is factorised column by column (each column updating the rest of the panel), then
-// the trailing block takes the panel's update as one product L21 (D1 L21^T), the kernel
-// that carries most of the flops. False if a pivot is unusable.
-bool ldlt_inplace(Block A) {
-  constexpr Index kPanel = 32;
-  const Index n = A.rows();
-  for (Index k = 0; k < n; k += kPanel) {
-    const Index width = std::min(kPanel, n - k);
-    for (Index j = k; j < k + width; ++j) {
-      const double d = A(j, j);
-      if (!usable_pivot(d)) return false;
-      // A(i, c) -= L(i, j) d L(c, j) = A(i, j) A(c, j) / d, both still unscaled.
-      for (Index c = j + 1; c < k + width; ++c) {
-        A.col(c).tail(n - c) -= (A(c, j) / d) * A.col(j).tail(n - c);
-      }
-      A.col(j).tail(n - j - 1) /= d;
-    }
-    const Index rest = n - k - width;
-    if (rest > 0) {
-      const auto L21 = A.block(k + width, k, rest, width);
-      const Eigen::MatrixXd W = L21 * A.diagonal().segment(k, width).asDiagonal();
-      A.block(k + width, k + width, rest, rest).triangularView<Eigen::Lower>() -=
-          L21 * W.transpose();
-    }
+// Bounds splitting the columns [0, ncol) of a lower trapezoid of nrow rows into `parts`
+// ranges of about equal work (column j, nrow - j entries): parts + 1 ascending offsets.
+std::vector<int> balanced_columns(int nrow, int ncol, int parts) {
+  std::vector<int> bounds(parts + 1, ncol);
+  bounds[0] = 0;
+  const double m = nrow, total = ncol * (m - 0.5 * ncol);
+  for (int t = 1; t < parts; ++t) {
+    // c (m - c / 2) = total t / parts, the smaller root.
+    const double share = total * t / parts;
+    const double c = m - std::sqrt(std::max(m * m - 2.0 * share, 0.0));
+    bounds[t] = std::clamp(static_cast<int>(std::lround(c)), bounds[t - 1], ncol);
   }
-  return true;
+  return bounds;
 }
 
 }  // namespace
@@ -73,7 +69,9 @@ struct SupernodalCholesky::Impl {
   // then the rest ("top", ascending) on the calling thread.
   std::vector<std::vector<int>> subtrees;
   std::vector<int> top;
+  std::vector<char> shared;         // per supernode of top: its work shared by the threads
   bool ok = false;
+  const SupernodalKernels* kernels = &supernodal_kernels();
 
   // Per-thread scratch: the descendants waiting to update each supernode (a list through
   // `next`, heads per supernode), the relative row map and the update block.
@@ -102,7 +100,10 @@ struct SupernodalCholesky::Impl {
   std::vector<int> split_tree(const Weights& w, int threads) const;
   void assign_subtrees(const Weights& w, const std::vector<int>& pieces, int threads);
   bool factor_supernode(int s, Scratch& scratch);
-  bool factor_diagonal(Block S, int ncol, int nrow);
+  bool factor_supernode_shared(int s);
+  bool factor_top();
+  void subtract_update(const double* L, int ld, int drow, int dcol, int p1, int p2,
+                       const int* target_rows, double* S, int nrow, int k1, Scratch& scratch);
   bool factorize(const SparseMatrix& K, bool with_d);
   void link(int d, int p_next, std::vector<int>& head);
 };
@@ -114,6 +115,9 @@ double SupernodalCholesky::factor_nonzeros() const {
   return static_cast<double>(impl_->values.size());
 }
 int SupernodalCholesky::supernodes() const { return impl_->nsuper; }
+int SupernodalCholesky::shared_supernodes() const {
+  return static_cast<int>(std::count(impl_->shared.begin(), impl_->shared.end(), 1));
+}
 int SupernodalCholesky::working_threads() const {
   int working = 0;
   for (const auto& share : impl_->subtrees) working += share.empty() ? 0 : 1;
@@ -124,7 +128,9 @@ SupernodalCholesky::Analysis SupernodalCholesky::analyze(const SparseMatrix& K,
                                                          const std::vector<int>& orderings,
                                                          int threads) {
   Impl& m = *impl_;
+  const SupernodalKernels* kernels = m.kernels;
   m = Impl();
+  m.kernels = kernels;
   m.n = K.rows();
   Analysis analysis;
   if (m.n == 0) return analysis;
@@ -225,6 +231,14 @@ void SupernodalCholesky::Impl::map_entries(const SparseMatrix& K) {
   stored_entries = K.nonZeros();
 }
 
+void SupernodalCholesky::use_instruction_set(InstructionSet set) {
+  impl_->kernels = &supernodal_kernels(set);
+}
+
+InstructionSet SupernodalCholesky::instruction_set() const {
+  return impl_->kernels->instruction_set;
+}
+
 void SupernodalCholesky::use_threads(int threads) {
   Impl& m = *impl_;
   if (m.n == 0) return;
@@ -241,12 +255,15 @@ void SupernodalCholesky::use_threads(int threads) {
 
 // Splits the elimination tree into subtrees for the threads: starting from the roots, the
 // heaviest subtree (by its dense kernels' flops) is replaced by its children, its root going
-// to the top part (factorised after the threads, alone), for as long as that shortens the
-// estimated time: the top part's work plus the larger of the heaviest subtree's and an even
-// share of the rest. The subtrees go to the least loaded thread, heaviest first.
+// to the top part (factorised after the threads: its large supernodes shared by them, the
+// rest by one), for as long as that shortens the estimated time: the top part's work (as if
+// on one thread) plus the larger of the heaviest subtree's and an even share of the rest.
+// The subtrees go to the least loaded thread, heaviest first; then the top part's large
+// supernodes are marked to be shared.
 void SupernodalCholesky::Impl::schedule(int threads) {
   subtrees.assign(1, {});
   top.clear();
+  shared.clear();
   const Weights w = weigh();
   if (threads <= 1 || nsuper < 2) {
     subtrees[0].resize(nsuper);
@@ -254,6 +271,10 @@ void SupernodalCholesky::Impl::schedule(int threads) {
     return;
   }
   assign_subtrees(w, split_tree(w, threads), threads);
+  shared.assign(top.size(), 0);
+  for (std::size_t k = 0; k < top.size(); ++k) {
+    shared[k] = w.own[top[k]] >= kSharedSupernodeFlops;
+  }
 }
 
 SupernodalCholesky::Impl::Weights SupernodalCholesky::Impl::weigh() const {
@@ -354,6 +375,80 @@ void SupernodalCholesky::Impl::link(int d, int p_next, std::vector<int>& head) {
   }
 }
 
+// S -= the update of a block L (rows [p1, drow) by rows [p1, p2), see SupernodalKernels),
+// whose rows are target_rows, into the supernode S (nrow rows, first column k1) whose rows
+// scratch.map locates.
+void SupernodalCholesky::Impl::subtract_update(const double* L, int ld, int drow, int dcol,
+                                                int p1, int p2, const int* target_rows,
+                                                double* S, int nrow, int k1, Scratch& scratch) {
+  const int n1 = p2 - p1, n2 = drow - p1;
+  kernels->update(L, ld, drow, dcol, p1, p2, ldlt, scratch.update.data(), scratch.scaled.data());
+  for (int i = 0; i < n2; ++i) scratch.relative[i] = scratch.map[target_rows[p1 + i]];
+  for (int j = 0; j < n1; ++j) {
+    double* column = S + static_cast<Index>(target_rows[p1 + j] - k1) * nrow;
+    const double* c = scratch.update.data() + static_cast<Index>(j) * n2;
+    for (int i = j; i < n2; ++i) column[scratch.relative[i]] -= c[i];
+  }
+}
+
+// A large supernode of the top part, its work shared by the threads: each thread takes a
+// range of its columns (of about equal work) and subtracts from them the updates of every
+// waiting supernode, then its own columns factorise in panels, each panel's update of the
+// columns after it shared alike. The threads write disjoint columns; the result differs from
+// factor_supernode's only in rounding (the panels' updates are summed in another order).
+bool SupernodalCholesky::Impl::factor_supernode_shared(int s) {
+  const int k1 = super[s], ncol = super[s + 1] - k1, nrow = pi[s + 1] - pi[s];
+  const int* srows = rows.data() + pi[s];
+  const int threads = static_cast<int>(per_thread.size());
+  for (auto& sc : per_thread) {
+    for (int i = 0; i < nrow; ++i) sc.map[srows[i]] = i;
+  }
+  double* S = values.data() + px[s];
+  // The waiting supernodes and the range of their rows in s's columns.
+  struct Waiting { int d, p1, p2; };
+  std::vector<Waiting> waiting;
+  Scratch& main = per_thread[0];
+  for (int d = main.head[s]; d >= 0; d = next[d]) {
+    const int drow = pi[d + 1] - pi[d];
+    const int* drows = rows.data() + pi[d];
+    int p2 = position[d];
+    while (p2 < drow && drows[p2] < k1 + ncol) ++p2;
+    waiting.push_back({d, position[d], p2});
+  }
+  main.head[s] = -1;
+  const std::vector<int> columns = balanced_columns(nrow, ncol, threads);
+  on_threads(threads, [&](int t) {
+    for (const Waiting& w : waiting) {
+      const int* drows = rows.data() + pi[w.d];
+      const int q1 = static_cast<int>(
+          std::lower_bound(drows + w.p1, drows + w.p2, k1 + columns[t]) - drows);
+      const int q2 = static_cast<int>(
+          std::lower_bound(drows + q1, drows + w.p2, k1 + columns[t + 1]) - drows);
+      if (q1 == q2) continue;
+      const int drow = pi[w.d + 1] - pi[w.d], dcol = super[w.d + 1] - super[w.d];
+      subtract_update(values.data() + px[w.d], drow, drow, dcol, q1, q2, drows, S, nrow, k1,
+                      per_thread[t]);
+    }
+  });
+  for (const Waiting& w : waiting) link(w.d, w.p2, main.head);
+  for (int k = 0; k < ncol; k += kSharedPanel) {
+    const int width = std::min(kSharedPanel, ncol - k);
+    double* panel = S + static_cast<Index>(k) * nrow + k;
+    if (!kernels->factor(panel, nrow, nrow - k, width, ldlt)) return false;
+    const int after = ncol - k - width;
+    if (after == 0) continue;
+    const std::vector<int> split = balanced_columns(nrow - k - width, after, threads);
+    on_threads(threads, [&](int t) {
+      if (split[t] == split[t + 1]) return;
+      // The panel is a supernode of its own whose rows are s's from k on.
+      subtract_update(panel, nrow, nrow - k, width, width + split[t], width + split[t + 1],
+                      srows + k, S, nrow, k1, per_thread[t]);
+    });
+  }
+  link(s, ncol, main.head);
+  return true;
+}
+
 // Left-looking: the updates of every supernode waiting on s, then s's diagonal block and
 // the rows below it.
 bool SupernodalCholesky::Impl::factor_supernode(int s, Scratch& scratch) {
@@ -361,7 +456,7 @@ bool SupernodalCholesky::Impl::factor_supernode(int s, Scratch& scratch) {
   const int nrow = pi[s + 1] - pi[s];
   const int* srows = rows.data() + pi[s];
   for (int i = 0; i < nrow; ++i) scratch.map[srows[i]] = i;
-  Block S(values.data() + px[s], nrow, ncol, Eigen::OuterStride<>(nrow));
+  double* S = values.data() + px[s];
   int d = scratch.head[s];
   scratch.head[s] = -1;
   while (d >= 0) {
@@ -371,55 +466,12 @@ bool SupernodalCholesky::Impl::factor_supernode(int s, Scratch& scratch) {
     const int p1 = position[d];
     int p2 = p1;
     while (p2 < drow && drows[p2] < k2) ++p2;
-    const int n1 = p2 - p1, n2 = drow - p1;  // rows in s's columns; rows from there down
-    ConstBlock Ld(values.data() + px[d], drow, dcol, Eigen::OuterStride<>(drow));
-    Block C(scratch.update.data(), n2, n1, Eigen::OuterStride<>(n2));
-    const auto upper = Ld.block(p1, 0, n1, dcol);
-    if (ldlt) {
-      // The same update with D between: L (D U^T), the top block's lower triangle alone.
-      Block W(scratch.scaled.data(), n1, dcol, Eigen::OuterStride<>(n1));
-      W.noalias() = upper * Ld.diagonal().asDiagonal();
-      C.topRows(n1).triangularView<Eigen::Lower>() = upper * W.transpose();
-      if (n2 > n1) C.bottomRows(n2 - n1).noalias() = Ld.block(p2, 0, n2 - n1, dcol) * W.transpose();
-    } else {
-      // The top block is symmetric: its lower triangle alone (a rank update), the rest a
-      // product.
-      C.topRows(n1).triangularView<Eigen::Lower>().setZero();
-      C.topRows(n1).selfadjointView<Eigen::Lower>().rankUpdate(upper);
-      if (n2 > n1) C.bottomRows(n2 - n1).noalias() = Ld.block(p2, 0, n2 - n1, dcol) * upper.transpose();
-    }
-    for (int i = 0; i < n2; ++i) scratch.relative[i] = scratch.map[drows[p1 + i]];
-    for (int j = 0; j < n1; ++j) {
-      double* column = S.data() + static_cast<Index>(drows[p1 + j] - k1) * nrow;
-      const double* c = C.data() + static_cast<Index>(j) * n2;
-      for (int i = j; i < n2; ++i) column[scratch.relative[i]] -= c[i];
-    }
+    subtract_update(values.data() + px[d], drow, drow, dcol, p1, p2, drows, S, nrow, k1, scratch);
     link(d, p2, scratch.head);
     d = d_next;
   }
-  if (!factor_diagonal(S, ncol, nrow)) return false;
+  if (!kernels->factor(S, nrow, nrow, ncol, ldlt)) return false;
   link(s, ncol, scratch.head);
-  return true;
-}
-
-// The supernode's diagonal block, then the rows below it: L21 = A21 L11^-T (Cholesky) or
-// A21 L11^-T D^-1 (LDL^T).
-bool SupernodalCholesky::Impl::factor_diagonal(Block S, int ncol, int nrow) {
-  Block diagonal(S.data(), ncol, ncol, Eigen::OuterStride<>(nrow));
-  auto below = S.bottomRows(nrow - ncol);
-  if (ldlt) {
-    if (!ldlt_inplace(diagonal)) return false;
-    if (nrow > ncol) {
-      diagonal.triangularView<Eigen::UnitLower>().adjoint().solveInPlace<Eigen::OnTheRight>(below);
-      below = below * diagonal.diagonal().cwiseInverse().asDiagonal();
-    }
-    return true;
-  }
-  if (Eigen::internal::llt_inplace<double, Eigen::Lower>::blocked(diagonal) != -1) return false;
-  if (!diagonal.diagonal().allFinite()) return false;
-  if (nrow > ncol) {
-    diagonal.triangularView<Eigen::Lower>().adjoint().solveInPlace<Eigen::OnTheRight>(below);
-  }
   return true;
 }
 
@@ -470,34 +522,35 @@ bool SupernodalCholesky::Impl::factorize(const SparseMatrix& K, bool with_d) {
       }
     }
   };
-  if (threads == 1) {
-    run(0);
-  } else {
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(run, t);
-    run(0);
-    for (auto& th : pool) th.join();
-  }
+  on_threads(threads, run);
   if (std::find(good.begin(), good.end(), 0) != good.end()) return false;
-  if (!m.top.empty()) {
-    // The subtrees' supernodes wait in each thread's lists: merge them into the first's.
-    Impl::Scratch& main = scratch[0];
-    for (int t = 1; t < threads; ++t) {
-      for (int s : m.top) {
-        int d = scratch[t].head[s];
-        while (d >= 0) {
-          const int d_next = m.next[d];
-          m.next[d] = main.head[s];
-          main.head[s] = d;
-          d = d_next;
-        }
+  if (!m.factor_top()) return false;
+  m.ok = true;
+  return true;
+}
+
+// The supernodes above the threads' subtrees, after them: the large ones shared by the
+// threads, the rest on the calling thread.
+bool SupernodalCholesky::Impl::factor_top() {
+  if (top.empty()) return true;
+  // The subtrees' supernodes wait in each thread's lists: merge them into the first's.
+  Scratch& main = per_thread[0];
+  for (std::size_t t = 1; t < per_thread.size(); ++t) {
+    for (int s : top) {
+      int d = per_thread[t].head[s];
+      while (d >= 0) {
+        const int d_next = next[d];
+        next[d] = main.head[s];
+        main.head[s] = d;
+        d = d_next;
       }
     }
-    for (int s : m.top) {
-      if (!m.factor_supernode(s, main)) return false;
+  }
+  for (std::size_t k = 0; k < top.size(); ++k) {
+    if (!(shared[k] ? factor_supernode_shared(top[k]) : factor_supernode(top[k], main))) {
+      return false;
     }
   }
-  m.ok = true;
   return true;
 }
 

@@ -9,10 +9,12 @@
 /// numeric factorisation is a left-looking supernodal one (George and Liu's, as in CHOLMOD):
 /// each supernode gathers the updates of the supernodes below it in the elimination tree
 /// (one dense product each), then factorises its diagonal block and solves for the rows
-/// under it, all with Eigen's blocked, vectorised dense kernels. The symbolic analysis also
+/// under it, all with Eigen's blocked, vectorised dense kernels (supernodal_kernels.hpp:
+/// compiled for AVX2 and FMA beside the baseline, chosen by the processor). The symbolic analysis also
 /// splits the elimination tree into independent subtrees, which factorise on separate
 /// threads (nested dissection makes two halves of nearly equal work below the top
-/// separator).
+/// separator); the few large supernodes above them (the top separators, a fifth of a large
+/// sheet's time on one thread) share their work among the threads by columns.
 ///
 /// The same symbolic factor also serves an LDL^T factorisation without pivoting (L unit
 /// lower triangular, D diagonal) of a symmetric indefinite matrix with the same pattern: the
@@ -26,6 +28,7 @@
 #include <Eigen/SparseCore>
 
 #include "kresling/core/types.hpp"
+#include "kresling/solvers/supernodal_kernels.hpp"
 
 namespace kresling::solvers {
 
@@ -58,6 +61,12 @@ class SupernodalCholesky {
   /// for choosing the count from the analysis's flops.
   void use_threads(int threads);
 
+  /// Which compiled dense kernels the numeric factorisations use (Auto, the default: AVX2
+  /// and FMA where the processor has them). Kept across analyses; throws
+  /// std::invalid_argument for AVX2 where it is not supported (avx2_kernels_supported).
+  void use_instruction_set(InstructionSet set);
+  InstructionSet instruction_set() const;
+
   /// Numeric factorisation of K (same pattern as analysed). False if K is not positive
   /// definite (a pivot is not positive or not finite): the factor is then unusable.
   bool factorize(const SparseMatrix& K);
@@ -76,6 +85,9 @@ class SupernodalCholesky {
   int supernodes() const;
   /// Threads that factorise a share of the elimination tree (1: no split paid off).
   int working_threads() const;
+  /// Supernodes above the threads' subtrees large enough that the threads share their work
+  /// (nested dissection's top separators of large sheets).
+  int shared_supernodes() const;
 
  private:
   struct Impl;

@@ -7,7 +7,8 @@
 /// calibrated by measurement (choose_cholesky): a dense Cholesky (Eigen) for the smallest
 /// tangents, else a supernodal one whose dense kernels are Eigen's, on CHOLMOD's symbolic
 /// analysis (supernodal_cholesky.hpp; threaded across independent subtrees for large
-/// sheets). CHOLMOD's own simplicial factorisation can be forced. The fill-reducing
+/// sheets; its AVX2+FMA kernels from 1e7 flops per factorisation up, where the processor
+/// has them). CHOLMOD's own simplicial factorisation can be forced. The fill-reducing
 /// ordering is CHOLMOD's: AMD for small tangents (its analysis is cheapest), and from
 /// kTryNestedDissection DOFs up whichever of AMD and nested dissection (METIS) gives the
 /// fewer flops: nested dissection for sheets, AMD for towers. When the Cholesky fails the
@@ -67,6 +68,11 @@ struct FactorizationPlan {
 /// The cost model behind CholeskyChoice::Auto, for a tangent of n DOFs: measured, it needs
 /// only the size (tangent_solver.cpp has the table). Exposed so that the rule can be tested.
 CholeskyChoice choose_cholesky(Index n);
+
+/// Threads the supernodal factorisation splits its elimination tree over, for a
+/// factorisation of `flops` (one below 1e8 flops, where starting threads costs more than
+/// it saves; else the processor's threads, at most 4).
+int factorisation_threads(double flops);
 
 class TangentSolver {
  public:
