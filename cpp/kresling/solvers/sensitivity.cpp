@@ -270,19 +270,24 @@ class PathDifferentiator {
         drive_(drive),
         P_(P),
         groups_(group_by_family(model, columns, P)),
-        s_(model, first, held) {}
+        s_(model, first, held),
+        factorised_at_(first) {}
 
   const std::vector<Index>& held_dofs() const { return s_.held_dofs(); }
   const EquilibriumSensitivity& factorised() const { return s_; }
 
-  // One equilibrium at path parameter t: factorised there (unless `same`: already at u).
+  // One equilibrium at path parameter t, factorised there (once: a state factorised last,
+  // the first one at construction, is not factorised again).
   struct State {
     Eigen::MatrixXd du;      // 3N x P
     Eigen::MatrixXd dforce;  // d f_int/dp along the equilibrium (total), 3N x P
     Eigen::RowVectorXd denergy;
   };
-  State at(const VectorX& u, double t, bool same, const std::string& where) {
-    if (!same) s_.update(u);
+  State at(const VectorX& u, double t, const std::string& where) {
+    if (u.size() != factorised_at_.size() || u != factorised_at_) {
+      s_.update(u);
+      factorised_at_ = u;
+    }
     if (!s_.ok()) {
       throw std::runtime_error(where +
                                ": the tangent is singular (a limit or bifurcation point, or a "
@@ -333,6 +338,7 @@ class PathDifferentiator {
   const Index P_;
   const std::vector<FamilyColumns> groups_;
   EquilibriumSensitivity s_;
+  VectorX factorised_at_;  // the state s_ holds the factorisation of
   std::vector<model::ParameterDerivative> derivatives_;
 };
 
@@ -369,7 +375,7 @@ PathSensitivityResult path_sensitivity(const model::Model& model,
   PathDifferentiator d(model, states.front(), held, positions, columns, drive, P);
   r.held_dofs = d.held_dofs();
   for (std::size_t k = 0; k < states.size(); ++k) {
-    record(r, k, d, d.at(states[k], fractions[k], k == 0, "state " + std::to_string(k)));
+    record(r, k, d, d.at(states[k], fractions[k], "state " + std::to_string(k)));
   }
   return r;
 }
@@ -428,7 +434,7 @@ void check_knots(Index n, const std::vector<VectorX>& states, const PathKnots& k
 KnotDerivative knot_derivative(PathDifferentiator& d, assembly::Assembler& probe,
                                const PathKnots& knots, std::size_t j, double reach,
                                const Eigen::MatrixXd& drive) {
-  PathDifferentiator::State x = d.at(knots.u[j], knots.t[j], false, "knot " + std::to_string(j));
+  PathDifferentiator::State x = d.at(knots.u[j], knots.t[j], "knot " + std::to_string(j));
   const VectorX& v = knots.velocity[j];
   const double speed = v.lpNorm<Eigen::Infinity>();
   Eigen::MatrixXd rate = Eigen::MatrixXd::Zero(x.du.rows(), x.du.cols());
@@ -490,7 +496,7 @@ PathSensitivityResult interpolated_path_sensitivity(const model::Model& model,
   for (std::size_t i = 0; i < states.size(); ++i) {
     const int j = knots.step_knot[i];
     if (j < 0) {
-      record(r, i, d, d.at(states[i], fractions[i], false, "state " + std::to_string(i)));
+      record(r, i, d, d.at(states[i], fractions[i], "state " + std::to_string(i)));
       continue;
     }
     const double ta = knots.t[j - 1], tb = knots.t[j], t = fractions[i];
