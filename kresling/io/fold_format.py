@@ -383,7 +383,7 @@ def _angles(name: str, values, count: int) -> list:
     known = angles[~np.isnan(angles)]
     if not np.all(np.isfinite(known)) or np.any(np.abs(known) > 180.0):
         raise ValueError(f"{name} must hold angles in [-180, 180] degrees (NaN where unknown)")
-    return [None if np.isnan(a) else a for a in angles.tolist()]
+    return [None if a != a else a for a in angles.tolist()]   # a != a: NaN, at list speed
 
 
 def _check_length(name: str, values, count: int) -> None:

@@ -4,7 +4,33 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["fold_angle_frames"]
+__all__ = ["fold_angle_frames", "newell_normals"]
+
+
+def newell_normals(frames, faces) -> np.ndarray:
+    """Newell's normal of every face in every frame (not normalised: its length is twice the
+    face's area; exact for planar faces, robust for any corner order).
+
+    Parameters
+    ----------
+    frames : array_like, shape (K, V, 3)
+        Positions [mm].
+    faces : sequence of sequence of int
+        F faces, any number of corners each.
+
+    Returns
+    -------
+    ndarray, shape (K, F, 3)
+    """
+    frames = np.asarray(frames, dtype=float)
+    normals = np.zeros((len(frames), len(faces), 3))
+    by_size = {}
+    for index, face in enumerate(faces):
+        by_size.setdefault(len(face), []).append(index)
+    for indices in by_size.values():   # one array operation per corner count
+        corners = frames[:, np.array([faces[i] for i in indices])]        # (K, F, k, 3)
+        normals[:, indices] = np.cross(corners, np.roll(corners, -1, axis=2)).sum(axis=2)
+    return normals
 
 
 def fold_angle_frames(faces, edges, frames) -> np.ndarray:
@@ -36,14 +62,7 @@ def fold_angle_frames(faces, edges, frames) -> np.ndarray:
     inner = np.array([a is not None and b is not None for a, b in pairs], dtype=bool)
     left = np.array([a for (a, b), ok in zip(pairs, inner) if ok], dtype=np.int64)
     right = np.array([b for (a, b), ok in zip(pairs, inner) if ok], dtype=np.int64)
-    normals = np.zeros((len(frames), len(faces), 3))
-    by_size = {}
-    for index, face in enumerate(faces):
-        by_size.setdefault(len(face), []).append(index)
-    for indices in by_size.values():
-        corners = frames[:, np.array([faces[i] for i in indices])]        # (K, F, k, 3)
-        # Newell's normal: exact for planar faces, robust for any corner order.
-        normals[:, indices] = np.cross(corners, np.roll(corners, -1, axis=2)).sum(axis=2)
+    normals = newell_normals(frames, faces)
     normals /= np.linalg.norm(normals, axis=-1, keepdims=True)
     axis = frames[:, edges[inner, 1]] - frames[:, edges[inner, 0]]
     axis /= np.linalg.norm(axis, axis=-1, keepdims=True)

@@ -152,7 +152,49 @@ def merge_points(points: np.ndarray, tolerance: float):
         ``tolerance`` form one cluster.
     """
     points = np.asarray(points, dtype=float)
-    return lowest_in_cluster(len(points), close_pairs(points, tolerance))
+    if not len(points):
+        return np.zeros(0, dtype=np.intp)
+    # Exact repeats first (a segment's end is every segment's end at that vertex): the
+    # distinct points alone are searched for close pairs, where repeats would crowd the
+    # search. Clusters are the same, repeats being 0 apart.
+    distinct, inverse = np.unique(points, axis=0, return_inverse=True)
+    inverse = inverse.reshape(-1)
+    cluster = lowest_in_cluster(len(distinct), close_pairs(distinct, tolerance))[inverse]
+    lowest = np.full(len(distinct), len(points), dtype=np.intp)
+    np.minimum.at(lowest, cluster, np.arange(len(points)))
+    return lowest[cluster]
+
+
+def _expanded(first: np.ndarray, stop: np.ndarray):
+    """Every (row, column) with column in [first[row], stop[row]), rows in order."""
+    counts = np.maximum(stop - first, 0)
+    rows = np.repeat(np.arange(len(first)), counts)
+    columns = np.arange(counts.sum()) - np.repeat(np.cumsum(counts) - counts, counts)
+    return rows, first[rows] + columns
+
+
+def _overlapping_boxes(low: np.ndarray, high: np.ndarray, margin: float):
+    """The pairs (i, j), i < j, of boxes (corners ``low``, ``high``, shape (S, 2)) that
+    overlap once widened by ``margin``: a sweep along x, then y checked."""
+    order = np.argsort(low[:, 0], kind="stable")
+    left = low[order, 0]
+    stop = np.searchsorted(left, high[order, 0] + 2 * margin, side="right")
+    a, b = _expanded(np.arange(1, len(order) + 1), stop)
+    a, b = order[a], order[b]
+    keep = (low[b, 1] <= high[a, 1] + 2 * margin) & (low[a, 1] <= high[b, 1] + 2 * margin)
+    a, b = a[keep], b[keep]
+    return np.minimum(a, b), np.maximum(a, b)
+
+
+def _ends_in_boxes(points: np.ndarray, low: np.ndarray, high: np.ndarray):
+    """The pairs (box, point) with the point in the box (corners ``low``, ``high``)."""
+    order = np.argsort(points[:, 0], kind="stable")
+    x = points[order, 0]
+    box, at = _expanded(np.searchsorted(x, low[:, 0], side="left"),
+                        np.searchsorted(x, high[:, 0], side="right"))
+    point = order[at]
+    inside = (points[point, 1] >= low[box, 1]) & (points[point, 1] <= high[box, 1])
+    return box[inside], point[inside]
 
 
 def planarize(segments: np.ndarray, tolerance: float):
@@ -178,35 +220,42 @@ def planarize(segments: np.ndarray, tolerance: float):
     """
     segments = np.asarray(segments, dtype=float).reshape(-1, 2, 2)
     ends = segments.reshape(-1, 2)
-    cuts = [[0.0, 1.0] for _ in range(len(segments))]
     starts, directions = segments[:, 0], segments[:, 1] - segments[:, 0]
     lengths2 = np.maximum((directions ** 2).sum(axis=1), 1e-300)
-    for i in range(len(segments)):
-        p, d = starts[i], directions[i]
-        # Proper crossings of segment i with the later ones.
-        q, e = starts[i + 1:], directions[i + 1:]
-        denominator = d[0] * e[:, 1] - d[1] * e[:, 0]
-        offset = q - p
-        with np.errstate(divide="ignore", invalid="ignore"):
-            t = (offset[:, 0] * e[:, 1] - offset[:, 1] * e[:, 0]) / denominator
-            s = (offset[:, 0] * d[1] - offset[:, 1] * d[0]) / denominator
-        crossing = (np.abs(denominator) > 1e-12 * np.sqrt(lengths2[i] * lengths2[i + 1:])) & \
-            (t > 0) & (t < 1) & (s > 0) & (s < 1)
-        for j, ti, sj in zip(np.flatnonzero(crossing) + i + 1, t[crossing], s[crossing]):
-            cuts[i].append(float(ti))
-            cuts[j].append(float(sj))
-        # Endpoints of any segment lying on segment i (T-junctions, overlaps).
-        along = ((ends - p) @ d) / lengths2[i]
-        foot = p + along[:, None] * d
-        near = (np.linalg.norm(ends - foot, axis=1) <= tolerance) & (along > 0) & (along < 1)
-        near[2 * i:2 * i + 2] = False
-        cuts[i].extend(along[near].tolist())
-    pieces, origin = [], []
-    for i, ts in enumerate(cuts):
-        ts = np.unique(ts)
-        points = starts[i] + ts[:, None] * directions[i]
-        pieces.extend(zip(points[:-1], points[1:]))
-        origin.extend([i] * (len(ts) - 1))
+    low, high = segments.min(axis=1), segments.max(axis=1)
+    # Proper crossings, of the pairs i < j whose boxes overlap.
+    i, j = _overlapping_boxes(low, high, tolerance)
+    p, d, q, e = starts[i], directions[i], starts[j], directions[j]
+    denominator = d[:, 0] * e[:, 1] - d[:, 1] * e[:, 0]
+    offset = q - p
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (offset[:, 0] * e[:, 1] - offset[:, 1] * e[:, 0]) / denominator
+        s = (offset[:, 0] * d[:, 1] - offset[:, 1] * d[:, 0]) / denominator
+    crossing = (np.abs(denominator) > 1e-12 * np.sqrt(lengths2[i] * lengths2[j])) & \
+        (t > 0) & (t < 1) & (s > 0) & (s < 1)
+    # Endpoints of any other segment lying on segment k (T-junctions, overlaps), of those in
+    # its box widened by the tolerance.
+    k, end = _ends_in_boxes(ends, low - tolerance, high + tolerance)
+    other = end // 2 != k
+    k, end = k[other], end[other]
+    relative = ends[end] - starts[k]
+    along = (relative[:, 0] * directions[k, 0] + relative[:, 1] * directions[k, 1]) / lengths2[k]
+    gap = ends[end] - (starts[k] + along[:, None] * directions[k])
+    near = (np.sqrt(gap[:, 0] ** 2 + gap[:, 1] ** 2) <= tolerance) & (along > 0) & (along < 1)
+    count = len(segments)
+    cut_segment = np.concatenate([np.arange(count), np.arange(count), i[crossing], j[crossing],
+                                  k[near]])
+    cut_at = np.concatenate([np.zeros(count), np.ones(count), t[crossing], s[crossing],
+                             along[near]])
+    order = np.lexsort((cut_at, cut_segment))
+    cut_segment, cut_at = cut_segment[order], cut_at[order]
+    repeated = np.zeros(len(order), dtype=bool)
+    repeated[1:] = (cut_segment[1:] == cut_segment[:-1]) & (cut_at[1:] == cut_at[:-1])
+    cut_segment, cut_at = cut_segment[~repeated], cut_at[~repeated]
+    cut_points = starts[cut_segment] + cut_at[:, None] * directions[cut_segment]
+    piece = np.flatnonzero(cut_segment[1:] == cut_segment[:-1])   # from cut piece to piece + 1
+    pieces = np.stack([cut_points[piece], cut_points[piece + 1]], axis=1)
+    origin = cut_segment[piece].tolist()
     pieces = np.asarray(pieces, dtype=float).reshape(-1, 2, 2)
     flat = pieces.reshape(-1, 2)
     representative = merge_points(flat, tolerance)

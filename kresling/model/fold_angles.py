@@ -12,11 +12,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from kresling.io.frame_angles import newell_normals
+
 __all__ = ["hinge_fold_signs", "fold_angles_deg", "rest_angles_for"]
-
-
-def _newell_normal(points):
-    return np.cross(points, np.roll(points, -1, axis=0)).sum(axis=0)
 
 
 def hinge_fold_signs(pattern_model) -> np.ndarray:
@@ -28,24 +26,24 @@ def hinge_fold_signs(pattern_model) -> np.ndarray:
     """
     elements = pattern_model.elements
     X = np.asarray(pattern_model.model.nodes, dtype=float)
+    normals = newell_normals(X[None], elements.panels)[0]
     panels_of = {}  # node -> the panels it belongs to (a centre node: its own panel)
-    normals = []
     for p, panel in enumerate(elements.panels):
-        normals.append(_newell_normal(X[list(panel)]))
         members = list(panel) + ([int(elements.panel_centre[p])]
                                  if elements.panel_centre[p] >= 0 else [])
         for node in members:
             panels_of.setdefault(int(node), set()).add(p)
-    hinges = np.asarray(pattern_model.model.hinges, dtype=np.int64)
-    signs = np.ones(len(hinges))
-    for h, (a, b, _, d) in enumerate(hinges):
-        shared = panels_of.get(int(a), set()) & panels_of.get(int(b), set()) & \
-            panels_of.get(int(d), set())
-        if not shared:
-            continue  # a hinge of no panel (a model built by hand): theta's own orientation
-        n = np.cross(X[b] - X[a], X[b] - X[d])
-        signs[h] = 1.0 if np.dot(normals[min(shared)], n) >= 0 else -1.0
-    return signs
+    hinges = np.asarray(pattern_model.model.hinges, dtype=np.int64).reshape(-1, 4)
+    if not len(normals):
+        return np.ones(len(hinges))
+    panel_of = np.full(len(hinges), -1, dtype=np.int64)
+    for h, (a, b, _, d) in enumerate(hinges.tolist()):
+        shared = panels_of.get(a, set()) & panels_of.get(b, set()) & panels_of.get(d, set())
+        if shared:   # else a hinge of no panel (a model built by hand): theta's own orientation
+            panel_of[h] = min(shared)
+    a, b, d = X[hinges[:, 0]], X[hinges[:, 1]], X[hinges[:, 3]]
+    agrees = np.einsum("ij,ij->i", normals[panel_of], np.cross(b - a, b - d)) >= 0
+    return np.where((panel_of < 0) | agrees, 1.0, -1.0)
 
 
 def fold_angles_deg(pattern_model, u=None, signs=None) -> np.ndarray:

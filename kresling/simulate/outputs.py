@@ -12,6 +12,7 @@ import numpy as np
 
 from kresling._validation import as_integer
 from kresling.io import write_fold
+from kresling.io.frame_angles import newell_normals
 from kresling.io.frame_angles import fold_angle_frames
 from kresling.model.pattern_model import FAMILY_OF_ASSIGNMENT, MEMBER
 from kresling.simulate.problem_keys import problem_keys
@@ -60,23 +61,24 @@ def oriented_triangles(elements) -> list:
     -------
     list of tuple of int, length T
     """
-    nodes = elements.nodes
+    nodes = np.asarray(elements.nodes, dtype=float)
+    normals = newell_normals(nodes[None], elements.panels)[0]
     centre_panel = {c: p for p, c in enumerate(elements.panel_centre.tolist()) if c >= 0}
     panels_at = {}
-    normals = []
     for p, panel in enumerate(elements.panels):
         for v in panel:
             panels_at.setdefault(v, set()).add(p)
-        corners = nodes[list(panel)]
-        normals.append(np.cross(corners, np.roll(corners, -1, axis=0)).sum(axis=0))
-    out = []
-    for a, b, c in elements.triangles.tolist():
+    triangles = np.asarray(elements.triangles, dtype=np.int64).reshape(-1, 3)
+    panel_of = []
+    for a, b, c in triangles.tolist():
         centre = [v for v in (a, b, c) if v in centre_panel]
-        panel = (centre_panel[centre[0]] if centre
-                 else min(panels_at[a] & panels_at[b] & panels_at[c]))
-        turn = np.cross(nodes[b] - nodes[a], nodes[c] - nodes[a])
-        out.append((a, b, c) if np.dot(turn, normals[panel]) >= 0 else (a, c, b))
-    return out
+        panel_of.append(centre_panel[centre[0]] if centre
+                        else min(panels_at[a] & panels_at[b] & panels_at[c]))
+    a, b, c = nodes[triangles[:, 0]], nodes[triangles[:, 1]], nodes[triangles[:, 2]]
+    turn = np.cross(b - a, c - a)
+    agrees = np.einsum("ij,ij->i", turn, normals[np.array(panel_of, dtype=np.int64)]) >= 0
+    return [tuple(t) for t in np.where(agrees[:, None], triangles,
+                                       triangles[:, [0, 2, 1]]).tolist()]
 
 
 def path_fold_edges(pattern_model):
