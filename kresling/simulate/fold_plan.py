@@ -10,6 +10,7 @@ import numpy as np
 from kresling.model.fold_angles import hinge_fold_signs, rest_angles_for
 from kresling.model.crease_kinds import FOLD_FAMILIES
 from kresling.model.pattern_model import MEMBER
+from kresling.model.rigid_closure import RigidClosure, rigid_closure
 from kresling.simulate.problem_keys.dynamics import OSCILLATING
 
 __all__ = ["FoldPlan", "fold_plan", "actuated_creases"]
@@ -37,12 +38,18 @@ class FoldPlan:
     signs : ndarray, shape (H,)
         Every hinge's sign between fold angle and dihedral angle
         (:func:`kresling.model.fold_angles.hinge_fold_signs`).
+    closure : RigidClosure or None
+        The pattern's interior vertices whose creases are all driven, and how far from
+        closing each is at the last targets: whether rigid panels can reach them
+        (:func:`kresling.model.rigid_closure.rigid_closure`); None for a pattern that is not
+        flat.
     """
 
     stages: tuple
     hinges: np.ndarray
     target_deg: np.ndarray
     signs: np.ndarray
+    closure: RigidClosure | None = None
 
 
 def _fold_hinge_of_edge(pattern_model) -> dict:
@@ -124,4 +131,17 @@ def fold_plan(problem, pattern_model) -> FoldPlan:
                 order.append(int(h))
             last[int(h)] = float(a)
     hinges = np.array(order, dtype=np.int64)
-    return FoldPlan(tuple(stages), hinges, np.array([last[h] for h in order]), signs)
+    return FoldPlan(tuple(stages), hinges, np.array([last[h] for h in order]), signs,
+                    _closure_at_targets(problem.pattern, creases, last))
+
+
+def _closure_at_targets(pattern, creases, last) -> RigidClosure | None:
+    """:func:`rigid_closure` of the pattern at the driven creases' last targets (``last``:
+    hinge -> fold angle [deg]), the creases not driven left free."""
+    target = {}
+    for driven in creases:
+        for edge, (hinge, _) in driven.items():
+            target[edge] = last[hinge]
+    angles = [target.get((int(min(u, v)), int(max(u, v))), np.nan)
+              for u, v in np.asarray(pattern.edges).tolist()]
+    return rigid_closure(pattern.vertices, pattern.edges, angles, pattern.faces)

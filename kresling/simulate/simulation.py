@@ -101,6 +101,8 @@ class Simulation:
             return (f"interrupted ({self.interrupted}) after {self.path.num_steps} increments: "
                     "the path so far is kept")
         message = self.path.message or self._fold_shortfall()
+        if self.path.message and self.fold is not None:   # a fold that stopped early
+            message += self._closure_note(self.fold_report())
         return f"{message}; {self.advice}" if self.advice else message
 
     def _fold_shortfall(self) -> str:
@@ -114,7 +116,20 @@ class Simulation:
                 f"creases are more than {report['tolerance_deg']:g} deg from their targets (held "
                 f"back by the structure or by their laws' limits); the farthest, hinge "
                 f"{worst['hinge']}, reached {worst['fold_angle_deg']:.4g} deg of "
-                f"{worst['target_deg']:.4g} deg")
+                f"{worst['target_deg']:.4g} deg" + self._closure_note(report))
+
+    @staticmethod
+    def _closure_note(report) -> str:
+        """Where the targets cannot all be reached with rigid panels, that, in words."""
+        closure = report.get("rigid_closure")
+        if not closure or not closure["incompatible"]:
+            return ""
+        return (f"; the targets are not those of any rigidly folded state at "
+                f"{closure['incompatible']} of the {closure['vertices_checked']} interior "
+                f"vertices whose creases are all driven (going round vertex "
+                f"{closure['worst_vertex']}, the panels fail to close by "
+                f"{closure['worst_deg']:.3g} deg): only panels that bend or stretch can reach "
+                "them")
 
     def element_histories(self) -> ElementHistories:
         """Per-element and per-family histories along the path (see
@@ -185,7 +200,9 @@ class Simulation:
                           "target_deg": float(plan.target_deg[worst]),
                           "fold_angle_deg": float(reached[worst])},
                 "left_branch": int(np.count_nonzero(other_way)),
-                "snaps": [float(t) for t in self.path.load_factor[self.path.snapped]]}
+                "snaps": [float(t) for t in self.path.load_factor[self.path.snapped]],
+                "rigid_closure": (None if plan.closure is None
+                                  else plan.closure.report(tolerance))}
 
     def summary(self) -> dict:
         path = self.path
