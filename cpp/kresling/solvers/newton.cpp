@@ -148,6 +148,15 @@ std::string gave_up_message(int iterations, double last_correction, double first
   return detail;
 }
 
+std::string wandered_message(int iterations, double correction, double first) {
+  char detail[160];
+  std::snprintf(detail, sizeof detail,
+                "Newton wandered off: its correction at iteration %d, %.3g mm, is %.3g times "
+                "its first (%.3g mm)",
+                iterations, correction, correction / first, first);
+  return detail;
+}
+
 // Say how it failed: corrections that stagnate around a small value are rounding noise of
 // an ill-conditioned tangent (the absolute tolerance is below what it can resolve).
 std::string not_converged_message(int limit, double last_correction, double tol) {
@@ -220,7 +229,7 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
   VectorX force;
   bool factorized = false;  // a tangent of this solve is factorised
   double last_correction = INFINITY;
-  double first_correction = INFINITY;  // of this solve (give_up_after)
+  double first_correction = INFINITY;  // of this solve (give_up_after, give_up_wandering)
   const double tol = options.tolerance;
   while (out.iterations < limit) {
     check_interrupt();
@@ -240,6 +249,11 @@ NewtonOutcome newton_equilibrium(assembly::Assembler& assembler, TangentSolver& 
       return out;
     }
     if (out.iterations == 1) first_correction = last_correction;
+    if (options.give_up_wandering > 0.0 &&
+        last_correction > options.give_up_wandering * first_correction) {
+      out.failure = wandered_message(out.iterations, last_correction, first_correction);
+      return out;
+    }
     if (options.give_up_after > 0 && out.iterations >= options.give_up_after &&
         last_correction > kGiveUpRatio * first_correction) {
       out.failure = gave_up_message(out.iterations, last_correction, first_correction);

@@ -26,6 +26,11 @@ struct NewtonOptions {
   /// kGiveUpRatio times its first correction ends there, not converged (its caller halves
   /// the increment), instead of wandering on to max_iterations; 0: never.
   int give_up_after = 0;
+  /// > 0: a solve whose correction grows to more than this many times its first ends
+  /// there, not converged: the iterates wander off from the start instead of closing in on
+  /// an equilibrium near it (for callers with a more robust fallback, such as a
+  /// relaxation); 0: never.
+  double give_up_wandering = 0.0;
 };
 
 /// What NewtonOptions::give_up_after asks of a solve's corrections by then.
