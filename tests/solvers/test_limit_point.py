@@ -267,3 +267,35 @@ def test_a_load_derivative_of_the_wrong_shape_is_named():
     with pytest.raises(ValueError, match="load_derivative has shape"):
         energy_derivative(model, np.zeros(model.num_dofs), ["bars.modulus"],
                           load_derivative=np.zeros((model.num_dofs, 2)))
+
+
+def test_a_kresling_cells_limit_load_derivative_is_its_difference():
+    # One cell (n = 8, lambda = 0.8, Lc = 30 mm) built extended, its base held, its top
+    # pushed down by equal forces on its nine nodes: the top's load passes a limit point.
+    # The derivatives of the limit load by the hinges' stiffness and the bars' modulus
+    # (every entry scaled together) against central differences of the limit point located
+    # again (Newton to 1e-12 mm) with each scaled by 1 +- 1e-6: measured 8e-10 relative,
+    # asserted 1e-6 (the differences' rounding, 1e-14 / 1e-6, and their truncation).
+    from kresling import Design
+    from kresling.model import kresling_specimen
+    from kresling.solvers import Parameter
+
+    design = Design(8, 0.8, 30.0)
+    specimen = kresling_specimen(design, ["extended"])
+    fixed = np.zeros((specimen.model.num_nodes, 3), bool)
+    fixed[specimen.level_nodes(0)] = True
+    model = specimen.model.replace(fixed=fixed)
+    forces = np.zeros((model.num_nodes, 3))
+    forces[specimen.level_nodes(1), 2] = -1.0 / (design.n + 1)
+    path = solve_mgdcm(model, forces, initial_load_factor=0.05, max_increments=220)
+    assert np.argmax(path.load_factor) < path.num_steps - 1   # the load turned
+    names = ["hinges.stiffness", "bars.modulus"]
+    columns = [np.asarray(model.family(n.split(".")[0])[n.split(".")[1]], float) for n in names]
+    point = limit_point(model, forces, path,
+                        [Parameter(*n.split("."), direction=c) for n, c in zip(names, columns)])
+    h = 1e-6
+    for name, column, exact in zip(names, columns, point.load_factor_derivative):
+        moved = [limit_point(with_parameter(model, name, column * (1 + s * h)), forces,
+                             point.displacement, load_factor=point.load_factor,
+                             tolerance=1e-12).load_factor for s in (1, -1)]
+        assert exact == pytest.approx((moved[0] - moved[1]) / (2 * h), rel=1e-6), name
