@@ -85,8 +85,9 @@ def limit_point(model, forces, near, parameters=(), *, load_factor=None, toleran
 
         dlambda_c/dp = phi . (d f_int/dp)_f / (phi . f_f),
 
-    the sign taken care of by phi's: lambda_c grows with p where stiffening in p pushes
-    back along the critical mode.
+    in which phi's length and sign cancel: lambda_c grows with p where the internal force's
+    change pushes back along the critical mode (``phi . d f_int/dp > 0``, phi taken with
+    ``phi . f > 0``).
 
     Parameters
     ----------
@@ -117,13 +118,10 @@ def limit_point(model, forces, near, parameters=(), *, load_factor=None, toleran
     ValueError
         When the path has no limit point (its load factor never turns and its stability
         never changes); at a bifurcation (the critical mode orthogonal to the load,
-        ``|phi . f| <= 1e-8 |phi| |f|``), whose load the path's does not differentiate;
-        when Newton does not converge (``near`` too far from the limit point); for bad
+        ``|phi . f| <= 1e-8 |phi| |f|``), where the load factor has no extremum to
+        differentiate; when Newton does not converge (``near`` too far from the limit point); for bad
         input.
     """
-    import scipy.sparse as sp
-    import scipy.sparse.linalg as spla
-
     f = dof_vector(model, "forces", forces)
     free = model.free_dofs
     f_free = f[free]
@@ -138,11 +136,29 @@ def limit_point(model, forces, near, parameters=(), *, load_factor=None, toleran
                              "place in a load-controlled limit point (give its positions and "
                              "columns alone)")
     u, lam = _start(model, near, load_factor)
+    u, lam, phi, iterations = _extended_newton(model, f_free, u, lam, tolerance,
+                                               max_iterations)
+    mode = np.zeros(model.num_dofs)
+    mode[free] = phi
+    dforce, _, labels = residual_derivative(model, u, parameters)
+    alignment = float(phi @ f_free)
+    return LimitPoint(load_factor=float(lam), displacement=u, mode=mode,
+                      load_alignment=alignment / float(np.linalg.norm(f_free)),
+                      parameters=labels,
+                      load_factor_derivative=(phi @ dforce[free]) / alignment,
+                      iterations=iterations)
 
+
+def _extended_newton(model, f_free, u, lam, tolerance, max_iterations):
+    """Newton on the extended system from (u, lam): the limit point's state (3N,), load
+    factor, unit mode over the free DOFs (phi . f > 0) and the iterations taken."""
+    import scipy.sparse as sp
+    import scipy.sparse.linalg as spla
+
+    free = model.free_dofs
+    nf = len(free)
     size = float(np.linalg.norm(np.ptp(np.asarray(model.nodes), axis=0)))
     h = 1e-6 * size  # the step of the tangent's difference along the unit mode [mm]
-    nf = len(free)
-
     workspace = Workspace(model)
 
     def tangent(state):
@@ -157,18 +173,14 @@ def limit_point(model, forces, near, parameters=(), *, load_factor=None, toleran
     phi = phi if phi @ f_free >= 0 else -phi
     _refuse_bifurcation(phi, f_free, "at the starting state")
     l = phi.copy()
-    full = np.zeros(model.num_dofs)
-    iterations = 0
-    converged = False
-    while iterations < max_iterations:
-        iterations += 1
-        # d(K_ff phi)/du = d K_ff/d(phi direction), symmetric: the third derivative of the
-        # energy is, so the difference along phi gives the whole block.
+    along = np.zeros(model.num_dofs)
+    for iterations in range(1, max_iterations + 1):
+        # d(K_ff phi)/du is the energy's third derivative along phi, symmetric: the
+        # derivative of K_ff along phi, differenced.
         unit = np.linalg.norm(phi)
-        full[:] = 0.0
-        full[free] = phi / unit
-        _, K_plus = tangent(u + h * full)
-        _, K_minus = tangent(u - h * full)
+        along[free] = phi / unit
+        _, K_plus = tangent(u + h * along)
+        _, K_minus = tangent(u - h * along)
         H = (K_plus - K_minus) * (unit / (2 * h))
         J = sp.bmat([[K, None, sp.csc_matrix(-f_free.reshape(-1, 1))],
                      [H, K, None],
@@ -189,24 +201,13 @@ def limit_point(model, forces, near, parameters=(), *, load_factor=None, toleran
         lam += step[-1]
         force, K = tangent(u)
         if np.abs(du).max() <= tolerance:
-            converged = True
-            break
-    if not converged:
-        raise ValueError(_bifurcation_or(phi, f_free, f"Newton on the extended system did not "
-                                         f"converge in {max_iterations} iterations (last "
-                                         f"correction {np.abs(du).max():.3g} mm > tolerance "
-                                         f"{tolerance:g} mm): start nearer the limit point"))
-    phi = phi / np.linalg.norm(phi)
-    _refuse_bifurcation(phi, f_free, "where Newton converged")
-    mode = np.zeros(model.num_dofs)
-    mode[free] = phi
-    dforce, _, labels = residual_derivative(model, u, parameters)
-    alignment = float(phi @ f_free)
-    return LimitPoint(load_factor=float(lam), displacement=u, mode=mode,
-                      load_alignment=alignment / float(np.linalg.norm(f_free)),
-                      parameters=labels,
-                      load_factor_derivative=(phi @ dforce[free]) / alignment,
-                      iterations=iterations)
+            phi = phi / np.linalg.norm(phi)
+            _refuse_bifurcation(phi, f_free, "where Newton converged")
+            return u, lam, phi, iterations
+    raise ValueError(_bifurcation_or(phi, f_free, f"Newton on the extended system did not "
+                                     f"converge in {max_iterations} iterations (last "
+                                     f"correction {np.abs(du).max():.3g} mm > tolerance "
+                                     f"{tolerance:g} mm): start nearer the limit point"))
 
 
 def _start(model, near, load_factor):

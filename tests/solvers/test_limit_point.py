@@ -18,8 +18,9 @@ w^2 = c^2 - 2 a^2, a bifurcation whose mode is orthogonal to the load.
 import numpy as np
 import pytest
 
-from kresling.model import Model
-from kresling.solvers import (Direction, energy_derivative, equilibrium_sensitivity,
+from kresling import Design
+from kresling.model import Model, kresling_specimen
+from kresling.solvers import (Direction, Parameter, energy_derivative, equilibrium_sensitivity,
                               limit_point, solve_force_control, solve_mgdcm, with_parameter)
 
 A_HALF, RISE, C0, AREA = 10.0, 1.0, 1000.0, 1.0
@@ -184,6 +185,8 @@ def test_a_path_without_a_limit_point_is_refused():
     assert rising.completed
     with pytest.raises(ValueError, match="no limit point"):
         limit_point(model, load(model), rising)
+    with pytest.raises(ValueError, match="load_factor = 0.1 is given with a path"):
+        limit_point(model, load(model), rising, load_factor=0.1)
 
 
 @pytest.mark.parametrize("kwargs, match", [
@@ -276,10 +279,6 @@ def test_a_kresling_cells_limit_load_derivative_is_its_difference():
     # (every entry scaled together) against central differences of the limit point located
     # again (Newton to 1e-12 mm) with each scaled by 1 +- 1e-6: measured 8e-10 relative,
     # asserted 1e-6 (the differences' rounding, 1e-14 / 1e-6, and their truncation).
-    from kresling import Design
-    from kresling.model import kresling_specimen
-    from kresling.solvers import Parameter
-
     design = Design(8, 0.8, 30.0)
     specimen = kresling_specimen(design, ["extended"])
     fixed = np.zeros((specimen.model.num_nodes, 3), bool)
