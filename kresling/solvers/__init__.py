@@ -27,7 +27,7 @@ __getattr__, __dir__ = lazy_names(__name__, {
                      "parameter_names", "path_sensitivity", "residual_derivative",
                      "shape_jacobian",
                      "with_parameter"], "sensitivity"),
-    **dict.fromkeys(["LimitPoint", "limit_point"], "limit_point")})
+    **dict.fromkeys(["LimitPoint", "limit_point"], "limit_points")})
 
 __all__ = ["PathResult", "solve_displacement_control", "solve_force_control", "solve_mgdcm",
            "condensed_stiffness", "solve_fold", "fold", "FoldResult", "solve_dynamics", "TimeHistory",

@@ -1,5 +1,5 @@
 """The limit point of a load-controlled path and its load's derivative
-(kresling.solvers.limit_point), against the closed form of the von Mises two-bar truss.
+(kresling.solvers.limit_points), against the closed form of the von Mises two-bar truss.
 
 Two bars of the linear law S = C0 E (Green-Lagrange strain) and area A from the supports
 (-+a, 0, 0) meet at an apex free in x and z, loaded by P downwards. With rest length L and
@@ -298,3 +298,19 @@ def test_a_kresling_cells_limit_load_derivative_is_its_difference():
                              point.displacement, load_factor=point.load_factor,
                              tolerance=1e-12).load_factor for s in (1, -1)]
         assert exact == pytest.approx((moved[0] - moved[1]) / (2 * h), rel=1e-6), name
+
+
+def test_a_large_models_starting_mode_comes_from_sparse_iterations(monkeypatch):
+    # Above a size the starting mode is the sparse shift-invert eigenvector nearest zero
+    # instead of the dense one's: the same limit point, to Newton's precision.
+    import kresling.solvers.limit_points as limit_points
+
+    model = truss()
+    start = np.zeros(model.num_dofs)
+    start[APEX_Z] = 0.6 - RISE
+    dense = limit_point(model, load(model), start, ["bars.modulus"], load_factor=0.37)
+    monkeypatch.setattr(limit_points, "_DENSE_EIGEN", 0)
+    sparse = limit_point(model, load(model), start, ["bars.modulus"], load_factor=0.37)
+    assert sparse.load_factor == pytest.approx(dense.load_factor, rel=1e-13)
+    assert sparse.load_factor_derivative == pytest.approx(dense.load_factor_derivative,
+                                                          rel=1e-12)
