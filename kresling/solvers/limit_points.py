@@ -216,6 +216,11 @@ def _start(model, near, load_factor):
         if load_factor is not None:
             raise ValueError(f"load_factor = {load_factor!r} is given with a path: the path's "
                              "steps carry their own (give it with a state only)")
+        supports = set(np.flatnonzero(np.asarray(model.fixed).ravel()).tolist())
+        if not all(int(d) in supports for d in near.constraint_dofs):
+            raise ValueError("near is a displacement-controlled path (its constraint DOFs are "
+                             "imposed, not supported): its load factor is the drive's "
+                             "fraction; give a force-controlled path of these forces")
         k = _first_critical_step(near)
         return np.array(near.displacement[k], dtype=float), float(near.load_factor[k])
     if load_factor is None:

@@ -21,7 +21,8 @@ import pytest
 from kresling import Design
 from kresling.model import Model, kresling_specimen
 from kresling.solvers import (Direction, Parameter, energy_derivative, equilibrium_sensitivity,
-                              limit_point, solve_force_control, solve_mgdcm, with_parameter)
+                              limit_point, solve_displacement_control, solve_force_control,
+                              solve_mgdcm, with_parameter)
 
 A_HALF, RISE, C0, AREA = 10.0, 1.0, 1000.0, 1.0
 K = 2 / (3 * np.sqrt(3))   # P_c = K A C0 c^3 / L^3
@@ -187,6 +188,11 @@ def test_a_path_without_a_limit_point_is_refused():
         limit_point(model, load(model), rising)
     with pytest.raises(ValueError, match="load_factor = 0.1 is given with a path"):
         limit_point(model, load(model), rising, load_factor=0.1)
+    prescribed = np.zeros(model.num_dofs)
+    prescribed[APEX_Z] = -0.5
+    driven = solve_displacement_control(model, prescribed, 5)
+    with pytest.raises(ValueError, match="displacement-controlled path"):
+        limit_point(model, load(model), driven)
 
 
 @pytest.mark.parametrize("kwargs, match", [
