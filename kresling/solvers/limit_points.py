@@ -119,8 +119,8 @@ def limit_point(model, forces, near, parameters=(), *, load_factor=None, toleran
         When the path has no limit point (its load factor never turns and its stability
         never changes); at a bifurcation (the critical mode orthogonal to the load,
         ``|phi . f| <= 1e-8 |phi| |f|``), where the load factor has no extremum to
-        differentiate; when Newton does not converge (``near`` too far from the limit point); for bad
-        input.
+        differentiate; when Newton does not converge (``near`` too far from the limit
+        point); for a displacement-controlled path, or other bad input.
     """
     f = dof_vector(model, "forces", forces)
     free = model.free_dofs
