@@ -1,7 +1,8 @@
 """Nonlinear solvers: displacement control (the thesis's mode), Newton and MGDCM path
 following under force control, folding by crease actuation, time integration (implicit and explicit),
 the linearised stiffness, the exact sensitivities of equilibria and paths to the
-elements' parameters, and folding to a shape by those sensitivities. Each path solver returns a
+elements' parameters, limit points and the derivatives of their loads, and folding to a
+shape by those sensitivities. Each path solver returns a
 :class:`PathResult`; a solver that stops early says so (``completed``, ``message``)."""
 
 from kresling._lazy import lazy_names
@@ -21,13 +22,18 @@ __getattr__, __dir__ = lazy_names(__name__, {
     **dict.fromkeys(["fold_model_at", "fold_sensitivity"], "fold_sensitivity"),
     **dict.fromkeys(["ShapeFold", "fold_to_shape"], "fold_to_shape"),
     **dict.fromkeys(["Direction", "EquilibriumSensitivity", "Parameter", "PathSensitivity",
-                     "equilibrium_gradient", "equilibrium_sensitivity", "parameter_jacobian",
-                     "parameter_names", "path_sensitivity", "shape_jacobian",
-                     "with_parameter"], "sensitivity")})
+                     "energy_derivative", "equilibrium_gradient", "equilibrium_sensitivity",
+                     "parameter_jacobian",
+                     "parameter_names", "path_sensitivity", "residual_derivative",
+                     "shape_jacobian",
+                     "with_parameter"], "sensitivity"),
+    **dict.fromkeys(["LimitPoint", "limit_point"], "limit_points")})
 
 __all__ = ["PathResult", "solve_displacement_control", "solve_force_control", "solve_mgdcm",
            "condensed_stiffness", "solve_fold", "fold", "FoldResult", "solve_dynamics", "TimeHistory",
            "stable_time_step", "StableStep", "Parameter", "parameter_names", "parameter_jacobian",
            "with_parameter", "EquilibriumSensitivity", "equilibrium_sensitivity",
-           "equilibrium_gradient", "PathSensitivity", "path_sensitivity", "Direction",
-           "shape_jacobian", "fold_to_shape", "ShapeFold", "fold_sensitivity", "fold_model_at"]
+           "equilibrium_gradient", "energy_derivative", "residual_derivative", "PathSensitivity",
+           "path_sensitivity", "Direction",
+           "shape_jacobian", "fold_to_shape", "ShapeFold", "fold_sensitivity", "fold_model_at",
+           "LimitPoint", "limit_point"]

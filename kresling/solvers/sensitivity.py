@@ -26,11 +26,12 @@ import numpy as np
 
 from kresling import _core
 from kresling._validation import as_float_array, show
+from kresling.assembly import assemble
 
 __all__ = ["Parameter", "Direction", "parameter_names", "parameter_jacobian", "shape_jacobian",
            "with_parameter",
            "EquilibriumSensitivity", "equilibrium_sensitivity", "equilibrium_gradient",
-           "PathSensitivity", "path_sensitivity"]
+           "residual_derivative", "energy_derivative", "PathSensitivity", "path_sensitivity"]
 
 _NAME = re.compile(r"^([a-z_]+)\.([a-z_0-9]+)(?:\[(\d+)\])?$")
 
@@ -279,6 +280,22 @@ class _Resolved:
         return dforce, denergy
 
 
+class _Assembled:
+    """The internal force and, when first asked for, the tangent at one state: what
+    :meth:`_Resolved.residual` reads of a state that need not be factorised (a singular
+    one, at a limit point)."""
+
+    def __init__(self, model, u):
+        self._model, self._u = model, u
+        self._tangent = None
+        self.internal_force = assemble(model, u, stiffness=False).force
+
+    def tangent_times(self, M):
+        if self._tangent is None:
+            self._tangent = assemble(self._model, self._u).stiffness
+        return self._tangent @ M
+
+
 def _csc(parts):
     # Here, not at the top: a command that never differentiates (kresling bend) does not
     # pay for importing scipy.
@@ -430,6 +447,73 @@ def equilibrium_gradient(model, u, objective_gradient, parameters, *, held=None,
             gradient = gradient + as_float_array(f"explicit[{label!r}]", explicit[label])
         out[label] = gradient
     return out
+
+
+def residual_derivative(model, u, parameters):
+    """The partial derivatives of the internal force and the stored energy with respect to
+    P parameters at fixed displacement u, each a parameter column's entries moving in its
+    direction or a :class:`Direction` (the reference positions too, and the rest values that
+    follow them; a Direction's ``drive`` is not part of them).
+
+    Parameters
+    ----------
+    model : kresling.model.Model
+    u : array_like, shape (3N,)
+        Displacement [mm].
+    parameters : sequence of str, Parameter or Direction, length P
+
+    Returns
+    -------
+    force : ndarray, shape (3N, P)
+        ``d f_int/dp`` at fixed u [N per unit of each parameter].
+    energy : ndarray, shape (P,)
+        ``dE/dp`` at fixed u [N mm per unit of each parameter].
+    labels : tuple of str, length P
+        The parameters' names.
+    """
+    parameters = tuple(_parse(p) for p in parameters)
+    u = _displacement(model, u)
+    force, energy = _Resolved(model, parameters).residual(model, u, _Assembled(model, u))
+    return force, energy, tuple(p.label for p in parameters)
+
+
+def energy_derivative(model, u, parameters, *, load_derivative=None) -> np.ndarray:
+    """The derivative of an equilibrium's energy with respect to P parameters: the partial
+    derivative at fixed displacement, which needs no factorisation (envelope theorem).
+
+    At an equilibrium, the total potential ``Pi = E(u, p) - f_ext . u`` is stationary in
+    the free DOFs and the supported ones do not move, so along the equilibrium
+    ``dPi/dp = dE/dp|_u - u . d f_ext/dp``: the state's own motion ``du/dp`` drops out.
+    Unloaded (a stable state, or the saddle between two), that is the derivative of the
+    stored energy itself, as :func:`equilibrium_sensitivity` gives it; loaded, that of the
+    total potential. Because nothing is solved, it is defined where the tangent is singular
+    too: at a limit point, where the equilibria under the same load exist on one side of p
+    only, it is their one-sided derivative.
+
+    Parameters
+    ----------
+    model : kresling.model.Model
+    u : array_like, shape (3N,)
+        An equilibrium [mm]. Elsewhere the result is still the partial derivative at fixed
+        u, but not the derivative of any equilibrium's energy: the state is not checked.
+    parameters : sequence of str, Parameter or Direction, length P
+    load_derivative : array_like, shape (3N, P), optional
+        d f_ext/dp where the applied loads depend on the parameters [N per unit].
+
+    Returns
+    -------
+    ndarray, shape (P,)
+        dPi/dp [N mm per unit of each parameter].
+    """
+    u = _displacement(model, u)
+    _, denergy, labels = residual_derivative(model, u, parameters)
+    if load_derivative is not None:
+        load = as_float_array("load_derivative", load_derivative)
+        if load.shape != (model.num_dofs, len(labels)):
+            raise ValueError(f"load_derivative has shape {load.shape}: must be "
+                             f"({model.num_dofs}, {len(labels)}), one column per parameter")
+        denergy = denergy - u @ load
+    return denergy
 
 
 @dataclass(frozen=True)
