@@ -96,7 +96,13 @@ def run(args) -> int:
                   + ("completed" if stage["completed"] else "stopped"))
                  for stage in summary.get("stages", [])]
         for key, value in summary.get("fold", {}).items():
-            if key != "worst":
+            if key == "rigid_closure" and value:
+                rows.append(("fold: rigid closure",
+                             f"{value['incompatible']} of {value['vertices_checked']} interior "
+                             f"vertices open by more than {value['tolerance_deg']:g} deg"
+                             + (f" (worst {value['worst_deg']:.3g} deg, vertex "
+                                f"{value['worst_vertex']})" if value["incompatible"] else "")))
+            elif key != "worst":
                 rows.append((f"fold: {key.replace('_', ' ')}", value))
         print_table(rows, ("quantity", "value"))
         print(f"\noutputs in {out}: " + ", ".join(Path(p).name for p in written.values()))
