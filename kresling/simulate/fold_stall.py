@@ -7,8 +7,8 @@ eigenvalue falls to zero, a limit point of the rest angles. Past it the potentia
 leads into that triangle's collapse to a line, where the bar-and-hinge model is singular:
 a hinge measures its angle by the planes of its two wing triangles, and a wing flattened to
 a line has no plane, so the hinges beside it can turn freely, at an energy that falls
-towards (and jumps at) the collapse. No stable state is found there, by Newton, by the
-relaxation, nor by any descent of the energy.
+towards (and jumps at) the collapse. Neither Newton nor the relaxation finds a stable
+state there (docs/folding.md, 'Where a fold stops: the crane and the flapping bird').
 
 :func:`fold_stall` measures each step of that account on the path's last equilibrium (its
 stability and smallest eigenvalue against those an increment before, the panel triangle
@@ -192,7 +192,8 @@ def fold_stall(simulation) -> str:
                      f"{', '.join(f'{c:.3g}' for c in corners)} deg; flat "
                      f"{', '.join(f'{c:.3g}' for c in flat)})")
     if measured:
-        ahead = min(reached + increment, float(np.ceil(reached - 1e-12)))
+        # One increment on, within the stage the path stopped in ((k - 1, k] is stage k).
+        ahead = min(reached + increment, float(np.floor(reached + 1e-12)) + 1.0)
         model = solvers.fold_model_at(simulation.model, simulation.fold.stages, ahead)
         further, ratio_end, _, _ = squashed_triangle(pm, _descend(model, u, free))
         who = ("that triangle" if named and set(further.tolist()) == set(triangle.tolist())
