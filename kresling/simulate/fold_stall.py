@@ -14,7 +14,8 @@ state there (docs/folding.md, 'Where a fold stops: the crane and the flapping bi
 stability and smallest eigenvalue against those an increment before, the panel triangle
 squashed furthest from its flat shape) and, on models of up to
 :data:`MAX_MEASURED_DOFS` free DOFs, where a descent of the energy at the next increment's
-rest angles ends (its most squashed triangle), and says it in words.
+rest angles ends where the last equilibrium is a limit point (its most squashed triangle),
+and says it in words.
 """
 
 from __future__ import annotations
@@ -147,10 +148,10 @@ def fold_stall(simulation) -> str:
         Where the path ended (the fold fraction); whether the last equilibrium is stable and
         its tangent's smallest eigenvalue against that one increment before (a limit point:
         stable, and fallen below half of it); the panel triangle squashed furthest (when
-        below :data:`SQUASHED` of its flat height); and where a descent of the energy at the
-        next increment's rest angles, from the last equilibrium, leaves that triangle (or
-        another squashed further). The last two need at most :data:`MAX_MEASURED_DOFS`
-        free DOFs.
+        below :data:`SQUASHED` of its flat height); and, past a limit point, where a descent
+        of the energy at the next increment's rest angles, from the last equilibrium, leaves
+        that triangle (or another squashed further). The eigenvalues and the descent need at
+        most :data:`MAX_MEASURED_DOFS` free DOFs.
     """
     path = simulation.path
     if (simulation.fold is None or path.completed or simulation.interrupted
@@ -191,7 +192,7 @@ def fold_stall(simulation) -> str:
                      f"{100 * ratio:.3g} % of its flat height (its corners "
                      f"{', '.join(f'{c:.3g}' for c in corners)} deg; flat "
                      f"{', '.join(f'{c:.3g}' for c in flat)})")
-    if measured:
+    if limit:  # past a limit point: where the sheet would go (elsewhere, nothing to say)
         # One increment on, within the stage the path stopped in ((k - 1, k] is stage k).
         ahead = min(reached + increment, float(np.floor(reached + 1e-12)) + 1.0)
         model = solvers.fold_model_at(simulation.model, simulation.fold.stages, ahead)
@@ -204,6 +205,6 @@ def fold_stall(simulation) -> str:
                          "hinges beside it have no angle (a wing without a plane): the panels "
                          "cannot follow the creases past this point in this model")
         else:
-            parts.append(f"descending the energy at {ahead:.4g} from there leaves every panel "
-                         f"triangle at {100 * ratio_end:.3g} % of its flat height or more")
+            parts.append(f"descending the energy at {ahead:.4g} from there leaves its panel "
+                         f"triangles at {100 * ratio_end:.3g} % of their flat height or more")
     return "; ".join(parts)
