@@ -113,7 +113,7 @@ def run(args) -> int:
         if simulation.path.completed:   # a fold that ran to its end short of its targets
             print(f"kresling simulate: {simulation.message}", file=sys.stderr)
         else:
-            print(f"kresling simulate: the path stopped early: {simulation.path.message}",
+            print(f"kresling simulate: the path stopped early: {simulation.message}",
                   file=sys.stderr)
         return 1
     return 0

@@ -3,11 +3,14 @@ the path."""
 
 from __future__ import annotations
 
+import dataclasses
+
 import logging
 import sys
 
 import numpy as np
 
+from kresling.simulate.fold_stall import fold_stall
 from kresling.simulate.graceful_stop import GracefulStop
 from kresling.simulate.methods import method_names
 from kresling.simulate.preset_check import preset_goes_past
@@ -215,8 +218,10 @@ def _simulate(problem, stop, progress, stream, lines, start=None) -> Simulation:
         logger.warning("%s: the path stopped after %d increments: %s", problem.source,
                        path.num_steps, path.message)
     driven = method.driven_dofs(path, vector)
-    return Simulation(problem, pm, path, np.asarray(driven, dtype=np.int64), plan,
-                      graceful.requested, _preset_advice(problem, path, graceful.requested))
+    simulation = Simulation(problem, pm, path, np.asarray(driven, dtype=np.int64), plan,
+                            graceful.requested, _preset_advice(problem, path, graceful.requested))
+    stall = fold_stall(simulation)  # why a fold's path ended early, measured where it did
+    return dataclasses.replace(simulation, stall=stall) if stall else simulation
 
 
 def _no_path(num_dofs, constraint_dofs, families) -> PathResult:

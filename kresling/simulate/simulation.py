@@ -62,6 +62,9 @@ class Simulation:
     advice : str
         A fold with a material of its own whose path stopped early: that Origami
         Simulator's material goes on past that point, when a second fold with it shows so.
+    stall : str
+        A fold whose path ended early: why, measured at its last equilibrium (a limit point,
+        the panel triangle squashed furthest, where the energy leads past it); "" otherwise.
     """
 
     problem: object
@@ -72,6 +75,9 @@ class Simulation:
     interrupted: str = ""
     #: A fold that stalled with a material of its own: where Origami Simulator's goes on.
     advice: str = ""
+    #: A fold whose path ended early: why, measured where it ended
+    #: (:func:`kresling.simulate.fold_stall.fold_stall`).
+    stall: str = ""
 
     @property
     def model(self):
@@ -103,7 +109,7 @@ class Simulation:
         message = self.path.message or self._fold_shortfall()
         if self.path.message and self.fold is not None:   # a fold that stopped early
             message += self._closure_note(self.fold_report())
-        return f"{message}; {self.advice}" if self.advice else message
+        return "; ".join(part for part in (message, self.stall, self.advice) if part)
 
     def _fold_shortfall(self) -> str:
         """For a fold whose path ran to its end: which creases fell short, in words."""
