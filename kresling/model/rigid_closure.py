@@ -111,7 +111,8 @@ def rigid_closure(vertices, edges, fold_angle_deg, faces) -> RigidClosure | None
     order = np.lexsort((turn, ends[:, 0]))
     ends, crease, direction = ends[order], crease[order], direction[order]
     axes = np.zeros((len(direction), 3))
-    axes[:, :2] = direction / np.linalg.norm(direction, axis=1, keepdims=True)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        axes[:, :2] = direction / np.linalg.norm(direction, axis=1, keepdims=True)
     rotations = _rotations(axes, angles[crease])
     start = np.searchsorted(ends[:, 0], checked)
     degree = edge_count[checked]
@@ -127,4 +128,6 @@ def rigid_closure(vertices, edges, fold_angle_deg, faces) -> RigidClosure | None
         skew = np.stack([product[:, 2, 1] - product[:, 1, 2], product[:, 0, 2] - product[:, 2, 0],
                          product[:, 1, 0] - product[:, 0, 1]], axis=1)
         error[group] = np.degrees(np.arctan2(np.linalg.norm(skew, axis=1) / 2.0, cosine))
-    return RigidClosure(vertices=checked, error_deg=error)
+    # A vertex with a crease of no length has no direction to turn about: not checked.
+    known = np.isfinite(error)
+    return RigidClosure(vertices=checked[known], error_deg=error[known])

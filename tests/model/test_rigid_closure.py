@@ -80,3 +80,15 @@ def test_a_vertex_with_a_free_crease_is_not_checked():
 def test_a_pattern_that_is_not_flat_has_no_closure():
     folded = miura_sheet(3, 3, fold_angle=30.0)
     assert _closure(folded, _crease_angles(folded)) is None
+
+
+def test_a_vertex_with_a_crease_of_no_length_is_not_checked():
+    flat = miura_sheet(3, 3, fold_angle=0.0)
+    angles = _crease_angles(miura_sheet(3, 3, fold_angle=30.0))
+    checked = set(_closure(flat, angles).vertices.tolist())
+    vertices = np.array(flat.vertices, dtype=float)
+    u, v = next((u, v) for u, v in flat.edges.tolist() if u in checked and v in checked)
+    vertices[v] = vertices[u]   # the crease (u, v) shrunk to a point
+    closure = rigid_closure(vertices, flat.edges, angles, flat.faces)
+    assert not {u, v} & set(closure.vertices.tolist())
+    assert np.all(np.isfinite(closure.error_deg))
