@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import json
 import logging
-import math
+from itertools import chain
 from collections.abc import Mapping
 from pathlib import Path
 
@@ -210,6 +210,7 @@ def write_fold_document(path, document: dict) -> Path:
 
 #: Values ``_dumps`` writes as ``json.dumps`` does, without looking inside.
 _SCALARS = (str, float, int, bool, type(None))
+_SCALAR_KINDS = set(_SCALARS)
 
 
 def _dumps(value, indent: str = "") -> str:
@@ -221,11 +222,15 @@ def _dumps(value, indent: str = "") -> str:
         items = [f"{inner}{json.dumps(str(k))}: {_dumps(v, inner)}" for k, v in value.items()]
         return "{\n" + ",\n".join(items) + "\n" + indent + "}"
     if isinstance(value, (list, tuple)) and value:
-        # The common case first, at a fraction of the cost (a path's frames): rows of numbers
-        # (not tried on a flat list: its first item is no row).
-        rows = [_number_row(v) for v in value] if type(value[0]) in (list, tuple) else [None]
-        if None not in rows:
-            return "[\n" + ",\n".join(inner + r for r in rows) + "\n" + indent + "]"
+        # The common cases first, each in one call of json's encoder (a path's frames hold
+        # thousands): a flat list of scalars (fold angles) on one line, rows of numbers
+        # (coordinates) one per line.
+        kinds = set(map(type, value))
+        if kinds <= _SCALAR_KINDS:
+            return json.dumps(value, allow_nan=False)
+        rows = _number_rows(value, inner) if kinds <= {list, tuple} else None
+        if rows is not None:
+            return "[\n" + rows + "\n" + indent + "]"
         if any(type(v) not in _SCALARS and isinstance(v, (Mapping, list, tuple))
                for v in value):
             return ("[\n" + ",\n".join(inner + _dumps(v, inner) for v in value) + "\n" + indent
@@ -233,18 +238,16 @@ def _dumps(value, indent: str = "") -> str:
     return json.dumps(value, allow_nan=False)
 
 
-def _number_row(value):
-    """``json.dumps(value)`` of a non-empty list of Python floats and ints (no bools), or
-    None for anything else. ``repr`` is how json writes a float; a NaN or an infinity is
-    refused as json.dumps(..., allow_nan=False) refuses it."""
-    if type(value) not in (list, tuple) or not value:
+def _number_rows(value, inner: str):
+    """The rows of ``value``, lists (or tuples) of Python floats and ints (no bools), as
+    ``json.dumps`` writes each, one per line after ``inner`` and joined by ",\\n"; or None
+    when ``value`` holds anything else. json's own encoder writes them all in one call (each
+    float's ``repr``), and a NaN or an infinity is refused as json.dumps(...,
+    allow_nan=False) refuses it. Rows hold numbers only, so "], [" is found between rows
+    alone."""
+    if not set(map(type, chain.from_iterable(value))) <= {float, int}:
         return None
-    kinds = set(map(type, value))
-    if not kinds <= {float, int}:
-        return None
-    if float in kinds and not all(map(math.isfinite, value)):
-        raise ValueError("Out of range float values are not JSON compliant")
-    return "[" + ", ".join(map(repr, value)) + "]"
+    return inner + json.dumps(value, allow_nan=False)[1:-1].replace("], [", "],\n" + inner + "[")
 
 
 def fold_angles(faces, edges, coordinates) -> np.ndarray:
