@@ -27,7 +27,7 @@ import numpy as np
 
 from kresling.io import write_fold
 from kresling.io.frame_angles import fold_angle_frames
-from kresling.simulate.outputs import float_row
+from kresling.simulate.row_lines import forget_rows, remembered_row
 from kresling.solvers import PathResult
 
 __all__ = ["PathStream"]
@@ -62,6 +62,7 @@ class PathStream:
 
         self.directory = Path(directory)
         self.directory.mkdir(parents=True, exist_ok=True)
+        forget_rows()   # an earlier run's lines
         self.simulation = simulation
         self.every = int(every)
         self.model = simulation.model
@@ -145,7 +146,7 @@ class PathStream:
                          for name in self._history_names])
         handle.flush()
         handle, _ = self._displacements
-        handle.write(float_row(self._rows["displacement"][index]))
+        handle.write(remembered_row(self._rows["displacement"][index]))
         handle.flush()
 
     def rewrite(self) -> None:
