@@ -117,8 +117,8 @@ def packed_plotly_js(path=None) -> str:
     path = Path(path) if path is not None else plotly_js_path()
     stat = path.stat()
     cached = _cache_folder() / f"plotly-{stat.st_size}-{stat.st_mtime_ns}.deflate85"
-    try:
-        return cached.read_text(encoding="ascii")
+    try:   # (bytes decoded at once: several times faster than a text file's reading)
+        return cached.read_bytes().decode("ascii")
     except (OSError, UnicodeDecodeError):
         pass
     text = encode85(zlib.compress(path.read_bytes(), 9))
