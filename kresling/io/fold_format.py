@@ -29,7 +29,7 @@ from kresling.io.units import mm_per_unit
 from kresling.io.vertex_neighbours import vertices_neighbours
 
 __all__ = ["ASSIGNMENTS", "fold_angles", "fold_document", "pattern_from_fold", "read_fold",
-           "write_fold", "write_fold_document"]
+           "write_fold", "write_fold_document", "forget_frame_texts"]
 
 logger = logging.getLogger(__name__)
 
@@ -218,6 +218,15 @@ def _dumps(value, indent: str = "") -> str:
     if type(value) in _SCALARS:   # the most frequent, and no container (checked fast)
         return json.dumps(value, allow_nan=False)
     inner = indent + " "
+    if type(value) is _Frame and value.key is not None:   # a path's frame: written once
+        key = (indent, value.key)
+        text = _frame_texts.get(key)
+        if text is None:
+            text = _dumps(dict(value), indent)
+            if _frame_text_size[0] + len(text) <= _FRAME_TEXT_LIMIT:
+                _frame_texts[key] = text
+                _frame_text_size[0] += len(text)
+        return text
     if isinstance(value, Mapping) and value:
         items = [f"{inner}{json.dumps(str(k))}: {_dumps(v, inner)}" for k, v in value.items()]
         return "{\n" + ",\n".join(items) + "\n" + indent + "}"
@@ -367,17 +376,44 @@ def _frame(frame: dict, vertex_count: int, edge_count: int) -> dict:
     if not np.isfinite(coordinates).all():
         raise ValueError(f"frame {frame.get('title', '')!r}: vertices_coords has a non-finite "
                          "coordinate")
-    out = {
+    out = _Frame({
         "frame_title": frame.get("title", ""),
         "frame_classes": list(frame.get("classes", ["foldedForm"])),
         "frame_attributes": ["3D"],
         "frame_parent": 0,
         "frame_inherit": True,
         "vertices_coords": coordinates.tolist(),
-    }
+    })
+    fold_angles = None
     if "edges_foldAngle" in frame:
-        out["edges_foldAngle"] = _angles("edges_foldAngle", frame["edges_foldAngle"], edge_count)
+        fold_angles = np.asarray(frame["edges_foldAngle"], dtype=float)
+        out["edges_foldAngle"] = _angles("edges_foldAngle", fold_angles, edge_count)
+    # What the frame's text depends on, to the bit.
+    out.key = (json.dumps([out["frame_title"], out["frame_classes"]]), coordinates.tobytes(),
+               None if fold_angles is None else fold_angles.tobytes())
     return out
+
+
+class _Frame(dict):
+    """A frame of :func:`fold_document` (a dict), with ``key``: what its JSON text depends
+    on (title, classes, the coordinates' and fold angles' bytes)."""
+
+    key = None
+
+
+#: The JSON text of frames written so far, by indent and frame key: a path's file is
+#: rewritten as the path goes (every frame so far, each time) and whole at its end, with
+#: the same frames; each frame's floats are formatted once. Bounded by
+#: :data:`_FRAME_TEXT_LIMIT` characters; :func:`forget_frame_texts` lets them go.
+_frame_texts: dict = {}
+_FRAME_TEXT_LIMIT = 64_000_000
+_frame_text_size = [0]
+
+
+def forget_frame_texts() -> None:
+    """Let go of the frames' texts kept by :func:`write_fold` (a new path starts)."""
+    _frame_texts.clear()
+    _frame_text_size[0] = 0
 
 
 def _angles(name: str, values, count: int) -> list:

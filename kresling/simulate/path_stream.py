@@ -26,6 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from kresling.io import write_fold
+from kresling.io.fold_format import forget_frame_texts
 from kresling.io.frame_angles import fold_angle_frames
 from kresling.simulate.row_lines import forget_rows, remembered_row
 from kresling.solvers import PathResult
@@ -62,7 +63,8 @@ class PathStream:
 
         self.directory = Path(directory)
         self.directory.mkdir(parents=True, exist_ok=True)
-        forget_rows()   # an earlier run's lines
+        forget_rows()   # an earlier run's lines and frames
+        forget_frame_texts()
         self.simulation = simulation
         self.every = int(every)
         self.model = simulation.model
