@@ -3,6 +3,7 @@ the stored energy split into bars, folds and bends."""
 
 from __future__ import annotations
 
+import weakref
 from dataclasses import dataclass
 
 import numpy as np
@@ -54,6 +55,34 @@ class ElementHistories:
         return self.hinge_angle - np.asarray(rest_angle)[None, :]
 
 
+_NAMES = ("bar_strain", "bar_stress", "bar_energy", "hinge_angle", "hinge_moment",
+          "hinge_energy")
+
+#: The element states evaluated so far, by model and the displacement's bytes: a run that
+#: writes its history row by row as its path goes evaluates each increment once for its
+#: row, and the history written whole at its end takes them instead of evaluating them
+#: again. At most :data:`_KEPT_VALUES` values are kept per model (then no more).
+_kept_states = weakref.WeakKeyDictionary()
+_KEPT_VALUES = 8_000_000
+
+
+def _element_state(model, u) -> tuple:
+    """The arrays of :data:`_NAMES` of ``model.element_state(u)``, evaluated once per
+    model and displacement."""
+    u = np.asarray(u, dtype=float)
+    kept = _kept_states.setdefault(model, {"values": 0, "states": {}})
+    key = u.tobytes()
+    state = kept["states"].get(key)
+    if state is None:
+        values = model.element_state(u)
+        state = tuple(values[name] for name in _NAMES)
+        size = sum(len(a) for a in state)
+        if kept["values"] + size <= _KEPT_VALUES:
+            kept["states"][key] = state
+            kept["values"] += size
+    return state
+
+
 def element_histories(pattern_model, path) -> ElementHistories:
     """Evaluate every element at every increment of ``path``.
 
@@ -69,14 +98,11 @@ def element_histories(pattern_model, path) -> ElementHistories:
     """
     model = getattr(pattern_model, "model", pattern_model)
     family = getattr(pattern_model, "hinge_family", ("unassigned",) * len(model.hinges))
-    names = ("bar_strain", "bar_stress", "bar_energy", "hinge_angle", "hinge_moment",
-             "hinge_energy")
-    rows = {name: [] for name in names}
+    rows = {name: [] for name in _NAMES}
     for u in path.displacement:
-        state = model.element_state(u)
-        for name in names:
-            rows[name].append(state[name])
+        for name, values in zip(_NAMES, _element_state(model, u)):
+            rows[name].append(values)
     sizes = {"bar": len(model.bars), "hinge": len(model.hinges)}
     arrays = {name: (np.array(rows[name]) if rows[name]
-                     else np.zeros((0, sizes[name.split("_")[0]]))) for name in names}
+                     else np.zeros((0, sizes[name.split("_")[0]]))) for name in _NAMES}
     return ElementHistories(**arrays, hinge_family=tuple(family))
