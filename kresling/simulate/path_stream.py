@@ -25,7 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
-from kresling.io import write_fold
+from kresling.io import pattern_from_arrays, write_fold
 from kresling.io.fold_format import forget_frame_texts
 from kresling.io.frame_angles import fold_angle_frames
 from kresling.simulate.row_lines import forget_rows, remembered_row
@@ -78,6 +78,7 @@ class PathStream:
         self._edges, self._assignment = path_fold_edges(simulation.pattern_model)
         self._rest_angles = fold_angle_frames(self._triangles, self._edges,
                                               [self.model.nodes])[0]
+        self._pattern = None   # the key frame's, at the first rewrite with a frame
         self._history_names = list(simulation.history_columns())
         self._history = self._open_rows("history.csv", self._history_names)
         self._displacements = self._open_rows(
@@ -171,9 +172,12 @@ class PathStream:
         if frames and len(frames) * self.model.num_dofs * 20 <= LARGE_OUTPUT:
             target = self.directory / "path.fold"
             tmp = target.with_name(target.name + ".part")
-            write_fold(tmp, self.model.nodes, self._triangles, edges=self._edges,
-                       edges_assignment=self._assignment,
-                       edges_fold_angle=self._rest_angles, frames=frames,
+            if self._pattern is None:   # built (and checked) once, for every rewrite
+                self._pattern = pattern_from_arrays(
+                    self.model.nodes, self._triangles, edges=self._edges,
+                    edges_assignment=self._assignment, edges_fold_angle=self._rest_angles,
+                    panels_required=len(self._edges) == 0)
+            write_fold(tmp, self._pattern, frames=frames,
                        frame_fold_angles=list(self._frame_angles),
                        frame_title=f"{Path(self.simulation.problem.source).name}: "
                                    "reference state",
