@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import importlib.util
 import os
-import tempfile
 import zlib
 from functools import lru_cache
 from pathlib import Path
@@ -122,6 +121,8 @@ def packed_plotly_js(path=None) -> str:
     except (OSError, UnicodeDecodeError):
         pass
     text = encode85(zlib.compress(path.read_bytes(), 9))
+    import tempfile   # (once per installation of plotly: not at every page's start)
+
     try:
         cached.parent.mkdir(parents=True, exist_ok=True)
         with tempfile.NamedTemporaryFile("w", dir=cached.parent, delete=False,
