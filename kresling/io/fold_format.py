@@ -138,14 +138,16 @@ def write_fold(path, pattern_or_vertices, faces=None, *, edges=None, edges_assig
         angles = None
     else:
         angles[unknown & np.isin(pattern.edges_assignment, ("B", "F"))] = 0.0
+    given = [{"title": title, "vertices_coords": np.asarray(frame) * per_mm}
+             | ({} if frame_angles is None else {"edges_foldAngle": frame_angles[k]})
+             for k, (title, frame) in enumerate(zip(titles[1:], frames))]
     document = fold_document(
         (pattern.vertices[:, :2] if flat else pattern.vertices) * per_mm, pattern.edges,
-        pattern.edges_assignment, pattern.faces, edges_fold_angle=angles,
-        frames=[{"title": title, "vertices_coords": np.asarray(frame) * per_mm}
-                | ({} if frame_angles is None else {"edges_foldAngle": frame_angles[k]})
-                for k, (title, frame) in enumerate(zip(titles[1:], frames))],
-        title=titles[0],
-        extra={"frame_classes": ["creasePattern" if flat else "foldedForm"]})
+        pattern.edges_assignment, pattern.faces, edges_fold_angle=angles, frames=given,
+        title=titles[0], extra={"frame_classes": ["creasePattern" if flat else "foldedForm"]})
+    if given:   # each frame's text formatted once over the rewrites of a growing path
+        document["file_frames"] = [_keyed_frame(written, frame) for written, frame
+                                   in zip(document["file_frames"], given)]
     if "C" in pattern.edges_assignment:
         # Readers that separate the faces along cuts walk round each vertex in this order.
         document["vertices_vertices"], document["vertices_edges"] = vertices_neighbours(
@@ -376,29 +378,36 @@ def _frame(frame: dict, vertex_count: int, edge_count: int) -> dict:
     if not np.isfinite(coordinates).all():
         raise ValueError(f"frame {frame.get('title', '')!r}: vertices_coords has a non-finite "
                          "coordinate")
-    out = _Frame({
+    out = {
         "frame_title": frame.get("title", ""),
         "frame_classes": list(frame.get("classes", ["foldedForm"])),
         "frame_attributes": ["3D"],
         "frame_parent": 0,
         "frame_inherit": True,
         "vertices_coords": coordinates.tolist(),
-    })
-    fold_angles = None
+    }
     if "edges_foldAngle" in frame:
-        fold_angles = np.asarray(frame["edges_foldAngle"], dtype=float)
-        out["edges_foldAngle"] = _angles("edges_foldAngle", fold_angles, edge_count)
-    # What the frame's text depends on, to the bit.
-    out.key = (json.dumps([out["frame_title"], out["frame_classes"]]), coordinates.tobytes(),
-               None if fold_angles is None else fold_angles.tobytes())
+        out["edges_foldAngle"] = _angles("edges_foldAngle", frame["edges_foldAngle"], edge_count)
     return out
 
 
 class _Frame(dict):
-    """A frame of :func:`fold_document` (a dict), with ``key``: what its JSON text depends
-    on (title, classes, the coordinates' and fold angles' bytes)."""
+    """A frame of a document :func:`write_fold` made and writes at once (so never changed
+    in between), with ``key``: what its JSON text depends on (title, classes, the
+    coordinates' and fold angles' bytes)."""
 
     key = None
+
+
+def _keyed_frame(written: dict, given: dict) -> _Frame:
+    """The frame ``written`` (of :func:`_frame`) with the key of the arrays it was made
+    from (``given``)."""
+    frame = _Frame(written)
+    angles = given.get("edges_foldAngle")
+    frame.key = (json.dumps([written["frame_title"], written["frame_classes"]]),
+                 np.asarray(given["vertices_coords"], dtype=float).tobytes(),
+                 None if angles is None else np.asarray(angles, dtype=float).tobytes())
+    return frame
 
 
 #: The JSON text of frames written so far, by indent and frame key: a path's file is
