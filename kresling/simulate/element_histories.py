@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["ElementHistories", "element_histories"]
+__all__ = ["ElementHistories", "element_histories", "keep_element_states"]
 
 
 @dataclass(frozen=True)
@@ -58,28 +58,40 @@ class ElementHistories:
 _NAMES = ("bar_strain", "bar_stress", "bar_energy", "hinge_angle", "hinge_moment",
           "hinge_energy")
 
-#: The element states evaluated so far, by model and the displacement's bytes: a run that
-#: writes its history row by row as its path goes evaluates each increment once for its
-#: row, and the history written whole at its end takes them instead of evaluating them
-#: again. At most :data:`_KEPT_VALUES` values are kept per model (then no more).
+#: The element states of the model of a run that writes its history row by row as its path
+#: goes (:func:`keep_element_states`), by the displacement's bytes: each increment is
+#: evaluated once for its row, and the history written whole at the run's end takes them
+#: (and lets them go) instead of evaluating them again. One model at a time, at most
+#: :data:`_KEPT_VALUES` values.
 _kept_states = weakref.WeakKeyDictionary()
 _KEPT_VALUES = 8_000_000
 
 
+def keep_element_states(model) -> None:
+    """Keep the element states of ``model`` evaluated from now on (for one later evaluation
+    of each), letting go of those kept for any other model."""
+    _kept_states.clear()
+    _kept_states[model] = {"values": 0, "states": {}}
+
+
 def _element_state(model, u) -> tuple:
-    """The arrays of :data:`_NAMES` of ``model.element_state(u)``, evaluated once per
-    model and displacement."""
-    u = np.asarray(u, dtype=float)
-    kept = _kept_states.setdefault(model, {"values": 0, "states": {}})
-    key = u.tobytes()
-    state = kept["states"].get(key)
-    if state is None:
+    """The arrays of :data:`_NAMES` of ``model.element_state(u)``; a state kept by
+    :func:`keep_element_states` is taken instead of evaluated again."""
+    kept = _kept_states.get(model)
+    if kept is None:
         values = model.element_state(u)
-        state = tuple(values[name] for name in _NAMES)
-        size = sum(len(a) for a in state)
-        if kept["values"] + size <= _KEPT_VALUES:
-            kept["states"][key] = state
-            kept["values"] += size
+        return tuple(values[name] for name in _NAMES)
+    key = np.asarray(u, dtype=float).tobytes()
+    state = kept["states"].pop(key, None)
+    if state is not None:
+        kept["values"] -= sum(len(a) for a in state)
+        return state
+    values = model.element_state(u)
+    state = tuple(values[name] for name in _NAMES)
+    size = sum(len(a) for a in state)
+    if kept["values"] + size <= _KEPT_VALUES:
+        kept["states"][key] = state
+        kept["values"] += size
     return state
 
 

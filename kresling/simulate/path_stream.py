@@ -28,6 +28,7 @@ import numpy as np
 from kresling.io import pattern_from_arrays, write_fold
 from kresling.io.fold_format import forget_frame_texts
 from kresling.io.frame_angles import fold_angle_frames
+from kresling.simulate.element_histories import keep_element_states
 from kresling.simulate.row_lines import forget_rows, remembered_row
 from kresling.solvers import PathResult
 
@@ -65,6 +66,7 @@ class PathStream:
         self.directory.mkdir(parents=True, exist_ok=True)
         forget_rows()   # an earlier run's lines and frames
         forget_frame_texts()
+        keep_element_states(simulation.model)   # its rows' states, for its final history
         self.simulation = simulation
         self.every = int(every)
         self.model = simulation.model
