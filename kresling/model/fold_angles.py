@@ -12,8 +12,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from kresling.io.frame_angles import newell_normals
-
 __all__ = ["hinge_fold_signs", "fold_angles_deg", "rest_angles_for"]
 
 
@@ -24,6 +22,10 @@ def hinge_fold_signs(pattern_model) -> np.ndarray:
     +1 where that panel's normal (by its vertex order) points the way of
     ``(b - a) x (b - d)``, -1 otherwise.
     """
+    # Imported here: the model's modules are read by commands (kresling bend) that read no
+    # pattern file.
+    from kresling.io.frame_angles import newell_normals
+
     elements = pattern_model.elements
     X = np.asarray(pattern_model.model.nodes, dtype=float)
     normals = newell_normals(X[None], elements.panels)[0]
