@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import json
 import logging
-import math
+from itertools import chain
 from collections.abc import Mapping
 from pathlib import Path
 
@@ -29,7 +29,7 @@ from kresling.io.units import mm_per_unit
 from kresling.io.vertex_neighbours import vertices_neighbours
 
 __all__ = ["ASSIGNMENTS", "fold_angles", "fold_document", "pattern_from_fold", "read_fold",
-           "write_fold", "write_fold_document"]
+           "write_fold", "write_fold_document", "forget_frame_texts"]
 
 logger = logging.getLogger(__name__)
 
@@ -138,14 +138,16 @@ def write_fold(path, pattern_or_vertices, faces=None, *, edges=None, edges_assig
         angles = None
     else:
         angles[unknown & np.isin(pattern.edges_assignment, ("B", "F"))] = 0.0
+    given = [{"title": title, "vertices_coords": np.asarray(frame) * per_mm}
+             | ({} if frame_angles is None else {"edges_foldAngle": frame_angles[k]})
+             for k, (title, frame) in enumerate(zip(titles[1:], frames))]
     document = fold_document(
         (pattern.vertices[:, :2] if flat else pattern.vertices) * per_mm, pattern.edges,
-        pattern.edges_assignment, pattern.faces, edges_fold_angle=angles,
-        frames=[{"title": title, "vertices_coords": np.asarray(frame) * per_mm}
-                | ({} if frame_angles is None else {"edges_foldAngle": frame_angles[k]})
-                for k, (title, frame) in enumerate(zip(titles[1:], frames))],
-        title=titles[0],
-        extra={"frame_classes": ["creasePattern" if flat else "foldedForm"]})
+        pattern.edges_assignment, pattern.faces, edges_fold_angle=angles, frames=given,
+        title=titles[0], extra={"frame_classes": ["creasePattern" if flat else "foldedForm"]})
+    if given:   # each frame's text formatted once over the rewrites of a growing path
+        document["file_frames"] = [_keyed_frame(written, frame) for written, frame
+                                   in zip(document["file_frames"], given)]
     if "C" in pattern.edges_assignment:
         # Readers that separate the faces along cuts walk round each vertex in this order.
         document["vertices_vertices"], document["vertices_edges"] = vertices_neighbours(
@@ -210,6 +212,7 @@ def write_fold_document(path, document: dict) -> Path:
 
 #: Values ``_dumps`` writes as ``json.dumps`` does, without looking inside.
 _SCALARS = (str, float, int, bool, type(None))
+_SCALAR_KINDS = set(_SCALARS)
 
 
 def _dumps(value, indent: str = "") -> str:
@@ -217,15 +220,28 @@ def _dumps(value, indent: str = "") -> str:
     if type(value) in _SCALARS:   # the most frequent, and no container (checked fast)
         return json.dumps(value, allow_nan=False)
     inner = indent + " "
+    if type(value) is _Frame and value.key is not None:   # a path's frame: written once
+        key = (indent, value.key)
+        text = _frame_texts.get(key)
+        if text is None:
+            text = _dumps(dict(value), indent)
+            if _frame_text_size[0] + len(text) <= _FRAME_TEXT_LIMIT:
+                _frame_texts[key] = text
+                _frame_text_size[0] += len(text)
+        return text
     if isinstance(value, Mapping) and value:
         items = [f"{inner}{json.dumps(str(k))}: {_dumps(v, inner)}" for k, v in value.items()]
         return "{\n" + ",\n".join(items) + "\n" + indent + "}"
     if isinstance(value, (list, tuple)) and value:
-        # The common case first, at a fraction of the cost (a path's frames): rows of numbers
-        # (not tried on a flat list: its first item is no row).
-        rows = [_number_row(v) for v in value] if type(value[0]) in (list, tuple) else [None]
-        if None not in rows:
-            return "[\n" + ",\n".join(inner + r for r in rows) + "\n" + indent + "]"
+        # The common cases first, each in one call of json's encoder (a path's frames hold
+        # thousands): a flat list of scalars (fold angles) on one line, rows of numbers
+        # (coordinates) one per line.
+        kinds = set(map(type, value))
+        if kinds <= _SCALAR_KINDS:
+            return json.dumps(value, allow_nan=False)
+        rows = _number_rows(value, inner) if kinds <= {list, tuple} else None
+        if rows is not None:
+            return "[\n" + rows + "\n" + indent + "]"
         if any(type(v) not in _SCALARS and isinstance(v, (Mapping, list, tuple))
                for v in value):
             return ("[\n" + ",\n".join(inner + _dumps(v, inner) for v in value) + "\n" + indent
@@ -233,18 +249,16 @@ def _dumps(value, indent: str = "") -> str:
     return json.dumps(value, allow_nan=False)
 
 
-def _number_row(value):
-    """``json.dumps(value)`` of a non-empty list of Python floats and ints (no bools), or
-    None for anything else. ``repr`` is how json writes a float; a NaN or an infinity is
-    refused as json.dumps(..., allow_nan=False) refuses it."""
-    if type(value) not in (list, tuple) or not value:
+def _number_rows(value, inner: str):
+    """The rows of ``value``, lists (or tuples) of Python floats and ints (no bools), as
+    ``json.dumps`` writes each, one per line after ``inner`` and joined by ",\\n"; or None
+    when ``value`` holds anything else. json's own encoder writes them all in one call (each
+    float's ``repr``), and a NaN or an infinity is refused as json.dumps(...,
+    allow_nan=False) refuses it. Rows hold numbers only, so "], [" is found between rows
+    alone."""
+    if not set(map(type, chain.from_iterable(value))) <= {float, int}:
         return None
-    kinds = set(map(type, value))
-    if not kinds <= {float, int}:
-        return None
-    if float in kinds and not all(map(math.isfinite, value)):
-        raise ValueError("Out of range float values are not JSON compliant")
-    return "[" + ", ".join(map(repr, value)) + "]"
+    return inner + json.dumps(value, allow_nan=False)[1:-1].replace("], [", "],\n" + inner + "[")
 
 
 def fold_angles(faces, edges, coordinates) -> np.ndarray:
@@ -375,6 +389,40 @@ def _frame(frame: dict, vertex_count: int, edge_count: int) -> dict:
     if "edges_foldAngle" in frame:
         out["edges_foldAngle"] = _angles("edges_foldAngle", frame["edges_foldAngle"], edge_count)
     return out
+
+
+class _Frame(dict):
+    """A frame of a document :func:`write_fold` made and writes at once (so never changed
+    in between), with ``key``: what its JSON text depends on (title, classes, the
+    coordinates' and fold angles' bytes)."""
+
+    key = None
+
+
+def _keyed_frame(written: dict, given: dict) -> _Frame:
+    """The frame ``written`` (of :func:`_frame`) with the key of the arrays it was made
+    from (``given``)."""
+    frame = _Frame(written)
+    angles = given.get("edges_foldAngle")
+    frame.key = (json.dumps([written["frame_title"], written["frame_classes"]]),
+                 np.asarray(given["vertices_coords"], dtype=float).tobytes(),
+                 None if angles is None else np.asarray(angles, dtype=float).tobytes())
+    return frame
+
+
+#: The JSON text of frames written so far, by indent and frame key: a path's file is
+#: rewritten as the path goes (every frame so far, each time) and whole at its end, with
+#: the same frames; each frame's floats are formatted once. Bounded by
+#: :data:`_FRAME_TEXT_LIMIT` characters; :func:`forget_frame_texts` lets them go.
+_frame_texts: dict = {}
+_FRAME_TEXT_LIMIT = 64_000_000
+_frame_text_size = [0]
+
+
+def forget_frame_texts() -> None:
+    """Let go of the frames' texts kept by :func:`write_fold` (a new path starts)."""
+    _frame_texts.clear()
+    _frame_text_size[0] = 0
 
 
 def _angles(name: str, values, count: int) -> list:

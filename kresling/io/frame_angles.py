@@ -28,8 +28,18 @@ def newell_normals(frames, faces) -> np.ndarray:
     for index, face in enumerate(faces):
         by_size.setdefault(len(face), []).append(index)
     for indices in by_size.values():   # one array operation per corner count
-        corners = frames[:, np.array([faces[i] for i in indices])]        # (K, F, k, 3)
-        normals[:, indices] = np.cross(corners, np.roll(corners, -1, axis=2)).sum(axis=2)
+        corners = np.array([faces[i] for i in indices])                  # (F, k)
+        x, y, z = (frames[:, corners, axis] for axis in range(3))        # (K, F, k) each
+        # The sum over the corners of cross(p_i, p_i+1), written out: the same products,
+        # differences and sums in the same order as np.cross(...).sum() (so the same bits,
+        # signed zeros included: the sum starts from +0), several times faster.
+        total = 0.0
+        for i in range(corners.shape[1]):
+            j = (i + 1) % corners.shape[1]
+            total = total + np.stack([y[..., i] * z[..., j] - z[..., i] * y[..., j],
+                                      z[..., i] * x[..., j] - x[..., i] * z[..., j],
+                                      x[..., i] * y[..., j] - y[..., i] * x[..., j]], axis=-1)
+        normals[:, indices] = total
     return normals
 
 

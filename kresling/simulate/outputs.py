@@ -16,6 +16,7 @@ from kresling.io.frame_angles import newell_normals
 from kresling.io.frame_angles import fold_angle_frames
 from kresling.model.pattern_model import FAMILY_OF_ASSIGNMENT, MEMBER
 from kresling.simulate.problem_keys import problem_keys
+from kresling.simulate.row_lines import float_row, row_lines
 
 __all__ = ["write_outputs", "path_fold_edges", "oriented_triangles", "kept_rows", "view_title",
            "write_csv", "write_float_csv", "float_row", "LARGE_OUTPUT"]
@@ -38,18 +39,14 @@ def write_csv(path: Path, header, rows):
     tmp.replace(path)  # never a half-written file under the final name
 
 
-def float_row(values) -> str:
-    """One CSV line of floats, as ``csv.writer`` writes it (each float's ``repr``, no quotes,
-    ``\\r\\n``), at about half its cost: a path's files hold thousands of rows."""
-    return ",".join(map(repr, np.asarray(values, dtype=float).tolist())) + "\r\n"
-
-
 def write_float_csv(path: Path, header, array):
-    """:func:`write_csv` of a header and rows of floats (``array``, shape (R, C))."""
+    """:func:`write_csv` of a header and rows of floats (``array``, shape (R, C)), each row
+    as :func:`float_row` writes it (taken ready from :mod:`kresling.simulate.row_lines`
+    where the run's stream formatted it already)."""
     tmp = path.with_name(path.name + ".part")
     with tmp.open("w", newline="") as handle:
         csv.writer(handle).writerow(header)
-        handle.writelines(map(float_row, np.asarray(array, dtype=float)))
+        handle.writelines(row_lines(array))
     tmp.replace(path)  # never a half-written file under the final name
 
 

@@ -25,9 +25,11 @@ from pathlib import Path
 
 import numpy as np
 
-from kresling.io import write_fold
+from kresling.io import pattern_from_arrays, write_fold
+from kresling.io.fold_format import forget_frame_texts
 from kresling.io.frame_angles import fold_angle_frames
-from kresling.simulate.outputs import float_row
+from kresling.simulate.element_histories import keep_element_states
+from kresling.simulate.row_lines import forget_rows, remembered_row
 from kresling.solvers import PathResult
 
 __all__ = ["PathStream"]
@@ -62,6 +64,9 @@ class PathStream:
 
         self.directory = Path(directory)
         self.directory.mkdir(parents=True, exist_ok=True)
+        forget_rows()   # an earlier run's lines and frames
+        forget_frame_texts()
+        keep_element_states(simulation.model)   # its rows' states, for its final history
         self.simulation = simulation
         self.every = int(every)
         self.model = simulation.model
@@ -75,6 +80,7 @@ class PathStream:
         self._edges, self._assignment = path_fold_edges(simulation.pattern_model)
         self._rest_angles = fold_angle_frames(self._triangles, self._edges,
                                               [self.model.nodes])[0]
+        self._pattern = None   # the key frame's, at the first rewrite with a frame
         self._history_names = list(simulation.history_columns())
         self._history = self._open_rows("history.csv", self._history_names)
         self._displacements = self._open_rows(
@@ -145,7 +151,7 @@ class PathStream:
                          for name in self._history_names])
         handle.flush()
         handle, _ = self._displacements
-        handle.write(float_row(self._rows["displacement"][index]))
+        handle.write(remembered_row(self._rows["displacement"][index]))
         handle.flush()
 
     def rewrite(self) -> None:
@@ -168,9 +174,12 @@ class PathStream:
         if frames and len(frames) * self.model.num_dofs * 20 <= LARGE_OUTPUT:
             target = self.directory / "path.fold"
             tmp = target.with_name(target.name + ".part")
-            write_fold(tmp, self.model.nodes, self._triangles, edges=self._edges,
-                       edges_assignment=self._assignment,
-                       edges_fold_angle=self._rest_angles, frames=frames,
+            if self._pattern is None:   # built (and checked) once, for every rewrite
+                self._pattern = pattern_from_arrays(
+                    self.model.nodes, self._triangles, edges=self._edges,
+                    edges_assignment=self._assignment, edges_fold_angle=self._rest_angles,
+                    panels_required=len(self._edges) == 0)
+            write_fold(tmp, self._pattern, frames=frames,
                        frame_fold_angles=list(self._frame_angles),
                        frame_title=f"{Path(self.simulation.problem.source).name}: "
                                    "reference state",

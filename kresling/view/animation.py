@@ -7,9 +7,6 @@ Increments are numbered from 1: frame ``"K"`` shows row ``K - 1`` of a path's ar
 
 from __future__ import annotations
 
-import html
-import textwrap
-
 import numpy as np
 
 from kresling._validation import as_integer
@@ -35,6 +32,9 @@ def partial_line(increments: int, reason: str) -> str:
     ``increments`` increments" and ``reason`` (HTML-escaped), broken into lines of at most
     :data:`TITLE_LINE` characters (a word longer than that is broken too), each starting
     with ``<br>``, so that a long message is shown whole."""
+    import html   # (a path that stopped early only)
+    import textwrap
+
     text = (f"PARTIAL: the solver stopped after {increments} increments "
             f"({reason.strip() or 'no reason given'})")
     lines = textwrap.wrap(text, TITLE_LINE, break_long_words=True, break_on_hyphens=False)

@@ -16,7 +16,6 @@ curve, a slider "increment K / S", play/pause, ``#frame=K``.
 
 from __future__ import annotations
 
-import html as _html
 import json
 import re
 import zlib
@@ -271,21 +270,31 @@ def _increments(increments, num_steps):
     return numbers
 
 
+def _escape(text: str) -> str:
+    """``text`` with ``&``, ``<``, ``>``, ``"`` and ``'`` as HTML entities (as
+    ``html.escape`` writes them, without importing its table of every entity)."""
+    return (text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+            .replace('"', "&quot;").replace("'", "&#x27;"))
+
+
 def _write(file: Path, title: str, spec: dict, frames: str) -> Path:
     plain = re.sub(r"<[^>]+>", " ", title).strip()
     figure = json.dumps(spec, separators=(",", ":")).replace("</", "<\\/")
-    page = "".join([
+    # Each part encoded on its own: plotly's 1.8 MB stay ASCII, never copied into a wider
+    # string by a title's non-ASCII character.
+    parts = [
         '<!DOCTYPE html>\n<html>\n<head>\n<meta charset="utf-8">\n',
-        f"<title>{_html.escape(plain)}</title>\n",
+        f"<title>{_escape(plain)}</title>\n",
         "<style>html, body { margin: 0; } #kresling-view { width: 100%; height: 100vh; "
         "min-height: 520px; }</style>\n</head>\n<body>\n",
         '<div id="kresling-view"></div>\n',
-        f'<script type="text/plain" id="kresling-plotly">{packed_plotly_js()}</script>\n',
+        '<script type="text/plain" id="kresling-plotly">', packed_plotly_js(), "</script>\n",
         f'<script type="application/json" id="kresling-figure">{figure}</script>\n',
         f'<script type="text/plain" id="kresling-frames">{frames}</script>\n',
-        f"<script>{DECODE_JS}{PAGE_SCRIPT}</script>\n</body>\n</html>\n"])
+        f"<script>{DECODE_JS}{PAGE_SCRIPT}</script>\n</body>\n</html>\n"]
     file.parent.mkdir(parents=True, exist_ok=True)
     part = file.with_name(file.name + ".part")
-    part.write_text(page, encoding="utf-8")
+    with part.open("wb") as handle:
+        handle.writelines(text.encode("utf-8") for text in parts)
     part.replace(file)
     return file

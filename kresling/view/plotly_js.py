@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import importlib.util
 import os
-import tempfile
 import zlib
 from functools import lru_cache
 from pathlib import Path
@@ -117,11 +116,13 @@ def packed_plotly_js(path=None) -> str:
     path = Path(path) if path is not None else plotly_js_path()
     stat = path.stat()
     cached = _cache_folder() / f"plotly-{stat.st_size}-{stat.st_mtime_ns}.deflate85"
-    try:
-        return cached.read_text(encoding="ascii")
+    try:   # (bytes decoded at once: several times faster than a text file's reading)
+        return cached.read_bytes().decode("ascii")
     except (OSError, UnicodeDecodeError):
         pass
     text = encode85(zlib.compress(path.read_bytes(), 9))
+    import tempfile   # (once per installation of plotly: not at every page's start)
+
     try:
         cached.parent.mkdir(parents=True, exist_ok=True)
         with tempfile.NamedTemporaryFile("w", dir=cached.parent, delete=False,
