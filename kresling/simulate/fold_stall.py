@@ -26,8 +26,9 @@ from kresling import solvers
 
 __all__ = ["fold_stall", "squashed_triangle", "MAX_MEASURED_DOFS", "SQUASHED", "COLLAPSED"]
 
-#: Free DOFs up to which the smallest eigenvalues are computed (dense) and the energy is
-#: descended past the path's end; beyond, only the squashed triangle is named.
+#: Free DOFs up to which the smallest eigenvalues are computed densely and the energy is
+#: descended past the path's end; beyond, the eigenvalue nearest zero of a stable state is
+#: found by sparse shift-invert Lanczos, and no descent is made.
 MAX_MEASURED_DOFS = 3000
 #: A panel triangle below this fraction of its flat height is named as squashed.
 SQUASHED = 0.5
@@ -95,14 +96,27 @@ def _triangle_words(pattern_model, triangle) -> str:
     return f"the panel triangle of nodes {names[0]}, {names[1]} and {names[2]}"
 
 
-def _smallest_eigenvalue(model, u, free) -> float:
-    """The smallest eigenvalue of the tangent on the free DOFs at ``u`` [N/mm]."""
-    from scipy.linalg import eigh
-
+def _smallest_eigenvalue(model, u, free) -> float | None:
+    """The smallest eigenvalue of the tangent on the free DOFs at ``u`` [N/mm]: dense up to
+    :data:`MAX_MEASURED_DOFS` free DOFs; beyond, the one nearest zero, by shift-invert
+    Lanczos on the sparse tangent (ARPACK), which is the smallest where the tangent is
+    positive definite; None where that finds none (a tangent singular to rounding)."""
     from kresling.assembly import assemble
 
-    stiffness = assemble(model, u).stiffness.toarray()[np.ix_(free, free)]
-    return float(eigh(stiffness, eigvals_only=True, subset_by_index=[0, 0])[0])
+    stiffness = assemble(model, u).stiffness
+    if len(free) <= MAX_MEASURED_DOFS:
+        from scipy.linalg import eigh
+
+        dense = stiffness.toarray()[np.ix_(free, free)]
+        return float(eigh(dense, eigvals_only=True, subset_by_index=[0, 0])[0])
+    from scipy.sparse.linalg import ArpackError, eigsh
+
+    try:
+        nearest = eigsh(stiffness.tocsc()[free][:, free], k=1, sigma=0.0, which="LM",
+                        return_eigenvectors=False)
+    except (ArpackError, RuntimeError):   # RuntimeError: the shifted factor is singular
+        return None
+    return float(nearest[0])
 
 
 def _descend(model, u, free):
@@ -150,8 +164,9 @@ def fold_stall(simulation) -> str:
         stable, and fallen below half of it); the panel triangle squashed furthest (when
         below :data:`SQUASHED` of its flat height); and, past a limit point, where a descent
         of the energy at the next increment's rest angles, from the last equilibrium, leaves
-        that triangle (or another squashed further). The eigenvalues and the descent need at
-        most :data:`MAX_MEASURED_DOFS` free DOFs.
+        that triangle (or another squashed further). The descent needs at most
+        :data:`MAX_MEASURED_DOFS` free DOFs; beyond them the eigenvalues are found sparse, of
+        stable states only (an unstable one is said so, with its negative eigenvalues).
     """
     path = simulation.path
     if (simulation.fold is None or path.completed or simulation.interrupted
@@ -164,14 +179,19 @@ def fold_stall(simulation) -> str:
     u = path.displacement[-1]
     parts = []
     measured = free.size <= MAX_MEASURED_DOFS
+    # Beyond the dense size the eigenvalue found is the one nearest zero: the smallest only
+    # where the factorisation counted no negative one.
+    unstable_there = (not measured and len(path.negative_eigenvalues)
+                      and path.negative_eigenvalues[-1] > 0)
+    lowest = None if unstable_there else _smallest_eigenvalue(simulation.model_at(-1), u, free)
     limit = False
-    if measured:
-        lowest = _smallest_eigenvalue(simulation.model_at(-1), u, free)
+    if lowest is not None:
         # The equilibrium a whole increment before the last one (before any halving).
         before = int(np.searchsorted(path.load_factor, reached - increment * (1 - 1e-9),
                                      side="right")) - 1
         earlier = None
-        if 0 <= before < path.num_steps - 1:
+        if 0 <= before < path.num_steps - 1 and (measured
+                                                 or path.negative_eigenvalues[before] == 0):
             earlier = _smallest_eigenvalue(simulation.model_at(before),
                                            path.displacement[before], free)
         limit = lowest > 0 and earlier is not None and lowest < 0.5 * earlier
@@ -192,7 +212,11 @@ def fold_stall(simulation) -> str:
                      f"{100 * ratio:.3g} % of its flat height (its corners "
                      f"{', '.join(f'{c:.3g}' for c in corners)} deg; flat "
                      f"{', '.join(f'{c:.3g}' for c in flat)})")
-    if limit:  # past a limit point: where the sheet would go (elsewhere, nothing to say)
+    if unstable_there:
+        parts.insert(0, f"its last equilibrium (at {reached:.4g} of the crease actuation) is "
+                        f"unstable ({int(path.negative_eigenvalues[-1])} negative eigenvalues "
+                        "of its tangent)")
+    if limit and measured:  # past a limit point: where the sheet would go
         # One increment on, within the stage the path stopped in ((k - 1, k] is stage k).
         ahead = min(reached + increment, float(np.floor(reached + 1e-12)) + 1.0)
         model = solvers.fold_model_at(simulation.model, simulation.fold.stages, ahead)

@@ -111,3 +111,20 @@ def test_a_path_ending_unstable_is_not_taken_for_a_limit_point():
     assert _smallest_eigenvalue(sim, -1) < 0
     assert "is unstable" in sim.stall and sim.stall in sim.message
     assert "limit point" not in sim.stall and "descending" not in sim.stall
+
+
+def test_beyond_the_dense_size_the_limit_point_is_found_by_the_sparse_eigensolver(bird,
+                                                                                 monkeypatch):
+    # The bird's 102 free DOFs taken as beyond the dense size: shift-invert Lanczos at zero
+    # on its stable tangents gives the eigenvalues the dense solver gives (printed to three
+    # significant digits), the same limit point, and no descent (dense sizes only).
+    from kresling.simulate import fold_stall as module
+
+    monkeypatch.setattr(module, "MAX_MEASURED_DOFS", 10)
+    sparse = module.fold_stall(bird)
+    found = re.search(r"smallest eigenvalue (\S+) N/mm against (\S+) N/mm at (\S+): a limit "
+                      r"point of the rest angles", sparse)
+    assert found, sparse
+    assert float(found.group(1)) == pytest.approx(_smallest_eigenvalue(bird, -1), rel=5e-3)
+    assert sparse.split("; ")[0] == bird.stall.split("; ")[0]
+    assert "descending the energy" not in sparse
