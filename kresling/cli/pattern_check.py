@@ -62,16 +62,12 @@ def examine(file, *, split="N5B8", snap_tolerance=None, unit=None, scale=None,
             plan = fold_plan(loaded, pm)
             summary["creases_with_targets"] = int(plan.hinges.size)
             if plan.closure is not None:
-                closure = plan.closure.report(loaded.analysis.target_tolerance_deg)
-                summary["rigid_closure"] = closure
-                if closure["incompatible"]:
-                    summary["note"] = (
-                        f"the file's fold angles are not those of any rigidly folded state "
-                        f"at {closure['incompatible']} of the {closure['vertices_checked']} "
-                        f"interior vertices whose creases all have one (going round vertex "
-                        f"{closure['worst_vertex']}, the panels fail to close by "
-                        f"{closure['worst_deg']:.3g} deg): a fold to them bends or stretches "
-                        "its panels, or falls short")
+                tolerance = loaded.analysis.target_tolerance_deg
+                summary["rigid_closure"] = plan.closure.report(tolerance)
+                words = plan.closure.words(tolerance, "whose creases all have one")
+                if words:
+                    summary["note"] = (f"the file's fold angles are {words}: a fold to them "
+                                       "bends or stretches its panels, or falls short")
         except ValueError as error:   # no fold angles: it builds, but folds nothing as is
             summary["creases_with_targets"] = 0
             summary["note"] = str(error)

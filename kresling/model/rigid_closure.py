@@ -47,6 +47,17 @@ class RigidClosure:
         """The vertices whose closure error exceeds ``tolerance_deg`` [deg]."""
         return self.vertices[self.error_deg > tolerance_deg]
 
+    def words(self, tolerance_deg: float, checked: str) -> str:
+        """The incompatible vertices in words ("" for none): "not those of any rigidly
+        folded state at K of the C interior vertices <checked> (going round vertex V, the
+        panels fail to close by E deg)"."""
+        r = self.report(tolerance_deg)
+        if not r["incompatible"]:
+            return ""
+        return (f"not those of any rigidly folded state at {r['incompatible']} of the "
+                f"{r['vertices_checked']} interior vertices {checked} (going round vertex "
+                f"{r['worst_vertex']}, the panels fail to close by {r['worst_deg']:.3g} deg)")
+
     def report(self, tolerance_deg: float) -> dict:
         """``vertices_checked``, ``incompatible`` (errors above ``tolerance_deg``),
         ``tolerance_deg``, ``worst_deg`` and ``worst_vertex`` (None when none checked)."""

@@ -107,8 +107,8 @@ class Simulation:
             return (f"interrupted ({self.interrupted}) after {self.path.num_steps} increments: "
                     "the path so far is kept")
         message = self.path.message or self._fold_shortfall()
-        if self.path.message and self.fold is not None:   # a fold that stopped early
-            message += self._closure_note(self.fold_report())
+        if message and self.fold is not None:   # a fold that stopped early or fell short
+            message += self._closure_note()
         return "; ".join(part for part in (message, self.stall, self.advice) if part)
 
     def _fold_shortfall(self) -> str:
@@ -122,20 +122,16 @@ class Simulation:
                 f"creases are more than {report['tolerance_deg']:g} deg from their targets (held "
                 f"back by the structure or by their laws' limits); the farthest, hinge "
                 f"{worst['hinge']}, reached {worst['fold_angle_deg']:.4g} deg of "
-                f"{worst['target_deg']:.4g} deg" + self._closure_note(report))
+                f"{worst['target_deg']:.4g} deg")
 
-    @staticmethod
-    def _closure_note(report) -> str:
-        """Where the targets cannot all be reached with rigid panels, that, in words."""
-        closure = report.get("rigid_closure")
-        if not closure or not closure["incompatible"]:
-            return ""
-        return (f"; the targets are not those of any rigidly folded state at "
-                f"{closure['incompatible']} of the {closure['vertices_checked']} interior "
-                f"vertices whose creases are all driven (going round vertex "
-                f"{closure['worst_vertex']}, the panels fail to close by "
-                f"{closure['worst_deg']:.3g} deg): only panels that bend or stretch can reach "
-                "them")
+    def _closure_note(self) -> str:
+        """Where the targets cannot all be reached with rigid panels, that, in words (from
+        the plan: nothing of the path is evaluated again)."""
+        closure = self.fold.closure
+        words = (closure.words(self.problem.analysis.target_tolerance_deg,
+                               "whose creases are all driven") if closure is not None else "")
+        return (f"; the targets are {words}: only panels that bend or stretch can reach them"
+                if words else "")
 
     def element_histories(self) -> ElementHistories:
         """Per-element and per-family histories along the path (see
